@@ -1,0 +1,126 @@
+#include "cmd_core.h"
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <ostream>
+
+#include <nlohmann/json.hpp>
+
+#include "search/iterative_deepening.h"
+#include "world/pddl.h"
+#include "world/scenario.h"
+
+namespace apprentice::cli {
+
+namespace {
+
+// Where each item is, as "on table1", "in fridge1" or "in hand".
+std::string location_of(const World& world, ObjectId item) {
+  const Vocabulary& v = world.vocabulary;
+  for (const Fact& f : world.state.facts()) {
+    if (f.arity == 0 || f.args[0] != item) continue;
+    if (f.predicate == v.on) return "on " + world.universe->name(f.args[1]);
+    if (f.predicate == v.in) return "in " + world.universe->name(f.args[1]);
+    if (f.predicate == v.holding) return "in hand";
+  }
+  return "nowhere";
+}
+
+}  // namespace
+
+CommandResult run_world(const WorldOptions& options, std::ostream& out) {
+  auto scenario = load_scenario(options.scenario);
+  if (!scenario) return tl::unexpected(scenario.error());
+  const World& world = scenario->world;
+  const Universe& u = *world.universe;
+  const Vocabulary& v = world.vocabulary;
+  if (options.json) {
+    nlohmann::json places = nlohmann::json::array(), items = nlohmann::json::array();
+    for (const ObjectInfo& o : u.objects()) {
+      ObjectId id = *u.find(o.id);
+      nlohmann::json j{{"id", o.id}, {"category", o.category}, {"kind", std::string(to_string(o.kind))}};
+      if (o.kind == ObjectKind::kItem) {
+        j["location"] = location_of(world, id);
+        items.push_back(j);
+      } else {
+        if (world.state.holds(Fact(v.openable, {id}))) j["door"] = world.state.holds(Fact(v.closed, {id})) ? "closed" : "open";
+        places.push_back(j);
+      }
+    }
+    out << nlohmann::json{{"scenario", scenario->name}, {"location", world.location},
+                          {"hand", world.state.holds(Fact(v.handempty, std::initializer_list<ObjectId>{})) ? "empty" : "full"},
+                          {"places", places}, {"objects", items}}
+                 .dump(2)
+        << "\n";
+    return Outcome::kSuccess;
+  }
+  out << "Scenario " << scenario->name << ": the robot is in the " << world.location << ".\n";
+  out << "Places:\n";
+  for (ObjectId p : u.of_kind(ObjectKind::kSurface)) out << "  " << u.name(p) << " (surface)\n";
+  for (ObjectId p : u.of_kind(ObjectKind::kReceptacle)) {
+    out << "  " << u.name(p) << " (receptacle";
+    if (world.state.holds(Fact(v.openable, {p})))
+      out << ", door " << (world.state.holds(Fact(v.closed, {p})) ? "closed" : "open");
+    out << ")\n";
+  }
+  out << "Objects:\n";
+  for (ObjectId o : u.of_kind(ObjectKind::kItem)) out << "  " << u.name(o) << " " << location_of(world, o) << "\n";
+  return Outcome::kSuccess;
+}
+
+CommandResult run_plan(const PlanOptions& options, std::ostream& out) {
+  auto scenario = load_scenario(options.scenario);
+  if (!scenario) return tl::unexpected(scenario.error());
+  const World& world = scenario->world;
+  auto goal = parse_goal(*world.domain, *world.universe, options.goal);
+  if (!goal) return tl::unexpected(goal.error());
+  SearchOptions search;
+  search.max_depth = options.depth;
+  if (options.max_nodes) search.max_nodes = static_cast<std::uint64_t>(*options.max_nodes);
+  search.prune_irrelevant = !options.no_pruning;
+  PlanResult result = find_plan(*world.domain, *world.universe, world.state, *goal, search);
+  const SearchStatistics& s = result.statistics;
+  if (options.json) {
+    nlohmann::json plan = nlohmann::json::array();
+    for (const Action& a : result.plan) plan.push_back(format_action(*world.domain, *world.universe, a));
+    out << nlohmann::json{{"status", to_string(result.status)}, {"plan", plan},
+                          {"nodes_expanded", s.nodes_expanded}, {"nodes_generated", s.nodes_generated},
+                          {"depth_limit", s.depth_limit_reached}, {"relevant_objects", s.relevant_objects},
+                          {"ground_actions", s.ground_actions}, {"elapsed_ms", s.elapsed_ms}}
+                 .dump(2)
+        << "\n";
+  } else {
+    for (const Action& a : result.plan) out << format_action(*world.domain, *world.universe, a) << "\n";
+    out << ";; status " << to_string(result.status) << ", " << result.plan.size() << " steps, "
+        << s.nodes_expanded << " nodes expanded, " << s.nodes_generated << " generated, depth limit "
+        << s.depth_limit_reached << ", " << s.relevant_objects << " relevant objects, "
+        << s.ground_actions << " ground actions, " << s.elapsed_ms << " ms\n";
+  }
+  return result.status == SearchStatus::kSolved ? Outcome::kSuccess : Outcome::kGoalNotReached;
+}
+
+CommandResult run_export_pddl(const ExportPddlOptions& options, std::ostream& out) {
+  auto scenario = load_scenario(options.scenario);
+  if (!scenario) return tl::unexpected(scenario.error());
+  const World& world = scenario->world;
+  auto goal = parse_goal(*world.domain, *world.universe, options.goal);
+  if (!goal) return tl::unexpected(goal.error());
+  std::error_code ec;
+  std::filesystem::create_directories(options.out_dir, ec);
+  if (ec) return make_error(ErrorCode::kIo, options.out_dir + ": " + ec.message());
+  const std::map<std::string, std::string> files = {
+      {"domain.pddl", write_domain(*world.domain)},
+      {"problem.pddl", write_problem(scenario->name, *world.domain, *world.universe, world.state, *goal)}};
+  for (const auto& [name, text] : files) {
+    std::filesystem::path path = std::filesystem::path(options.out_dir) / name;
+    std::ofstream file(path, std::ios::binary);
+    file << text;
+    file.close();
+    if (!file) return make_error(ErrorCode::kIo, path.string() + ": write failed");
+    out << "wrote " << path.string() << "\n";
+  }
+  return Outcome::kSuccess;
+}
+
+}  // namespace apprentice::cli

@@ -1,0 +1,91 @@
+// The apprentice command line. This is the only place where errors become
+// exit codes:
+//   0  success
+//   1  the goal or task was not reached
+//   2  bad input: a malformed file, flag or sentence; a missing file
+//   3  local storage failed or holds unreadable data
+//   4  a needed service (the LLM server) is unavailable or timed out
+//   130 interrupted
+#include <cstdio>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "cmd_core.h"
+#include "util/log.h"
+
+namespace apprentice::cli {
+namespace {
+
+int exit_code_for(const Error& error) {
+  switch (error.code) {
+    case ErrorCode::kInvalidInput:
+    case ErrorCode::kNotFound:
+    case ErrorCode::kFailedPrecondition: return 2;
+    case ErrorCode::kIo:
+    case ErrorCode::kDataLoss: return 3;
+    case ErrorCode::kUnavailable:
+    case ErrorCode::kDeadlineExceeded: return 4;
+    case ErrorCode::kCancelled: return 130;
+  }
+  return 2;
+}
+
+int finish(const CommandResult& result) {
+  if (!result) {
+    std::cerr << "apprentice: " << result.error().describe() << "\n";
+    return exit_code_for(result.error());
+  }
+  return *result == Outcome::kSuccess ? 0 : 1;
+}
+
+int run(int argc, char** argv) {
+  CLI::App app{"apprentice: an agent that learns new tasks online, in one shot, from an instructor, "
+               "its own search, an LLM and WordNet"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "apprentice 0.1.0");
+  bool verbose = false;
+  app.add_flag("-v,--verbose", verbose, "Log what the agent does to stderr");
+
+  CommandResult result = Outcome::kSuccess;
+
+  WorldOptions world;
+  auto* world_cmd = app.add_subcommand("world", "Print the perceived world of a scenario (never its intent)");
+  world_cmd->add_option("--scenario", world.scenario, "Scenario file (YAML)")->required();
+  world_cmd->add_flag("--json", world.json, "Machine-readable output");
+  world_cmd->callback([&] { result = run_world(world, std::cout); });
+
+  PlanOptions plan;
+  auto* plan_cmd = app.add_subcommand("plan", "Plan with iterative-deepening search from a scenario's state to a goal");
+  plan_cmd->add_option("--scenario", plan.scenario, "Scenario file (YAML)")->required();
+  plan_cmd->add_option("--goal", plan.goal, "Goal, e.g. '(and (in ketchup1 fridge1) (closed fridge1))'")->required();
+  plan_cmd->add_option("--depth", plan.depth, "Depth limit")->capture_default_str()->check(CLI::Range(0, 64));
+  plan_cmd->add_option("--max-nodes", plan.max_nodes, "Stop after expanding this many nodes")->check(CLI::PositiveNumber);
+  plan_cmd->add_flag("--no-pruning", plan.no_pruning, "Ground every object, not only those relevant to the goal");
+  plan_cmd->add_flag("--json", plan.json, "Machine-readable output");
+  plan_cmd->callback([&] { result = run_plan(plan, std::cout); });
+
+  ExportPddlOptions export_pddl;
+  auto* export_cmd = app.add_subcommand("export-pddl", "Write the PDDL domain and a problem for a scenario and goal");
+  export_cmd->add_option("--scenario", export_pddl.scenario, "Scenario file (YAML)")->required();
+  export_cmd->add_option("--goal", export_pddl.goal, "Goal, as for plan")->required();
+  export_cmd->add_option("--out", export_pddl.out_dir, "Directory to write domain.pddl and problem.pddl into")->required();
+  export_cmd->callback([&] { result = run_export_pddl(export_pddl, std::cout); });
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  }
+  (void)verbose;
+  return finish(result);
+}
+
+}  // namespace
+}  // namespace apprentice::cli
+
+int main(int argc, char** argv) {
+  apprentice::configure_logging(apprentice::LogLevel::kWarn);
+  return apprentice::cli::run(argc, argv);
+}

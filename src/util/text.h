@@ -1,0 +1,19 @@
+// Small string helpers shared by the readers and the language module.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace apprentice {
+
+std::string to_lower(std::string_view text);
+std::string_view trim(std::string_view text);
+// Splits on runs of whitespace; no empty pieces.
+std::vector<std::string> split_words(std::string_view text);
+std::string join(const std::vector<std::string>& pieces, std::string_view separator);
+bool starts_with_ignoring_case(std::string_view text, std::string_view prefix);
+// "a\"b" -> "\"a\\\"b\"": for messages that quote user input.
+std::string quoted(std::string_view text);
+
+}  // namespace apprentice

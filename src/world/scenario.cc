@@ -1,0 +1,304 @@
+#include "world/scenario.h"
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include <yaml-cpp/yaml.h>
+
+#include "world/pddl.h"
+
+namespace apprentice {
+
+const IntentEntry* Scenario::find_intent(std::string_view subtask, std::string_view category) const {
+  for (const IntentEntry& e : intent)
+    if (e.subtask == subtask && e.category == category) return &e;
+  return nullptr;
+}
+
+std::optional<Goal> Scenario::intended_goal(std::string_view subtask, ObjectId object) const {
+  const IntentEntry* entry = find_intent(subtask, world.universe->info(object).category);
+  if (entry == nullptr) return std::nullopt;
+  std::vector<Literal> literals{Literal{Fact(world.vocabulary.in, {object, entry->receptacle}), true}};
+  if (entry->closed) literals.push_back(Literal{Fact(world.vocabulary.closed, {entry->receptacle}), true});
+  return Goal(std::move(literals));
+}
+
+const Subtask* Scenario::subtask_of(ObjectId object) const {
+  const Vocabulary& v = world.vocabulary;
+  for (const Subtask& s : task.subtasks) {
+    if (world.state.holds(Fact(v.on, {object, s.place})) || world.state.holds(Fact(v.in, {object, s.place})))
+      return &s;
+  }
+  return nullptr;
+}
+
+std::vector<Literal> Scenario::goal_assertions() const {
+  std::vector<Literal> out;
+  for (ObjectId o : world.universe->of_kind(ObjectKind::kItem)) {
+    const Subtask* s = subtask_of(o);
+    if (s == nullptr) continue;
+    auto goal = intended_goal(s->verb, o);
+    if (goal) out.insert(out.end(), goal->literals.begin(), goal->literals.end());
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+namespace {
+
+// Builds a scenario from a YAML tree. yaml-cpp reports problems by
+// throwing; every call into it happens inside parse_scenario's try block.
+class ScenarioBuilder {
+ public:
+  explicit ScenarioBuilder(std::filesystem::path source) : source_(std::move(source)) {}
+
+  Result<Scenario> build(const YAML::Node& root) {
+    if (!root.IsMap()) return fail(root, "expected a mapping with name, domain, places, objects, task and intent");
+    if (auto s = check_keys(root, {"name", "domain", "location", "places", "objects", "task", "intent"}); !s)
+      return tl::unexpected(s.error());
+    Scenario scenario;
+    scenario.source = source_;
+    auto name = required_string(root, "name");
+    if (!name) return tl::unexpected(name.error());
+    scenario.name = *name;
+    scenario.world.location = root["location"] ? root["location"].as<std::string>() : "kitchen";
+    if (auto s = load_domain(root, scenario); !s) return tl::unexpected(s.error());
+    if (auto s = read_places(root, scenario); !s) return tl::unexpected(s.error());
+    if (auto s = read_objects(root, scenario); !s) return tl::unexpected(s.error());
+    if (auto s = read_task(root, scenario); !s) return tl::unexpected(s.error());
+    if (auto s = read_intent(root, scenario); !s) return tl::unexpected(s.error());
+    scenario.world.universe = std::make_shared<const Universe>(std::move(universe_));
+    scenario.world.state = State(std::move(facts_));
+    if (auto s = check_intent_complete(scenario); !s) return tl::unexpected(s.error());
+    return scenario;
+  }
+
+ private:
+  tl::unexpected<Error> fail(const YAML::Node& at, const std::string& message) const {
+    std::string where = source_.string();
+    if (at.IsDefined() && at.Mark().line >= 0)
+      where += ":" + std::to_string(at.Mark().line + 1) + ":" + std::to_string(at.Mark().column + 1);
+    return tl::unexpected(Error{ErrorCode::kInvalidInput, where + ": " + message});
+  }
+
+  Status check_keys(const YAML::Node& map, std::initializer_list<const char*> allowed) const {
+    for (const auto& entry : map) {
+      auto key = entry.first.as<std::string>();
+      if (std::none_of(allowed.begin(), allowed.end(), [&](const char* a) { return key == a; })) {
+        std::string list;
+        for (const char* a : allowed) list += std::string(list.empty() ? "" : ", ") + a;
+        return fail(entry.first, "unknown key '" + key + "' (expected one of: " + list + ")");
+      }
+    }
+    return {};
+  }
+
+  Result<std::string> required_string(const YAML::Node& map, const char* key) const {
+    const YAML::Node node = map[key];
+    if (!node) return fail(map, std::string("missing key '") + key + "'");
+    if (!node.IsScalar() || node.Scalar().empty()) return fail(node, std::string("expected a text value for '") + key + "'");
+    return node.Scalar();
+  }
+
+  Result<std::string> required_name(const YAML::Node& map, const char* key) const {
+    auto text = required_string(map, key);
+    if (!text) return text;
+    for (char c : *text)
+      if (!(std::islower(static_cast<unsigned char>(c)) || std::isdigit(static_cast<unsigned char>(c)) || c == '-'))
+        return fail(map[key], std::string("expected a lower-case hyphenated name for '") + key + "', not '" + *text + "'");
+    return text;
+  }
+
+  Result<bool> optional_bool(const YAML::Node& map, const char* key, bool fallback) const {
+    const YAML::Node node = map[key];
+    if (!node) return fallback;
+    bool value = false;
+    if (!node.IsScalar() || !YAML::convert<bool>::decode(node, value))
+      return fail(node, std::string("expected true or false for '") + key + "'");
+    return value;
+  }
+
+  Status load_domain(const YAML::Node& root, Scenario& scenario) {
+    auto path = required_string(root, "domain");
+    if (!path) return tl::unexpected(path.error());
+    scenario.domain_path = source_.parent_path() / *path;
+    auto domain = read_domain_file(scenario.domain_path);
+    if (!domain) return fail(root["domain"], "cannot load the domain: " + domain.error().message);
+    auto vocabulary = Vocabulary::resolve(*domain);
+    if (!vocabulary) return fail(root["domain"], vocabulary.error().message);
+    for (const char* type : {"item", "receptacle", "surface"}) {
+      auto id = domain->find_type(type);
+      if (!id) return fail(root["domain"], std::string("the domain must declare the type ") + type);
+      types_[type] = *id;
+    }
+    scenario.world.vocabulary = *vocabulary;
+    scenario.world.domain = std::make_shared<const Domain>(std::move(*domain));
+    vocabulary_ = *vocabulary;
+    return {};
+  }
+
+  std::string next_id(const std::string& category) { return category + std::to_string(++counters_[category]); }
+
+  Status read_places(const YAML::Node& root, Scenario&) {
+    const YAML::Node places = root["places"];
+    if (!places || !places.IsSequence() || places.size() == 0)
+      return fail(places ? places : root, "expected 'places': a list of surfaces and receptacles");
+    for (const YAML::Node& p : places) {
+      if (!p.IsMap()) return fail(p, "expected a place such as {category: fridge, kind: receptacle, door: closed}");
+      if (auto s = check_keys(p, {"category", "kind", "door"}); !s) return s;
+      auto category = required_name(p, "category");
+      if (!category) return tl::unexpected(category.error());
+      auto kind_text = required_string(p, "kind");
+      if (!kind_text) return tl::unexpected(kind_text.error());
+      auto kind = parse_object_kind(*kind_text);
+      if (!kind || *kind == ObjectKind::kItem) return fail(p["kind"], "expected kind 'surface' or 'receptacle', not '" + *kind_text + "'");
+      ObjectId id = universe_.add(ObjectInfo{next_id(*category), *category, *kind,
+                                             types_[*kind == ObjectKind::kSurface ? "surface" : "receptacle"]});
+      facts_.push_back(Fact(*kind == ObjectKind::kSurface ? vocabulary_.surface : vocabulary_.receptacle, {id}));
+      if (const YAML::Node door = p["door"]) {
+        if (*kind != ObjectKind::kReceptacle) return fail(door, "only a receptacle can have a door");
+        std::string state = door.IsScalar() ? door.Scalar() : "";
+        if (state != "open" && state != "closed") return fail(door, "expected door: open or door: closed");
+        facts_.push_back(Fact(vocabulary_.openable, {id}));
+        if (state == "closed") facts_.push_back(Fact(vocabulary_.closed, {id}));
+      }
+    }
+    facts_.push_back(Fact(vocabulary_.handempty, std::initializer_list<ObjectId>{}));
+    return {};
+  }
+
+  Result<ObjectId> place_named(const YAML::Node& map, const char* key) const {
+    auto name = required_string(map, key);
+    if (!name) return tl::unexpected(name.error());
+    auto id = universe_.find(*name);
+    if (!id || universe_.info(*id).kind == ObjectKind::kItem)
+      return fail(map[key], "expected the id of a place, such as table1; there is no place '" + *name + "'");
+    return *id;
+  }
+
+  Status read_objects(const YAML::Node& root, Scenario&) {
+    const YAML::Node objects = root["objects"];
+    if (!objects || !objects.IsSequence()) return fail(objects ? objects : root, "expected 'objects': a list");
+    for (const YAML::Node& o : objects) {
+      if (!o.IsMap()) return fail(o, "expected an object such as {category: ketchup, at: table1}");
+      if (auto s = check_keys(o, {"category", "at", "count"}); !s) return s;
+      auto category = required_name(o, "category");
+      if (!category) return tl::unexpected(category.error());
+      auto place = place_named(o, "at");
+      if (!place) return tl::unexpected(place.error());
+      int count = 1;
+      if (o["count"] && (!YAML::convert<int>::decode(o["count"], count) || count < 1 || count > 100000))
+        return fail(o["count"], "expected a count between 1 and 100000");
+      bool on_surface = universe_.info(*place).kind == ObjectKind::kSurface;
+      for (int i = 0; i < count; ++i) {
+        ObjectId id = universe_.add(ObjectInfo{next_id(*category), *category, ObjectKind::kItem, types_["item"]});
+        facts_.push_back(Fact(vocabulary_.grabbable, {id}));
+        facts_.push_back(Fact(on_surface ? vocabulary_.on : vocabulary_.in, {id, *place}));
+      }
+    }
+    return {};
+  }
+
+  Status read_task(const YAML::Node& root, Scenario& scenario) {
+    const YAML::Node task = root["task"];
+    if (!task || !task.IsMap()) return fail(task ? task : root, "expected 'task': {name: ..., subtasks: [...]}");
+    if (auto s = check_keys(task, {"name", "subtasks"}); !s) return s;
+    auto name = required_string(task, "name");
+    if (!name) return tl::unexpected(name.error());
+    scenario.task.name = *name;
+    const YAML::Node subtasks = task["subtasks"];
+    if (!subtasks || !subtasks.IsSequence() || subtasks.size() == 0)
+      return fail(subtasks ? subtasks : task, "expected 'subtasks': a list of {verb, place}");
+    for (const YAML::Node& s : subtasks) {
+      if (!s.IsMap()) return fail(s, "expected a subtask such as {verb: clear, place: table1}");
+      if (auto st = check_keys(s, {"verb", "place"}); !st) return st;
+      auto verb = required_name(s, "verb");
+      if (!verb) return tl::unexpected(verb.error());
+      for (const Subtask& other : scenario.task.subtasks)
+        if (other.verb == *verb) return fail(s["verb"], "subtask '" + *verb + "' appears twice");
+      auto place = place_named(s, "place");
+      if (!place) return tl::unexpected(place.error());
+      scenario.task.subtasks.push_back(Subtask{*verb, *place});
+    }
+    return {};
+  }
+
+  Status read_intent(const YAML::Node& root, Scenario& scenario) {
+    const YAML::Node intent = root["intent"];
+    if (!intent || !intent.IsSequence()) return fail(intent ? intent : root, "expected 'intent': a list");
+    for (const YAML::Node& e : intent) {
+      if (!e.IsMap()) return fail(e, "expected {subtask, category, receptacle, closed}");
+      if (auto s = check_keys(e, {"subtask", "category", "receptacle", "closed"}); !s) return s;
+      IntentEntry entry;
+      auto subtask = required_name(e, "subtask");
+      if (!subtask) return tl::unexpected(subtask.error());
+      if (std::none_of(scenario.task.subtasks.begin(), scenario.task.subtasks.end(),
+                       [&](const Subtask& s) { return s.verb == *subtask; }))
+        return fail(e["subtask"], "no subtask '" + *subtask + "' in the task");
+      auto category = required_name(e, "category");
+      if (!category) return tl::unexpected(category.error());
+      if (scenario.find_intent(*subtask, *category))
+        return fail(e, "intent for (" + *subtask + ", " + *category + ") is given twice");
+      auto receptacle = place_named(e, "receptacle");
+      if (!receptacle) return tl::unexpected(receptacle.error());
+      if (universe_.info(*receptacle).kind != ObjectKind::kReceptacle)
+        return fail(e["receptacle"], "expected a receptacle; " + universe_.name(*receptacle) + " is a surface");
+      auto closed = optional_bool(e, "closed", false);
+      if (!closed) return tl::unexpected(closed.error());
+      if (*closed && std::find(facts_.begin(), facts_.end(), Fact(vocabulary_.openable, {*receptacle})) == facts_.end())
+        return fail(e["closed"], universe_.name(*receptacle) + " has no door, so it cannot end closed");
+      entry.subtask = *subtask;
+      entry.category = *category;
+      entry.receptacle = *receptacle;
+      entry.closed = *closed;
+      scenario.intent.push_back(std::move(entry));
+    }
+    return {};
+  }
+
+  Status check_intent_complete(const Scenario& scenario) const {
+    for (ObjectId o : scenario.world.universe->of_kind(ObjectKind::kItem)) {
+      const Subtask* s = scenario.subtask_of(o);
+      if (s == nullptr) continue;
+      const std::string& category = scenario.world.universe->info(o).category;
+      if (!scenario.find_intent(s->verb, category))
+        return tl::unexpected(Error{ErrorCode::kInvalidInput,
+                                    source_.string() + ": the intent says nothing about " + category +
+                                        " for subtask " + s->verb + " (object " +
+                                        scenario.world.universe->name(o) + ")"});
+    }
+    return {};
+  }
+
+  std::filesystem::path source_;
+  Universe universe_;
+  std::vector<Fact> facts_;
+  Vocabulary vocabulary_;
+  std::map<std::string, TypeId> types_;
+  std::map<std::string, int> counters_;
+};
+
+}  // namespace
+
+Result<Scenario> parse_scenario(std::string_view yaml_text, const std::filesystem::path& source) {
+  try {
+    YAML::Node root = YAML::Load(std::string(yaml_text));
+    return ScenarioBuilder(source).build(root);
+  } catch (const YAML::Exception& e) {
+    std::string where = source.string();
+    if (e.mark.line >= 0) where += ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1);
+    return make_error(ErrorCode::kInvalidInput, where + ": " + e.msg);
+  } catch (const std::exception& e) {
+    return make_error(ErrorCode::kInvalidInput, source.string() + ": " + e.what());
+  }
+}
+
+Result<Scenario> load_scenario(const std::filesystem::path& path) {
+  auto text = read_text_file(path);
+  if (!text) return tl::unexpected(text.error());
+  return parse_scenario(*text, path);
+}
+
+}  // namespace apprentice

@@ -1,0 +1,51 @@
+#include "world/universe.h"
+
+#include "util/check.h"
+
+namespace apprentice {
+
+std::string_view to_string(ObjectKind kind) {
+  switch (kind) {
+    case ObjectKind::kItem: return "object";
+    case ObjectKind::kReceptacle: return "receptacle";
+    case ObjectKind::kSurface: return "surface";
+  }
+  return "object";
+}
+
+std::optional<ObjectKind> parse_object_kind(std::string_view text) {
+  if (text == "object" || text == "item") return ObjectKind::kItem;
+  if (text == "receptacle") return ObjectKind::kReceptacle;
+  if (text == "surface") return ObjectKind::kSurface;
+  return std::nullopt;
+}
+
+ObjectId Universe::add(ObjectInfo info) {
+  auto id = static_cast<ObjectId>(objects_.size());
+  auto [it, inserted] = by_id_.emplace(info.id, id);
+  APPRENTICE_CHECK_MSG(inserted, "duplicate object id");
+  objects_.push_back(std::move(info));
+  return id;
+}
+
+std::optional<ObjectId> Universe::find(std::string_view id) const {
+  auto it = by_id_.find(std::string(id));
+  if (it == by_id_.end()) return std::nullopt;
+  return it->second;
+}
+
+std::vector<ObjectId> Universe::with_category(std::string_view category) const {
+  std::vector<ObjectId> out;
+  for (std::size_t i = 0; i < objects_.size(); ++i)
+    if (objects_[i].category == category) out.push_back(static_cast<ObjectId>(i));
+  return out;
+}
+
+std::vector<ObjectId> Universe::of_kind(ObjectKind kind) const {
+  std::vector<ObjectId> out;
+  for (std::size_t i = 0; i < objects_.size(); ++i)
+    if (objects_[i].kind == kind) out.push_back(static_cast<ObjectId>(i));
+  return out;
+}
+
+}  // namespace apprentice

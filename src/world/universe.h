@@ -1,0 +1,49 @@
+// The objects of a world. An ObjectId is an index into the universe; ids
+// are stable for the life of a scenario.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "world/domain.h"
+#include "world/fact.h"
+
+namespace apprentice {
+
+// What an object is to the robot. Items are what it carries; receptacles
+// hold items "in" them and may have a door; surfaces hold items "on" them.
+enum class ObjectKind { kItem, kReceptacle, kSurface };
+
+std::string_view to_string(ObjectKind kind);
+std::optional<ObjectKind> parse_object_kind(std::string_view text);
+
+struct ObjectInfo {
+  std::string id;        // "ketchup1"
+  std::string category;  // "ketchup"
+  ObjectKind kind = ObjectKind::kItem;
+  TypeId type = kRootType;  // its PDDL type
+};
+
+class Universe {
+ public:
+  // Adds an object; the id must be new (checked).
+  ObjectId add(ObjectInfo info);
+
+  std::size_t size() const { return objects_.size(); }
+  const ObjectInfo& info(ObjectId id) const { return objects_.at(id); }
+  const std::string& name(ObjectId id) const { return objects_.at(id).id; }
+  std::optional<ObjectId> find(std::string_view id) const;
+  // In id order.
+  std::vector<ObjectId> with_category(std::string_view category) const;
+  std::vector<ObjectId> of_kind(ObjectKind kind) const;
+  const std::vector<ObjectInfo>& objects() const { return objects_; }
+
+ private:
+  std::vector<ObjectInfo> objects_;
+  std::unordered_map<std::string, ObjectId> by_id_;
+};
+
+}  // namespace apprentice
