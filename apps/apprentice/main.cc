@@ -11,6 +11,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cmd_agent.h"
 #include "cmd_core.h"
 #include "util/log.h"
 
@@ -45,7 +46,9 @@ int run(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", "apprentice 0.1.0");
   bool verbose = false;
-  app.add_flag("-v,--verbose", verbose, "Log what the agent does to stderr");
+  app.add_flag("-v,--verbose", verbose, "Log what the agent does to stderr")->each([](const std::string&) {
+    spdlog::set_level(spdlog::level::info);
+  });
 
   CommandResult result = Outcome::kSuccess;
 
@@ -72,13 +75,65 @@ int run(int argc, char** argv) {
   export_cmd->add_option("--out", export_pddl.out_dir, "Directory to write domain.pddl and problem.pddl into")->required();
   export_cmd->callback([&] { result = run_export_pddl(export_pddl, std::cout); });
 
+  auto add_llm_flags = [](CLI::App* cmd, LlmFlags& flags) {
+    cmd->add_option("--llm", flags.spec,
+                    "LLM backend: openai:URL, llama:URL, replay:FILE, record:FILE,SPEC, corpus:FILE "
+                    "(default: $APPRENTICE_LLM)");
+    cmd->add_option("--model", flags.model, "Model name sent to the LLM server (default: $OPENAI_MODEL)");
+    cmd->add_option("--api-key", flags.api_key, "API key for the LLM server (default: $OPENAI_API_KEY)");
+    cmd->add_option("--llm-timeout-ms", flags.timeout_ms, "Total time allowed for one LLM request")
+        ->check(CLI::PositiveNumber);
+  };
+  const std::string program = argc > 0 ? argv[0] : "apprentice";
+
+  ExperimentOptions experiment;
+  auto* experiment_cmd = app.add_subcommand(
+      "experiment", "Run the paper's conditions from empty knowledge with the simulated instructor");
+  experiment_cmd->add_option("--scenario", experiment.scenario, "Scenario file (YAML)")->required();
+  experiment_cmd->add_option("--conditions", experiment.conditions,
+                             "Comma-separated conditions, e.g. instruction,inst+search4 (default: all that can run)")
+      ->delimiter(',');
+  experiment_cmd->add_flag("--json", experiment.json, "One JSON object per condition");
+  experiment_cmd->add_option("--transcript", experiment.transcript_dir, "Write each condition's dialogue to DIR/<condition>.txt");
+  experiment_cmd->add_option("--knowledge-out", experiment.knowledge_out, "Keep each condition's knowledge in DIR/<condition>.sqlite");
+  experiment_cmd->add_option("--generalization", experiment.generalization, "Rule generalization: full or paper")
+      ->capture_default_str();
+  experiment_cmd->add_flag("--no-rules", experiment.no_rules, "Do not use learned policy rules");
+  add_llm_flags(experiment_cmd, experiment.llm);
+  experiment_cmd->callback([&] { result = run_experiment(experiment, program, std::cout); });
+
+  TeachOptions teach;
+  auto* teach_cmd = app.add_subcommand("teach", "Teach the agent at the terminal: it asks, you answer");
+  teach_cmd->add_option("--scenario", teach.scenario, "Scenario file (YAML)")->required();
+  teach_cmd->add_option("--knowledge", teach.knowledge, "Knowledge store to load and extend (SQLite)");
+  teach_cmd->add_option("--condition", teach.condition, "Sources besides you: inst, inst+search4, inst+llm, ...")
+      ->capture_default_str();
+  teach_cmd->add_option("--generalization", teach.generalization, "Rule generalization: full or paper")
+      ->capture_default_str();
+  add_llm_flags(teach_cmd, teach.llm);
+  teach_cmd->callback([&] { result = run_teach(teach, program, stdin, std::cout); });
+
+  RunOptions run_options;
+  auto* run_cmd = app.add_subcommand("run", "Perform a learned task with learned knowledge alone");
+  run_cmd->add_option("--scenario", run_options.scenario, "Scenario file (YAML)")->required();
+  run_cmd->add_option("--knowledge", run_options.knowledge, "Knowledge store (SQLite)")->required();
+  run_cmd->add_option("--task", run_options.task, "Task name (default: the only one learned)");
+  run_cmd->add_flag("--json", run_options.json, "Machine-readable output");
+  run_cmd->callback([&] { result = run_run(run_options, std::cout); });
+
+  KnowledgeOptions knowledge;
+  auto* knowledge_cmd = app.add_subcommand("knowledge", "Print learned goals and rules, with where each came from");
+  knowledge_cmd->add_option("--knowledge", knowledge.knowledge, "Knowledge store (SQLite)")->required();
+  knowledge_cmd->add_option("--domain", knowledge.domain, "PDDL domain the rules use (default: the kitchen)");
+  knowledge_cmd->add_flag("--json", knowledge.json, "Machine-readable output");
+  knowledge_cmd->callback([&] { result = run_knowledge(knowledge, program, std::cout); });
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     int code = app.exit(e);
     return code == 0 ? 0 : 2;
   }
-  (void)verbose;
   return finish(result);
 }
 

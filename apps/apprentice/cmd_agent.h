@@ -1,0 +1,58 @@
+// The agent's subcommands: experiment, teach, run and knowledge.
+#pragma once
+
+#include <cstdio>
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "outcome.h"
+
+namespace apprentice::cli {
+
+// Options shared by the subcommands that may use an LLM.
+struct LlmFlags {
+  std::string spec;  // --llm; APPRENTICE_LLM when empty
+  std::string model;
+  std::optional<std::string> api_key;
+  std::optional<int> timeout_ms;
+};
+
+struct ExperimentOptions {
+  std::string scenario;
+  std::vector<std::string> conditions;  // empty: every condition that can run
+  bool json = false;
+  std::string transcript_dir;
+  std::string knowledge_out;
+  std::string generalization = "full";
+  bool no_rules = false;
+  LlmFlags llm;
+};
+CommandResult run_experiment(const ExperimentOptions& options, const std::string& program, std::ostream& out);
+
+struct TeachOptions {
+  std::string scenario;
+  std::string knowledge;  // empty: nothing kept
+  std::string condition = "inst+search4";
+  std::string generalization = "full";
+  LlmFlags llm;
+};
+CommandResult run_teach(const TeachOptions& options, const std::string& program, std::FILE* in, std::ostream& out);
+
+struct RunOptions {
+  std::string scenario;
+  std::string knowledge;
+  std::string task;  // empty: the only task learned
+  bool json = false;
+};
+CommandResult run_run(const RunOptions& options, std::ostream& out);
+
+struct KnowledgeOptions {
+  std::string knowledge;
+  std::string domain;  // empty: the shipped kitchen domain
+  bool json = false;
+};
+CommandResult run_knowledge(const KnowledgeOptions& options, const std::string& program, std::ostream& out);
+
+}  // namespace apprentice::cli

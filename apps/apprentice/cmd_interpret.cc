@@ -1,0 +1,116 @@
+#include "cmd_interpret.h"
+
+#include <ostream>
+
+#include <nlohmann/json.hpp>
+
+#include "language/corpus.h"
+#include "language/generation.h"
+#include "language/grounding.h"
+#include "world/scenario.h"
+
+namespace apprentice::cli {
+namespace {
+
+using language::Interpretation;
+
+constexpr int kGrounded = 0;
+constexpr int kNotGrounded = 1;
+constexpr int kBadInput = 2;
+
+// --object as an id, else as a category (at the --subtask's place if given).
+Result<std::optional<ObjectId>> object_option(const Scenario& scenario, const InterpretOptions& options) {
+  if (!options.object) return std::optional<ObjectId>();
+  const Universe& universe = *scenario.world.universe;
+  if (auto id = universe.find(*options.object)) return std::optional<ObjectId>(*id);
+  language::CorpusLine line;
+  line.object = *options.object;
+  line.subtask = options.subtask.value_or("");
+  if (auto id = language::object_for_line(scenario, line)) return std::optional<ObjectId>(*id);
+  return make_error(ErrorCode::kNotFound, "no object or category " + *options.object + " in " + options.scenario);
+}
+
+std::string english(const World& world, const Interpretation& interpretation) {
+  if (const auto* goal = std::get_if<Goal>(&interpretation.result)) return language::describe_goal(world, *goal);
+  if (const auto* action = std::get_if<Action>(&interpretation.result))
+    return language::describe_action(world, *action);
+  return "";
+}
+
+void print_text(const World& world, std::string_view sentence, const Interpretation& in, std::ostream& out) {
+  out << "sentence: " << sentence << "\n";
+  if (in.form) out << "form: " << language::format_logical_form(*in.form) << "\n";
+  out << "result: " << language::format_grounding(world, in.result) << "\n";
+  if (const auto* failure = in.failure()) out << "reason: " << failure->message << "\n";
+  if (std::string words = english(world, in); !words.empty()) out << "english: " << words << "\n";
+  for (const language::Reference& r : in.references)
+    out << "reference: \"" << r.phrase << "\" -> " << world.universe->name(r.object) << " by "
+        << language::to_string(r.method) << " (" << r.reason << ")\n";
+}
+
+void print_json(const World& world, std::string_view sentence, const Interpretation& in, std::ostream& out) {
+  nlohmann::ordered_json j;
+  j["sentence"] = std::string(sentence);
+  j["form"] = in.form ? nlohmann::ordered_json(language::format_logical_form(*in.form)) : nullptr;
+  j["result"] = language::format_grounding(world, in.result);
+  if (const auto* failure = in.failure()) {
+    j["failure"] = {{"kind", std::string(language::to_string(failure->kind))},
+                    {"detail", failure->detail},
+                    {"message", failure->message}};
+  }
+  if (std::string words = english(world, in); !words.empty()) j["english"] = words;
+  nlohmann::ordered_json refs = nlohmann::ordered_json::array();
+  for (const language::Reference& r : in.references)
+    refs.push_back({{"phrase", r.phrase},
+                    {"object", world.universe->name(r.object)},
+                    {"method", std::string(language::to_string(r.method))},
+                    {"reason", r.reason}});
+  j["references"] = refs;
+  out << j.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << "\n";
+}
+
+int run_corpus(const Scenario& scenario, const language::Grounder& grounder, const InterpretOptions& options,
+               std::ostream& out, std::ostream& err) {
+  auto lines = language::read_corpus(*options.corpus);
+  if (!lines) {
+    err << "apprentice: " << lines.error().describe() << "\n";
+    return kBadInput;
+  }
+  auto results = language::ground_corpus(grounder, scenario, *lines);
+  language::CorpusReport report = language::summarize(results);
+  out << (options.json ? language::format_report_json(report) + "\n" : language::format_report(report));
+  return kGrounded;
+}
+
+}  // namespace
+
+int run_interpret(const InterpretOptions& options, std::ostream& out, std::ostream& err) {
+  if (options.sentence.has_value() == options.corpus.has_value()) {
+    err << "apprentice: interpret takes either a sentence or --corpus FILE\n";
+    return kBadInput;
+  }
+  auto scenario = load_scenario(options.scenario);
+  if (!scenario) {
+    err << "apprentice: " << scenario.error().describe() << "\n";
+    return kBadInput;
+  }
+  language::Grounder grounder(language::Lexicon::open_default());
+  if (options.corpus) return run_corpus(*scenario, grounder, options, out, err);
+  auto object = object_option(*scenario, options);
+  if (!object) {
+    err << "apprentice: " << object.error().describe() << "\n";
+    return kBadInput;
+  }
+  const World& world = scenario->world;
+  Interpretation in = grounder.interpret(*options.sentence, world, *object);
+  if (options.json) {
+    print_json(world, *options.sentence, in, out);
+  } else {
+    print_text(world, *options.sentence, in, out);
+  }
+  if (const auto* failure = in.failure())
+    return failure->kind == language::FailureKind::kUninterpretable ? kBadInput : kNotGrounded;
+  return kGrounded;
+}
+
+}  // namespace apprentice::cli

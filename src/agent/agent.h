@@ -1,0 +1,95 @@
+// The task-learning agent: Algorithm 1 of the paper, extended with learned
+// policy rules.
+//
+// For each subtask the instructor names, while objects remain at its place,
+// the agent chooses one. It retrieves a goal it knows for that kind of
+// object, or acquires one (from the LLM, confirmed by the instructor where
+// there is one, or from the instructor). Then, until the goal holds, it
+// takes the next action from: a plan already found; its learned rules;
+// search, to the condition's depth; the LLM; the instructor. When the goal
+// holds it learns rules from what it did. Everything learned is stored the
+// moment it is learned, when a store is attached.
+//
+// The world changes only through the Simulator, by the actions the agent
+// executes.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "agent/condition.h"
+#include "agent/llm_advisor.h"
+#include "agent/understanding.h"
+#include "instructor/dialogue.h"
+#include "knowledge/learning.h"
+#include "knowledge/store.h"
+#include "world/simulator.h"
+
+namespace apprentice {
+
+struct AgentOptions {
+  Condition condition;
+  Generalization generalization = Generalization::kFull;
+  // Consult learned policy rules before search and before asking.
+  bool use_rules = true;
+  // Give up on an object after this many actions (a bad goal or bad advice).
+  int max_actions_per_object = 30;
+  // Re-ask at most this many times after a reply the agent cannot use.
+  int max_retries = 3;
+};
+
+// How one object went.
+struct ObjectReport {
+  std::string object;
+  std::string subtask;
+  std::string goal_source;  // "memory", "instructor", "llm", or "" if none
+  std::string goal;         // as PDDL, if any
+  bool achieved = false;
+  std::string note;         // why not, if not
+};
+
+struct AgentReport {
+  std::vector<ObjectReport> objects;
+  std::uint64_t search_nodes = 0;
+  int searches = 0;
+  int actions_executed = 0;
+  int rule_actions = 0;     // actions chosen by learned rules
+  int goals_learned = 0;
+  int rules_learned = 0;
+  // Where the agent would have needed help it could not get (for `run`).
+  std::vector<std::string> help_needed;
+  bool task_finished = false;  // the instructor said the task was done
+};
+
+class TaskLearningAgent {
+ public:
+  // `store` may be null (nothing persisted); `llm` may be null unless the
+  // condition uses the LLM.
+  TaskLearningAgent(AgentOptions options, Knowledge knowledge, Understanding understanding,
+                    KnowledgeStore* store, LlmAdvisor* llm);
+
+  // Learns and performs the task the instructor teaches (Algorithm 1).
+  // Errors: kCancelled when the instructor leaves (what was learned is
+  // kept); kIo/kDataLoss if the store cannot be written.
+  Result<AgentReport> learn(Simulator& simulator, Dialogue& dialogue);
+
+  // Performs a task it has learned, with learned knowledge alone: no
+  // instructor, search or LLM. Reports where it would have needed help.
+  Result<AgentReport> perform(Simulator& simulator, const std::string& task_name);
+
+  const Knowledge& knowledge() const { return knowledge_; }
+
+ private:
+  class Session;
+  friend class Session;
+
+  AgentOptions options_;
+  Knowledge knowledge_;
+  Understanding understanding_;
+  KnowledgeStore* store_;
+  LlmAdvisor* llm_;
+};
+
+}  // namespace apprentice

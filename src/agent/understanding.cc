@@ -1,0 +1,84 @@
+#include "agent/understanding.h"
+
+#include "language/grounding.h"
+#include "language/parser.h"
+#include "util/text.h"
+
+namespace apprentice {
+
+struct Understanding::Impl {
+  language::Grounder grounder{language::Lexicon::open_default()};
+};
+
+Understanding::Understanding() : impl_(std::make_unique<Impl>()) {}
+Understanding::Understanding(Understanding&&) noexcept = default;
+Understanding& Understanding::operator=(Understanding&&) noexcept = default;
+Understanding::~Understanding() = default;
+
+Result<language::LogicalForm> Understanding::parse(std::string_view sentence) const {
+  return language::parse(sentence);
+}
+
+namespace {
+
+GoalMeaning goal_meaning(const language::Interpretation& interpretation) {
+  GoalMeaning meaning;
+  if (const Goal* goal = std::get_if<Goal>(&interpretation.result)) {
+    meaning.goal = *goal;
+  } else if (const auto* failure = interpretation.failure()) {
+    meaning.failure_kind = std::string(language::to_string(failure->kind));
+    meaning.failure = failure->message;
+  } else {
+    meaning.failure_kind = "uninterpretable";
+    meaning.failure = "That is not a goal.";
+  }
+  return meaning;
+}
+
+ActionMeaning action_meaning(const language::Interpretation& interpretation) {
+  ActionMeaning meaning;
+  if (const Action* action = std::get_if<Action>(&interpretation.result)) {
+    meaning.action = *action;
+  } else if (const auto* failure = interpretation.failure()) {
+    meaning.failure_kind = std::string(language::to_string(failure->kind));
+    meaning.failure = failure->message;
+  } else {
+    meaning.failure_kind = "uninterpretable";
+    meaning.failure = "That is not an action.";
+  }
+  return meaning;
+}
+
+}  // namespace
+
+GoalMeaning Understanding::goal(const World& world, std::string_view sentence, ObjectId object) {
+  return goal_meaning(impl_->grounder.interpret_goal(sentence, world, object));
+}
+
+GoalMeaning Understanding::goal(const World& world, const language::GoalDescription& form, ObjectId object) {
+  return goal_meaning(impl_->grounder.ground(language::LogicalForm(form), world, object));
+}
+
+ActionMeaning Understanding::action(const World& world, std::string_view sentence, std::optional<ObjectId> object) {
+  return action_meaning(impl_->grounder.interpret_action(sentence, world, object));
+}
+
+ActionMeaning Understanding::action(const World& world, const language::ActionCommand& form,
+                                    std::optional<ObjectId> object) {
+  return action_meaning(impl_->grounder.ground(language::LogicalForm(form), world, object));
+}
+
+std::optional<ObjectId> Understanding::place(const World& world, const language::NounPhrase& phrase,
+                                             language::Relation relation) {
+  language::RepeatWhile probe{relation, phrase};
+  auto interpretation = impl_->grounder.ground(language::LogicalForm(probe), world, std::nullopt);
+  if (const auto* step = std::get_if<language::TaskStep>(&interpretation.result)) return step->place;
+  return std::nullopt;
+}
+
+bool Understanding::is_known_action_word(std::string_view word) const {
+  std::string w = to_lower(trim(word));
+  return w == "open" || w == "close" || w == "pick" || w == "put";
+}
+
+}  // namespace apprentice

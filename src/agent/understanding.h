@@ -1,0 +1,59 @@
+// The agent's use of the language module: what a sentence from the
+// instructor or the LLM means in the current world. It owns the grounder
+// (and through it the WordNet lexicon).
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "language/logical_form.h"
+#include "util/result.h"
+#include "world/action.h"
+#include "world/goal.h"
+#include "world/scenario.h"
+
+namespace apprentice {
+
+// A goal, or why none: `failure` is a sentence the agent can say.
+struct GoalMeaning {
+  std::optional<Goal> goal;
+  std::string failure_kind;  // "unknown-word", "uninterpretable", ... when no goal
+  std::string failure;
+};
+
+struct ActionMeaning {
+  std::optional<Action> action;
+  std::string failure_kind;
+  std::string failure;
+};
+
+class Understanding {
+ public:
+  Understanding();
+  Understanding(Understanding&&) noexcept;
+  Understanding& operator=(Understanding&&) noexcept;
+  ~Understanding();
+
+  // The logical form, or kInvalidInput saying what was expected.
+  Result<language::LogicalForm> parse(std::string_view sentence) const;
+  // A goal statement (the instructor's or the LLM's) about `object`.
+  GoalMeaning goal(const World& world, std::string_view sentence, ObjectId object);
+  GoalMeaning goal(const World& world, const language::GoalDescription& form, ObjectId object);
+  // An action command ("Pick up the ketchup.", "Open dishwasher").
+  ActionMeaning action(const World& world, std::string_view sentence, std::optional<ObjectId> object);
+  ActionMeaning action(const World& world, const language::ActionCommand& form, std::optional<ObjectId> object);
+  // The place a noun phrase names, if exactly one, where things can be
+  // `relation` it (on a surface, in a receptacle).
+  std::optional<ObjectId> place(const World& world, const language::NounPhrase& phrase,
+                                language::Relation relation);
+  // Whether the agent knows `word` as the first word of an action ("Open").
+  bool is_known_action_word(std::string_view word) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace apprentice

@@ -1,0 +1,55 @@
+#include "instructor/dialogue.h"
+
+#include "util/text.h"
+
+namespace apprentice {
+
+const char* to_string(QuestionKind kind) {
+  switch (kind) {
+    case QuestionKind::kTaskName: return "task-name";
+    case QuestionKind::kTaskStep: return "task-step";
+    case QuestionKind::kSubtaskStep: return "subtask-step";
+    case QuestionKind::kNextAction: return "next-action";
+    case QuestionKind::kConfirmGoal: return "confirm-goal";
+    case QuestionKind::kConfirmAction: return "confirm-action";
+  }
+  return "unknown";
+}
+
+int count_words(std::string_view utterance) { return static_cast<int>(split_words(utterance).size()); }
+
+std::optional<bool> read_yes_no(std::string_view reply) {
+  std::string text = to_lower(trim(reply));
+  while (!text.empty() && (text.back() == '.' || text.back() == '!')) text.pop_back();
+  if (text == "yes" || text == "y") return true;
+  if (text == "no" || text == "n") return false;
+  return std::nullopt;
+}
+
+Result<std::string> Dialogue::ask(const Question& question, const World& world) {
+  transcript_.push_back(TranscriptLine{"Agent", question.text});
+  auto reply = instructor_.answer(question, world);
+  if (!reply) return reply;
+  std::string text(trim(*reply));
+  transcript_.push_back(TranscriptLine{"Instructor", text});
+  ++counts_.instructions;
+  counts_.words += count_words(text);
+  if (is_yes_no(question.kind)) {
+    ++counts_.yes_no;
+    if (read_yes_no(text).value_or(false)) ++counts_.yes;
+  }
+  return text;
+}
+
+void Dialogue::say(const std::string& statement) {
+  transcript_.push_back(TranscriptLine{"Agent", statement});
+  instructor_.hear(statement);
+}
+
+std::string Dialogue::transcript_text() const {
+  std::string out;
+  for (const TranscriptLine& line : transcript_) out += line.speaker + ": " + line.text + "\n";
+  return out;
+}
+
+}  // namespace apprentice

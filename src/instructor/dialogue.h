@@ -1,0 +1,53 @@
+// The conversation between agent and instructor: it passes questions on,
+// keeps the transcript, and counts what the instructor says the way the
+// paper's Table 3 does. Every reply is an instruction; its words are its
+// whitespace-separated tokens ("apple-core" is one word); replies to yes/no
+// questions are also counted as yes/no answers.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "instructor/instructor.h"
+
+namespace apprentice {
+
+struct DialogueCounts {
+  int instructions = 0;
+  int words = 0;
+  int yes_no = 0;  // answers to yes/no questions
+  int yes = 0;     // of which yes
+  friend bool operator==(const DialogueCounts&, const DialogueCounts&) = default;
+};
+
+struct TranscriptLine {
+  std::string speaker;  // "Agent" or "Instructor"
+  std::string text;
+};
+
+class Dialogue {
+ public:
+  explicit Dialogue(Instructor& instructor) : instructor_(instructor) {}
+
+  // Asks and records; the reply is trimmed.
+  Result<std::string> ask(const Question& question, const World& world);
+  // The agent says something that needs no answer.
+  void say(const std::string& statement);
+
+  const DialogueCounts& counts() const { return counts_; }
+  const std::vector<TranscriptLine>& transcript() const { return transcript_; }
+  // "Agent: ...\nInstructor: ...\n", as the paper prints dialogues.
+  std::string transcript_text() const;
+
+ private:
+  Instructor& instructor_;
+  DialogueCounts counts_;
+  std::vector<TranscriptLine> transcript_;
+};
+
+// Words as the paper counts them: whitespace-separated tokens.
+int count_words(std::string_view utterance);
+// Whether a reply reads as yes (trimmed, any case, optional final period).
+std::optional<bool> read_yes_no(std::string_view reply);
+
+}  // namespace apprentice

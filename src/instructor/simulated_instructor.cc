@@ -1,0 +1,109 @@
+#include "instructor/simulated_instructor.h"
+
+#include <cctype>
+
+#include "instructor/dialogue.h"
+#include "language/generation.h"
+#include "search/iterative_deepening.h"
+
+namespace apprentice {
+
+namespace {
+
+// Deep enough for any kitchen goal: open, pick up, put, close, plus putting
+// down whatever is in hand first.
+constexpr int kInstructorSearchDepth = 8;
+
+}  // namespace
+
+std::optional<int> shortest_plan_length(const World& world, const State& state, const Goal& goal,
+                                        int max_depth) {
+  SearchOptions options;
+  options.max_depth = max_depth;
+  PlanResult result = find_plan(*world.domain, *world.universe, state, goal, options);
+  if (result.status != SearchStatus::kSolved) return std::nullopt;
+  return static_cast<int>(result.plan.size());
+}
+
+SimulatedInstructor::SimulatedInstructor(Scenario scenario) : scenario_(std::move(scenario)) {}
+
+Result<std::string> SimulatedInstructor::answer(const Question& question, const World& world) {
+  switch (question.kind) {
+    case QuestionKind::kTaskName: return language::say_task_name(scenario_.task.name);
+    case QuestionKind::kTaskStep: return next_task_step();
+    case QuestionKind::kSubtaskStep: return goal_or_done(question, world);
+    case QuestionKind::kNextAction: return next_action(question, world);
+    case QuestionKind::kConfirmGoal: return std::string(accepts_goal(question, world) ? "yes." : "no.");
+    case QuestionKind::kConfirmAction: return std::string(accepts_action(question, world) ? "yes." : "no.");
+  }
+  return std::string("You are done.");
+}
+
+std::string SimulatedInstructor::next_task_step() {
+  for (;;) {
+    if (subtask_index_ >= scenario_.task.subtasks.size()) return "You are done.";
+    const Subtask& subtask = scenario_.task.subtasks[subtask_index_];
+    const World& world = scenario_.world;
+    switch (phase_) {
+      case Phase::kAnnounceLoop:
+        phase_ = Phase::kAnnounceSubtask;
+        return language::say_repeat_while(world, subtask.place);
+      case Phase::kAnnounceSubtask:
+        phase_ = Phase::kRepeat;
+        return language::say_subtask(subtask.verb, world, subtask.place);
+      case Phase::kRepeat:
+        phase_ = Phase::kNextSubtask;
+        return "Repeat.";
+      case Phase::kNextSubtask:
+        ++subtask_index_;
+        phase_ = Phase::kAnnounceLoop;
+        continue;
+    }
+  }
+}
+
+std::optional<Goal> SimulatedInstructor::wanted_goal(const Question& question, const World& world) const {
+  if (!question.object) return std::nullopt;
+  const IntentEntry* entry = scenario_.find_intent(question.subtask, world.universe->info(*question.object).category);
+  if (entry == nullptr) return std::nullopt;
+  std::vector<Literal> literals{Literal{Fact(world.vocabulary.in, {*question.object, entry->receptacle}), true}};
+  if (entry->closed) literals.push_back(Literal{Fact(world.vocabulary.closed, {entry->receptacle}), true});
+  return Goal(std::move(literals));
+}
+
+std::string SimulatedInstructor::goal_or_done(const Question& question, const World& world) const {
+  // The agent asks this after reaching a goal, to learn where the subtask
+  // ends, and before it has one, to learn the goal.
+  if (question.goal && question.goal->satisfied_by(world.state)) return language::say_done();
+  auto goal = wanted_goal(question, world);
+  if (!goal || goal->satisfied_by(world.state)) return language::say_done();
+  return language::describe_goal_instruction(world, *question.object, *goal);
+}
+
+std::string SimulatedInstructor::next_action(const Question& question, const World& world) const {
+  auto goal = wanted_goal(question, world);
+  if (!goal) return "You are done.";
+  SearchOptions options;
+  options.max_depth = kInstructorSearchDepth;
+  PlanResult plan = find_plan(*world.domain, *world.universe, world.state, *goal, options);
+  if (plan.status != SearchStatus::kSolved || plan.plan.empty()) return "You are done.";
+  return language::describe_action(world, plan.plan.front());
+}
+
+bool SimulatedInstructor::accepts_goal(const Question& question, const World& world) const {
+  auto wanted = wanted_goal(question, world);
+  return wanted && question.goal && *wanted == *question.goal;
+}
+
+bool SimulatedInstructor::accepts_action(const Question& question, const World& world) const {
+  auto wanted = wanted_goal(question, world);
+  if (!wanted || !question.action) return false;
+  if (!is_applicable(*world.domain, world.state, *question.action)) return false;
+  auto now = shortest_plan_length(world, world.state, *wanted, kInstructorSearchDepth);
+  if (!now || *now == 0) return false;
+  State after = apply(*world.domain, world.state, *question.action);
+  auto then = shortest_plan_length(world, after, *wanted, *now - 1);
+  return then && *then == *now - 1;
+}
+
+}  // namespace apprentice

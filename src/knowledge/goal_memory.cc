@@ -1,0 +1,79 @@
+#include "knowledge/goal_memory.h"
+
+namespace apprentice {
+
+Result<GoalKnowledge> generalize_goal(const World& world, const GoalKey& key, ObjectId object,
+                                      const Goal& goal, Provenance provenance) {
+  const Universe& universe = *world.universe;
+  GoalKnowledge knowledge{key, {}, std::move(provenance)};
+  for (const Literal& l : goal.literals) {
+    GoalTemplateLiteral t{world.domain->predicates.at(l.fact.predicate).name, l.positive, {}};
+    for (ObjectId o : l.fact.arguments()) {
+      if (o == object) {
+        t.arguments.push_back(GoalTemplateArgument{true, ""});
+        continue;
+      }
+      const std::string& category = universe.info(o).category;
+      if (universe.with_category(category).size() != 1)
+        return make_error(ErrorCode::kInvalidInput,
+                          "the goal names " + universe.name(o) + ", but there is more than one " + category +
+                              ", so the goal cannot be learned for every " + key.category);
+      t.arguments.push_back(GoalTemplateArgument{false, category});
+    }
+    knowledge.literals.push_back(std::move(t));
+  }
+  return knowledge;
+}
+
+std::optional<Goal> instantiate_goal(const World& world, const GoalKnowledge& knowledge, ObjectId object) {
+  std::vector<Literal> literals;
+  for (const GoalTemplateLiteral& t : knowledge.literals) {
+    auto predicate = world.domain->find_predicate(t.predicate);
+    if (!predicate) return std::nullopt;
+    std::vector<ObjectId> args;
+    for (const GoalTemplateArgument& a : t.arguments) {
+      if (a.object_of_interest) {
+        args.push_back(object);
+        continue;
+      }
+      auto matches = world.universe->with_category(a.category);
+      if (matches.size() != 1) return std::nullopt;
+      args.push_back(matches.front());
+    }
+    if (args.size() != world.domain->predicates[*predicate].parameter_types.size()) return std::nullopt;
+    literals.push_back(Literal{Fact(*predicate, args), t.positive});
+  }
+  return Goal(std::move(literals));
+}
+
+std::string format_goal_knowledge(const GoalKnowledge& k) {
+  std::string out = "If the task is " + k.key.task + ", the subtask is " + k.key.subtask +
+                    " and the object is a " + k.key.category + " at the " + k.key.place +
+                    "\nThen the goal is";
+  for (std::size_t i = 0; i < k.literals.size(); ++i) {
+    const GoalTemplateLiteral& t = k.literals[i];
+    std::string atom = "(" + t.predicate;
+    for (const GoalTemplateArgument& a : t.arguments) atom += " " + (a.object_of_interest ? std::string("?o") : a.category);
+    atom += ")";
+    out += (i ? " and " : " ") + (t.positive ? atom : "(not " + atom + ")");
+  }
+  return out + "\n";
+}
+
+void GoalMemory::add(GoalKnowledge knowledge) {
+  for (GoalKnowledge& g : goals_) {
+    if (g.key == knowledge.key) {
+      g = std::move(knowledge);
+      return;
+    }
+  }
+  goals_.push_back(std::move(knowledge));
+}
+
+const GoalKnowledge* GoalMemory::find(const GoalKey& key) const {
+  for (const GoalKnowledge& g : goals_)
+    if (g.key == key) return &g;
+  return nullptr;
+}
+
+}  // namespace apprentice

@@ -1,0 +1,76 @@
+// Declarative goal knowledge: for (task, subtask, object category, place),
+// the goal to achieve, learned once from the instructor or a confirmed LLM
+// response and retrieved for every later object of that kind.
+//
+// Goals are stored as templates: the object of interest is a variable and
+// every other object is named by its category ("the dishwasher"), so the
+// knowledge applies to another object of the category and in another world
+// with the same kinds of places.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "knowledge/rule.h"
+#include "util/result.h"
+#include "world/goal.h"
+#include "world/scenario.h"
+
+namespace apprentice {
+
+struct GoalTemplateArgument {
+  bool object_of_interest = false;
+  std::string category;  // when not the object of interest
+  friend bool operator==(const GoalTemplateArgument&, const GoalTemplateArgument&) = default;
+};
+
+struct GoalTemplateLiteral {
+  std::string predicate;
+  bool positive = true;
+  std::vector<GoalTemplateArgument> arguments;
+  friend bool operator==(const GoalTemplateLiteral&, const GoalTemplateLiteral&) = default;
+};
+
+struct GoalKey {
+  std::string task;      // "tidy kitchen"
+  std::string subtask;   // "clear"
+  std::string category;  // "ceramic-plate"
+  std::string place;     // the category of the subtask's place: "table"
+  friend bool operator==(const GoalKey&, const GoalKey&) = default;
+};
+
+struct GoalKnowledge {
+  GoalKey key;
+  std::vector<GoalTemplateLiteral> literals;
+  Provenance provenance;
+  friend bool operator==(const GoalKnowledge&, const GoalKnowledge&) = default;
+};
+
+// Generalizes a goal about `object`. Fails (kInvalidInput) if the goal
+// names another object whose category is not unique in the world, since
+// the template could not say which one it meant.
+Result<GoalKnowledge> generalize_goal(const World& world, const GoalKey& key, ObjectId object,
+                                      const Goal& goal, Provenance provenance);
+
+// The goal for `object` in `world`, or nullopt if some category the
+// template names is absent or not unique there.
+std::optional<Goal> instantiate_goal(const World& world, const GoalKnowledge& knowledge, ObjectId object);
+
+// "If the object is a ceramic-plate on the table in clear then the goal is
+// (in ?o dishwasher) (closed dishwasher)"
+std::string format_goal_knowledge(const GoalKnowledge& knowledge);
+
+class GoalMemory {
+ public:
+  // Replaces any goal already known for the same key.
+  void add(GoalKnowledge knowledge);
+  const GoalKnowledge* find(const GoalKey& key) const;
+  const std::vector<GoalKnowledge>& all() const { return goals_; }
+  std::size_t size() const { return goals_.size(); }
+
+ private:
+  std::vector<GoalKnowledge> goals_;
+};
+
+}  // namespace apprentice

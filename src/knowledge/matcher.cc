@@ -1,0 +1,218 @@
+#include "knowledge/matcher.h"
+
+#include <algorithm>
+#include <array>
+#include <set>
+
+namespace apprentice {
+
+namespace {
+
+constexpr ObjectId kUnbound = static_cast<ObjectId>(-1);
+
+std::string shape_of(const std::vector<std::pair<PredicateId, bool>>& parts) {
+  std::vector<std::pair<PredicateId, bool>> sorted = parts;
+  std::sort(sorted.begin(), sorted.end());
+  std::string key;
+  for (auto [p, positive] : sorted) key += std::to_string(p) + (positive ? "+" : "-") + ",";
+  return key;
+}
+
+// Backtracking unification of one rule against the goal and the state.
+class Unifier {
+ public:
+  Unifier(const Rule& rule, const Universe& universe, const MatchQuery& query)
+      : rule_(rule), universe_(universe), query_(query) {
+    binding_.fill(kUnbound);
+    for (std::size_t i = 0; i < rule_.conditions.size(); ++i)
+      if (rule_.conditions[i].positive) order_.push_back(i);
+    for (std::size_t i = 0; i < rule_.conditions.size(); ++i)
+      if (!rule_.conditions[i].positive) order_.push_back(i);
+  }
+
+  // Calls found(binding) for every full match.
+  template <typename Found>
+  void run(Found found) {
+    if (rule_.goal.size() != query_.goal->literals.size()) return;
+    used_goal_.assign(rule_.goal.size(), false);
+    match_goal(0, found);
+  }
+
+ private:
+  bool bind(const AtomPattern& pattern, const Fact& fact, std::vector<VariableId>& newly) {
+    if (pattern.predicate != fact.predicate || pattern.arity != fact.arity) return false;
+    for (std::uint8_t i = 0; i < pattern.arity; ++i) {
+      VariableId v = pattern.args[i];
+      ObjectId o = fact.args[i];
+      if (binding_[v] == o) continue;
+      if (binding_[v] != kUnbound || bound_objects_.count(o) || !admissible(v, o)) {
+        unbind(newly);
+        return false;
+      }
+      binding_[v] = o;
+      bound_objects_.insert(o);
+      newly.push_back(v);
+    }
+    return true;
+  }
+
+  void unbind(std::vector<VariableId>& newly) {
+    for (VariableId v : newly) {
+      bound_objects_.erase(binding_[v]);
+      binding_[v] = kUnbound;
+    }
+    newly.clear();
+  }
+
+  bool admissible(VariableId v, ObjectId o) const {
+    const RuleVariable& variable = rule_.variables[v];
+    if (variable.object_of_interest && o != query_.object_of_interest) return false;
+    if (!variable.object_of_interest && o == query_.object_of_interest) return false;
+    if (variable.category && universe_.info(o).category != *variable.category) return false;
+    return true;
+  }
+
+  template <typename Found>
+  void match_goal(std::size_t j, Found& found) {
+    if (j == rule_.goal.size()) {
+      match_conditions(0, found);
+      return;
+    }
+    const LiteralPattern& pattern = rule_.goal[j];
+    for (std::size_t k = 0; k < query_.goal->literals.size(); ++k) {
+      const Literal& literal = query_.goal->literals[k];
+      if (used_goal_[k] || literal.positive != pattern.positive) continue;
+      std::vector<VariableId> newly;
+      if (!bind(pattern.atom, literal.fact, newly)) continue;
+      used_goal_[k] = true;
+      match_goal(j + 1, found);
+      used_goal_[k] = false;
+      unbind(newly);
+    }
+  }
+
+  bool fully_bound(const AtomPattern& atom) const {
+    for (std::uint8_t i = 0; i < atom.arity; ++i)
+      if (binding_[atom.args[i]] == kUnbound) return false;
+    return true;
+  }
+
+  Fact ground(const AtomPattern& atom) const {
+    Fact f;
+    f.predicate = atom.predicate;
+    for (std::uint8_t i = 0; i < atom.arity; ++i) f.args[f.arity++] = binding_[atom.args[i]];
+    return f;
+  }
+
+  template <typename Found>
+  void match_conditions(std::size_t j, Found& found) {
+    // Conditions run in order_: positive ones first, so that a negative
+    // condition is only tested once the positive ones bound its variables.
+    // Bound conditions are checked directly; the first with free variables
+    // enumerates the state's facts of its predicate.
+    for (; j < order_.size(); ++j) {
+      const LiteralPattern& c = rule_.conditions[order_[j]];
+      if (!fully_bound(c.atom)) break;
+      if (query_.state->holds(ground(c.atom)) != c.positive) return;
+    }
+    if (j == order_.size()) {
+      found(binding_);
+      return;
+    }
+    const LiteralPattern& c = rule_.conditions[order_[j]];
+    // A negative condition whose variables nothing binds cannot be decided:
+    // the rule does not match. Learned rules never contain one.
+    if (!c.positive) return;
+    auto facts = query_.state->facts();
+    Fact low;
+    low.predicate = c.atom.predicate;
+    auto it = std::lower_bound(facts.begin(), facts.end(), low);
+    for (; it != facts.end() && it->predicate == c.atom.predicate; ++it) {
+      std::vector<VariableId> newly;
+      if (!bind(c.atom, *it, newly)) continue;
+      match_conditions(j + 1, found);
+      unbind(newly);
+    }
+  }
+
+  const Rule& rule_;
+  const Universe& universe_;
+  const MatchQuery& query_;
+  std::array<ObjectId, kMaxRuleVariables> binding_{};
+  std::set<ObjectId> bound_objects_;
+  std::vector<bool> used_goal_;
+  std::vector<std::size_t> order_;
+};
+
+// The category a rule's goal pattern tests first, or "*".
+std::string goal_category(const Rule& rule) {
+  for (const LiteralPattern& l : rule.goal)
+    for (std::uint8_t i = 0; i < l.atom.arity; ++i)
+      if (rule.variables[l.atom.args[i]].category) return *rule.variables[l.atom.args[i]].category;
+  return "*";
+}
+
+}  // namespace
+
+std::string RuleMatcher::goal_shape(const std::vector<Literal>& goal) {
+  std::vector<std::pair<PredicateId, bool>> parts;
+  for (const Literal& l : goal) parts.emplace_back(l.fact.predicate, l.positive);
+  return shape_of(parts);
+}
+
+std::string RuleMatcher::bucket_key(const std::vector<LiteralPattern>& goal, std::string_view category) const {
+  std::vector<std::pair<PredicateId, bool>> parts;
+  for (const LiteralPattern& l : goal) parts.emplace_back(l.atom.predicate, l.positive);
+  return shape_of(parts) + "|" + std::string(category);
+}
+
+bool RuleMatcher::add(const Domain& domain, Rule rule) {
+  std::string signature = rule_signature(domain, rule);
+  if (!signatures_.emplace(signature, true).second) return false;
+  buckets_[bucket_key(rule.goal, goal_category(rule))].push_back(rules_.size());
+  rules_.push_back(std::move(rule));
+  return true;
+}
+
+std::vector<Proposal> RuleMatcher::propose(const Domain& domain, const Universe& universe,
+                                           const MatchQuery& query) const {
+  (void)domain;
+  std::set<std::string> categories{"*"};
+  for (ObjectId o : query.goal->objects()) categories.insert(universe.info(o).category);
+  std::string shape = goal_shape(query.goal->literals);
+  std::vector<Proposal> out;
+  for (const std::string& category : categories) {
+    auto bucket = buckets_.find(shape + "|" + category);
+    if (bucket == buckets_.end()) continue;
+    for (std::size_t index : bucket->second) {
+      const Rule& rule = rules_[index];
+      if (rule.subtask && *rule.subtask != query.subtask) continue;
+      Unifier unifier(rule, universe, query);
+      unifier.run([&](const std::array<ObjectId, kMaxRuleVariables>& binding) {
+        std::vector<ObjectId> args;
+        for (VariableId v : rule.action_args) args.push_back(binding[v]);
+        Action action(rule.action, args);
+        auto same = std::find_if(out.begin(), out.end(), [&](const Proposal& p) { return p.action == action; });
+        if (same == out.end()) {
+          out.push_back(Proposal{action, rule.steps_to_goal, index});
+        } else if (std::tie(rule.steps_to_goal, index) < std::tie(same->steps_to_goal, same->rule_index)) {
+          same->steps_to_goal = rule.steps_to_goal;
+          same->rule_index = index;
+        }
+      });
+    }
+  }
+  std::sort(out.begin(), out.end(), [](const Proposal& a, const Proposal& b) {
+    return std::tie(a.steps_to_goal, a.rule_index) < std::tie(b.steps_to_goal, b.rule_index);
+  });
+  return out;
+}
+
+std::optional<Proposal> RuleMatcher::select(const Domain& domain, const Universe& universe,
+                                            const MatchQuery& query) const {
+  auto proposals = propose(domain, universe, query);
+  if (proposals.empty()) return std::nullopt;
+  return proposals.front();
+}
+
+}  // namespace apprentice
