@@ -123,14 +123,10 @@ Status TaskLearningAgent::Session::run_first_iteration(const Current& current) {
   if (!object) return {};
   ObjectReport report;
   if (auto s = handle_object(current, *object, report); !s) return s;
-  // Learn where the subtask ends: once its goal is reached, what is next?
-  std::optional<Goal> reached;
-  if (report.achieved) {
-    auto known = agent_.knowledge_.goals.find(goal_key(current, *object));
-    if (known) reached = instantiate_goal(world(), *known, *object);
-  }
+  // Learn where the subtask ends: with this object done, what is next? The
+  // question is about the subtask, not the object.
   for (int attempt = 0; attempt <= agent_.options_.max_retries; ++attempt) {
-    auto reply = ask(QuestionKind::kSubtaskStep, language::say_next_goal_request(current.verb), object, reached);
+    auto reply = ask(QuestionKind::kSubtaskStep, language::say_next_goal_request(current.verb));
     if (!reply) return tl::unexpected(reply.error());
     auto form = agent_.understanding_.parse(*reply);
     if (form && std::holds_alternative<language::Done>(*form)) return {};

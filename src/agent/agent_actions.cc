@@ -76,7 +76,7 @@ Result<bool> TaskLearningAgent::Session::achieve(const Current& current, ObjectI
       if (!from_llm) return tl::unexpected(from_llm.error());
       if (*from_llm) {
         next = *from_llm;
-        source = "llm";
+        source = "llm: " + advice_;
       }
     }
     if (!next && learning_ && condition.instruction) {
@@ -84,7 +84,7 @@ Result<bool> TaskLearningAgent::Session::achieve(const Current& current, ObjectI
       if (!from_instructor) return tl::unexpected(from_instructor.error());
       if (*from_instructor) {
         next = *from_instructor;
-        source = "instructor";
+        source = "instructor: " + advice_;
       }
     }
     if (!next) {
@@ -134,6 +134,7 @@ Result<std::optional<Action>> TaskLearningAgent::Session::action_from_llm(const 
       if (!reply) return tl::unexpected(reply.error());
       if (!read_yes_no(*reply).value_or(false)) continue;
     }
+    advice_ = apprentice::quoted(candidate.text) + (instructed ? " (confirmed)" : "");
     return meaning.action;
   }
   return std::optional<Action>();
@@ -145,7 +146,10 @@ Result<std::optional<Action>> TaskLearningAgent::Session::action_from_instructor
     auto reply = ask(QuestionKind::kNextAction, language::say_next_action_request(current.verb), object, goal);
     if (!reply) return tl::unexpected(reply.error());
     ActionMeaning meaning = agent_.understanding_.action(world(), *reply, object);
-    if (meaning.action) return meaning.action;
+    if (meaning.action) {
+      advice_ = apprentice::quoted(*reply);
+      return meaning.action;
+    }
     dialogue_->say(meaning.failure);
   }
   return std::optional<Action>();
@@ -156,8 +160,12 @@ Status TaskLearningAgent::Session::learn_rules(const Current& current, ObjectId 
                                     [](const std::string& s) { return s == "rule"; });
   if (episode_actions_.empty() || all_from_rules) return {};
   Episode episode{episode_start_, episode_actions_, {}, goal, object, current.verb, describe_object(object)};
-  for (std::size_t i = 0; i < episode_actions_.size(); ++i)
-    episode.sources.push_back(episode_sources_[i] + ": " + step_text(world(), episode_actions_[i]));
+  for (std::size_t i = 0; i < episode_actions_.size(); ++i) {
+    const std::string& source = episode_sources_[i];
+    episode.sources.push_back(source == "search" || source == "rule"
+                                  ? source + ": " + format_action(*world().domain, *world().universe, episode_actions_[i])
+                                  : source);
+  }
   std::vector<Rule> rules =
       learn_policy_rules(*world().domain, *world().universe, episode, agent_.options_.generalization);
   for (Rule& rule : rules) {

@@ -62,6 +62,7 @@ class TaskLearningAgent::Session {
   std::vector<Action> episode_actions_;
   std::vector<std::string> episode_sources_;
   std::vector<std::string> llm_steps_;  // the steps so far, as the LLM prompt shows them
+  std::string advice_;  // the words of the last action advised by the LLM or the instructor
 };
 
 }  // namespace apprentice

@@ -14,6 +14,27 @@ int count_achieved_assertions(const Scenario& scenario, const State& state) {
   return achieved;
 }
 
+namespace {
+
+// Without an instructor nobody answers yes or no, so relevance is the share
+// of adopted LLM goals the instructor would have accepted: those that are
+// the intended goal. Unset when no LLM goal was adopted.
+std::optional<double> silent_relevance(const Scenario& scenario, const std::vector<ObjectReport>& objects) {
+  int adopted = 0, relevant = 0;
+  const World& world = scenario.world;
+  for (const ObjectReport& o : objects) {
+    if (o.goal_source != "llm") continue;
+    ++adopted;
+    auto id = world.universe->find(o.object);
+    auto intended = id ? scenario.intended_goal(o.subtask, *id) : std::nullopt;
+    if (intended && format_goal(*world.domain, *world.universe, *intended) == o.goal) ++relevant;
+  }
+  if (adopted == 0) return std::nullopt;
+  return 100.0 * relevant / adopted;
+}
+
+}  // namespace
+
 Result<ConditionResult> run_condition(const Scenario& scenario, const Condition& condition,
                                       const ExperimentOptions& options) {
   auto started = std::chrono::steady_clock::now();
@@ -55,7 +76,9 @@ Result<ConditionResult> run_condition(const Scenario& scenario, const Condition&
   result.assertions_achieved = count_achieved_assertions(scenario, simulator.state());
   result.completion_rate = result.assertions_total == 0 ? 100.0 : 100.0 * result.assertions_achieved / result.assertions_total;
   result.counts = dialogue.counts();
-  if (condition.llm && result.counts.yes_no > 0) result.relevance = 100.0 * result.counts.yes / result.counts.yes_no;
+  if (condition.llm && condition.instruction && result.counts.yes_no > 0)
+    result.relevance = 100.0 * result.counts.yes / result.counts.yes_no;
+  if (condition.llm && !condition.instruction) result.relevance = silent_relevance(scenario, report->objects);
   if (advisor) {
     LlmTotals totals = advisor->totals();
     result.llm_calls = totals.calls;

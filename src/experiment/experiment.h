@@ -24,8 +24,9 @@ struct ConditionResult {
   int assertions_total = 0;
   double completion_rate = 0;  // percent
   DialogueCounts counts;
-  // Yes answers over yes/no questions, in percent; unset when the
-  // condition asks none (the paper's "--").
+  // Yes answers over yes/no questions, in percent. Without an instructor:
+  // the share of adopted LLM goals that are the intended ones. Unset when
+  // the condition uses no LLM (the paper's "--").
   std::optional<double> relevance;
   int llm_calls = 0;
   long llm_tokens = 0;

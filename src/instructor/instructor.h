@@ -17,7 +17,8 @@ namespace apprentice {
 enum class QuestionKind {
   kTaskName,       // "What task should I learn?"
   kTaskStep,       // "What is the next goal or subtask of tidy?"
-  kSubtaskStep,    // "What is the next goal or subtask of clear?" (about `object`)
+  kSubtaskStep,    // "What is the next goal or subtask of clear?" (about `object`, or,
+                   // without one, about the subtask: is there more to it?)
   kNextAction,     // "What do I do next for clear?" (towards `goal`)
   kConfirmGoal,    // "[LM] For a ceramic-plate on the table is the goal that ...?"
   kConfirmAction,  // "[LM] For the ceramic-plate should I 'Pick up ceramic-plate'?"

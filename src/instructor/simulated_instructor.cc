@@ -72,9 +72,9 @@ std::optional<Goal> SimulatedInstructor::wanted_goal(const Question& question, c
 }
 
 std::string SimulatedInstructor::goal_or_done(const Question& question, const World& world) const {
-  // The agent asks this after reaching a goal, to learn where the subtask
-  // ends, and before it has one, to learn the goal.
-  if (question.goal && question.goal->satisfied_by(world.state)) return language::say_done();
+  // The agent asks this about an object, to learn its goal, and about the
+  // subtask alone once it has done it, to learn where the subtask ends.
+  if (!question.object) return language::say_done();
   auto goal = wanted_goal(question, world);
   if (!goal || goal->satisfied_by(world.state)) return language::say_done();
   return language::describe_goal_instruction(world, *question.object, *goal);
