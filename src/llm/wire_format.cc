@@ -1,0 +1,287 @@
+#include "llm/wire_format.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <nlohmann/json.hpp>
+
+namespace apprentice::llm {
+namespace {
+
+using nlohmann::json;
+
+constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
+
+Error bad_body(std::string what) {
+  return Error{ErrorCode::kUnavailable, "unusable response from the LLM server: " + std::move(what)};
+}
+
+double prob_to_logprob(double prob) {
+  if (!(prob > 0.0)) return kFloorLogprob;
+  return std::max(std::log(std::min(prob, 1.0)), kFloorLogprob);
+}
+
+// A number field, or NaN when absent or null.
+double number_or_nan(const json& object, const char* key) {
+  auto it = object.find(key);
+  if (it == object.end() || !it->is_number()) return kNan;
+  return it->get<double>();
+}
+
+std::string string_field(const json& object, std::initializer_list<const char*> keys) {
+  for (const char* key : keys) {
+    auto it = object.find(key);
+    if (it != object.end() && it->is_string()) return it->get<std::string>();
+  }
+  return {};
+}
+
+// An entry's log-probability, from "logprob" or else "prob".
+double entry_logprob(const json& entry) {
+  double logprob = number_or_nan(entry, "logprob");
+  if (!std::isnan(logprob)) return std::max(logprob, kFloorLogprob);
+  double prob = number_or_nan(entry, "prob");
+  if (!std::isnan(prob)) return prob_to_logprob(prob);
+  return kNan;
+}
+
+TokenLogprob read_entry(const json& entry) {
+  return TokenLogprob{string_field(entry, {"token", "tok_str", "content"}), entry_logprob(entry)};
+}
+
+void sort_alternatives(std::vector<TokenLogprob>& alternatives) {
+  std::stable_sort(alternatives.begin(), alternatives.end(),
+                   [](const TokenLogprob& a, const TokenLogprob& b) {
+                     if (std::isnan(b.logprob)) return !std::isnan(a.logprob);
+                     return a.logprob > b.logprob;
+                   });
+}
+
+// One position of llama-server's per-token layouts (current, post-sampling
+// and legacy); see wire_format.h.
+void read_position(const json& entry, Completion& out) {
+  if (!entry.is_object()) throw std::runtime_error("a token entry is not an object");
+  TokenLogprob chosen = read_entry(entry);
+  std::vector<TokenLogprob> alternatives;
+  for (const char* key : {"top_logprobs", "top_probs", "probs"}) {
+    auto it = entry.find(key);
+    if (it == entry.end() || !it->is_array()) continue;
+    for (const json& alternative : *it) {
+      if (alternative.is_object()) alternatives.push_back(read_entry(alternative));
+    }
+    break;
+  }
+  if (std::isnan(chosen.logprob)) {
+    // Legacy layout: the chosen token's probability is among the alternatives.
+    for (const TokenLogprob& alternative : alternatives) {
+      if (alternative.token == chosen.token) chosen.logprob = alternative.logprob;
+    }
+  }
+  sort_alternatives(alternatives);
+  out.tokens.push_back(std::move(chosen));
+  out.top_logprobs.push_back(std::move(alternatives));
+}
+
+void read_openai_logprobs(const json& logprobs, Completion& out) {
+  if (!logprobs.is_object()) return;  // null: the server gave none
+  if (auto content = logprobs.find("content"); content != logprobs.end() && content->is_array()) {
+    for (const json& entry : *content) read_position(entry, out);
+    return;
+  }
+  const json& tokens = logprobs.at("tokens");
+  const json& token_logprobs = logprobs.at("token_logprobs");
+  auto top = logprobs.find("top_logprobs");
+  for (size_t i = 0; i < tokens.size(); ++i) {
+    TokenLogprob token{tokens.at(i).get<std::string>(), kNan};
+    if (i < token_logprobs.size() && token_logprobs.at(i).is_number()) {
+      token.logprob = std::max(token_logprobs.at(i).get<double>(), kFloorLogprob);
+    }
+    std::vector<TokenLogprob> alternatives;
+    if (top != logprobs.end() && top->is_array() && i < top->size() && top->at(i).is_object()) {
+      for (const auto& [text, value] : top->at(i).items()) {
+        double lp = value.is_number() ? std::max(value.get<double>(), kFloorLogprob) : kNan;
+        alternatives.push_back(TokenLogprob{text, lp});
+      }
+    }
+    sort_alternatives(alternatives);
+    out.tokens.push_back(std::move(token));
+    out.top_logprobs.push_back(std::move(alternatives));
+  }
+}
+
+void read_openai(const json& body, Completion& out) {
+  const json& choices = body.at("choices");
+  if (!choices.is_array() || choices.empty()) throw std::runtime_error("no choices");
+  const json& choice = choices.at(0);
+  out.text = choice.at("text").get<std::string>();
+  if (auto reason = choice.find("finish_reason"); reason != choice.end() && reason->is_string()) {
+    out.finish_reason = reason->get<std::string>();
+  }
+  if (auto logprobs = choice.find("logprobs"); logprobs != choice.end()) {
+    read_openai_logprobs(*logprobs, out);
+  }
+  out.completion_tokens = static_cast<int64_t>(out.tokens.size());
+  if (auto usage = body.find("usage"); usage != body.end() && usage->is_object()) {
+    out.prompt_tokens = usage->value("prompt_tokens", int64_t{0});
+    out.completion_tokens = usage->value("completion_tokens", out.completion_tokens);
+  }
+}
+
+void read_native(const json& body, Completion& out) {
+  out.text = body.at("content").get<std::string>();
+  if (auto probs = body.find("completion_probabilities"); probs != body.end() && probs->is_array()) {
+    for (const json& entry : *probs) read_position(entry, out);
+  }
+  std::string stop_type = string_field(body, {"stop_type"});
+  if (stop_type == "eos" || stop_type == "word") {
+    out.finish_reason = "stop";
+  } else if (stop_type == "limit") {
+    out.finish_reason = "length";
+  } else if (body.value("stopped_limit", false)) {
+    out.finish_reason = "length";
+  } else if (body.value("stopped_eos", false) || body.value("stopped_word", false)) {
+    out.finish_reason = "stop";
+  }
+  out.prompt_tokens = body.value("tokens_evaluated", int64_t{0});
+  out.completion_tokens = body.value("tokens_predicted", static_cast<int64_t>(out.tokens.size()));
+}
+
+std::string server_error_message(const json& error) {
+  if (error.is_string()) return error.get<std::string>();
+  if (error.is_object()) {
+    std::string message = string_field(error, {"message"});
+    if (!message.empty()) return message;
+  }
+  return error.dump(-1, ' ', false, json::error_handler_t::replace);
+}
+
+}  // namespace
+
+std::string build_request_body(WireFormat format, const CompletionRequest& request,
+                               const WireOptions& options) {
+  json body;
+  body["prompt"] = request.prompt;
+  body["temperature"] = request.temperature;
+  body["stream"] = false;
+  // At least one, so that the chosen tokens come with their log-probabilities.
+  const int alternatives = std::max(1, request.top_logprobs);
+  if (format == WireFormat::kOpenAi) {
+    body["max_tokens"] = request.max_tokens;
+    body["logprobs"] = alternatives;
+    body["n"] = 1;
+  } else {
+    body["n_predict"] = request.max_tokens;
+    body["n_probs"] = alternatives;
+    body["cache_prompt"] = true;
+  }
+  if (!request.stop.empty()) body["stop"] = request.stop;
+  if (!options.model.empty()) body["model"] = options.model;
+  if (options.seed) body["seed"] = *options.seed;
+  return body.dump(-1, ' ', false, json::error_handler_t::replace);
+}
+
+Result<Completion> parse_response_body(WireFormat format, std::string_view body) {
+  if (auto bad = find_invalid_utf8(body)) {
+    return tl::unexpected(
+        bad_body("the body is not valid UTF-8 (byte " + std::to_string(*bad) + ")"));
+  }
+  json parsed;
+  try {
+    parsed = json::parse(body);
+  } catch (const json::parse_error& e) {
+    if (e.byte >= body.size()) {
+      return tl::unexpected(bad_body("the JSON body is cut short after " +
+                                     std::to_string(body.size()) + " bytes"));
+    }
+    return tl::unexpected(bad_body("the body is not JSON (" + std::string(e.what()) + ")"));
+  }
+  if (!parsed.is_object()) return tl::unexpected(bad_body("the body is not a JSON object"));
+  if (auto error = parsed.find("error"); error != parsed.end() && !error->is_null()) {
+    return tl::unexpected(Error{ErrorCode::kUnavailable,
+                                "the LLM server reported an error: " +
+                                    excerpt_for_message(server_error_message(*error))});
+  }
+  Completion out;
+  out.source = ResponseSource::kModel;
+  try {
+    if (format == WireFormat::kOpenAi) {
+      read_openai(parsed, out);
+    } else {
+      read_native(parsed, out);
+    }
+  } catch (const std::exception& e) {
+    // nlohmann's out_of_range / type_error for missing or mistyped fields.
+    const char* layout = format == WireFormat::kOpenAi ? "OpenAI completions" : "llama-server";
+    return tl::unexpected(bad_body(std::string("not in the ") + layout +
+                                   " layout: " + e.what()));
+  }
+  out.raw = std::string(body);
+  return out;
+}
+
+std::optional<size_t> find_invalid_utf8(std::string_view text) {
+  size_t i = 0;
+  const size_t n = text.size();
+  while (i < n) {
+    const auto byte = static_cast<unsigned char>(text[i]);
+    if (byte < 0x80) {
+      ++i;
+      continue;
+    }
+    size_t length = 0;
+    uint32_t code = 0;
+    if (byte >= 0xC2 && byte <= 0xDF) {
+      length = 2, code = byte & 0x1F;
+    } else if (byte >= 0xE0 && byte <= 0xEF) {
+      length = 3, code = byte & 0x0F;
+    } else if (byte >= 0xF0 && byte <= 0xF4) {
+      length = 4, code = byte & 0x07;
+    } else {
+      return i;
+    }
+    if (i + length > n) return i;
+    for (size_t k = 1; k < length; ++k) {
+      const auto next = static_cast<unsigned char>(text[i + k]);
+      if ((next & 0xC0) != 0x80) return i;
+      code = (code << 6) | (next & 0x3F);
+    }
+    const bool overlong = (length == 3 && code < 0x800) || (length == 4 && code < 0x10000);
+    const bool surrogate = code >= 0xD800 && code <= 0xDFFF;
+    if (overlong || surrogate || code > 0x10FFFF) return i;
+    i += length;
+  }
+  return std::nullopt;
+}
+
+std::string excerpt_for_message(std::string_view body, size_t limit) {
+  std::string out;
+  size_t i = 0;
+  while (i < body.size() && out.size() < limit) {
+    const auto byte = static_cast<unsigned char>(body[i]);
+    if (byte < 0x20 || byte == 0x7F) {
+      out.push_back(byte == '\n' || byte == '\t' ? ' ' : '?');
+      ++i;
+      continue;
+    }
+    if (byte < 0x80) {
+      out.push_back(static_cast<char>(byte));
+      ++i;
+      continue;
+    }
+    // Copy one well-formed multi-byte character, or a '?' for a bad byte.
+    size_t length = byte >= 0xF0 ? 4 : byte >= 0xE0 ? 3 : 2;
+    std::string_view piece = body.substr(i, length);
+    if (piece.size() == length && !find_invalid_utf8(piece)) {
+      out.append(piece);
+      i += length;
+    } else {
+      out.push_back('?');
+      ++i;
+    }
+  }
+  if (i < body.size()) out += "...";
+  return out;
+}
+
+}  // namespace apprentice::llm

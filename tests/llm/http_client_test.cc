@@ -1,0 +1,394 @@
+// Protocol and fault tests of the HTTP backends against servers running in
+// this process on 127.0.0.1.
+#include <gtest/gtest.h>
+#include <netinet/in.h>
+#include <spdlog/sinks/ostream_sink.h>
+#include <spdlog/spdlog.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "llm/factory.h"
+#include "llm/http_client.h"
+#include "llm/test_server.h"
+
+namespace apprentice::llm {
+namespace {
+
+using nlohmann::json;
+using std::chrono::milliseconds;
+using testing::RawTcpServer;
+using testing::TestHttpServer;
+
+constexpr const char* kKey = "sk-secret-0123456789";
+
+const char* const kOpenAiBody = R"({"id":"cmpl-1","object":"text_completion","created":1,
+  "choices":[{"text":" The goal is that the ceramic-plate is in the cupboard","index":0,
+  "finish_reason":"stop","logprobs":{"tokens":[" The"," goal"],"token_logprobs":[-0.05,-0.01],
+  "top_logprobs":[{" The":-0.05," the":-3.1},{" goal":-0.01}]}}],
+  "usage":{"prompt_tokens":250,"completion_tokens":12,"total_tokens":262}})";
+
+const char* const kNativeBody = R"({"content":" Open","stop":true,"stop_type":"limit",
+  "tokens_predicted":1,"tokens_evaluated":301,"completion_probabilities":[{"id":1,"token":" Open",
+  "logprob":-0.6,"top_logprobs":[{"id":1,"token":" Open","logprob":-0.6},
+  {"id":2,"token":" Pick","logprob":-1.58},{"id":3,"token":" Check","logprob":-2.7}]}]})";
+
+LlmOptions fast_options() {
+  LlmOptions options;
+  options.api_key = kKey;
+  options.model = "test-model";
+  options.connect_timeout = milliseconds(1000);
+  options.request_timeout = milliseconds(3000);
+  options.stall_timeout = milliseconds(3000);
+  options.max_retries = 2;
+  options.backoff_initial = milliseconds(10);
+  options.backoff_max = milliseconds(20);
+  options.retry_after_cap = milliseconds(2000);
+  return options;
+}
+
+std::unique_ptr<LlmClient> openai_client(const std::string& base, const LlmOptions& options) {
+  auto client = make_llm_client("openai:" + base + "/v1", options);
+  EXPECT_TRUE(client.has_value()) << client.error().describe();
+  return std::move(*client);
+}
+
+CompletionRequest goal_request() {
+  CompletionRequest request;
+  request.prompt = "(TASK) Task name: tidy kitchen.\n(RESULT)";
+  request.temperature = 0.0;
+  request.max_tokens = 64;
+  request.stop = {"(END RESULT)"};
+  return request;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void expect_no_key(const Error& error) {
+  EXPECT_EQ(error.message.find(kKey), std::string::npos) << error.message;
+}
+
+TEST(HttpClientTest, OpenAiProtocol) {
+  TestHttpServer server;
+  json seen;
+  std::string authorization;
+  server.server().Post("/v1/completions", [&](const httplib::Request& req, httplib::Response& res) {
+    seen = json::parse(req.body);
+    authorization = req.get_header_value("Authorization");
+    res.set_content(kOpenAiBody, "application/json");
+  });
+  server.start();
+  auto client = openai_client(server.url(), fast_options());
+  auto completion = client->complete(goal_request());
+  ASSERT_TRUE(completion.has_value()) << completion.error().describe();
+  EXPECT_EQ(completion->text, " The goal is that the ceramic-plate is in the cupboard");
+  EXPECT_EQ(completion->tokens.size(), 2u);
+  EXPECT_EQ(completion->top_logprobs[0][0], (TokenLogprob{" The", -0.05}));
+  EXPECT_EQ(completion->completion_tokens, 12);
+  EXPECT_EQ(seen["model"], "test-model");
+  EXPECT_EQ(seen["prompt"], goal_request().prompt);
+  EXPECT_EQ(seen["logprobs"], 1);
+  EXPECT_EQ(seen["stop"], json::array({"(END RESULT)"}));
+  EXPECT_EQ(authorization, std::string("Bearer ") + kKey);
+  EXPECT_EQ(client->usage().prompt_tokens, 250);
+  EXPECT_EQ(client->usage().completion_tokens, 12);
+  EXPECT_EQ(client->describe().find(kKey), std::string::npos);
+}
+
+TEST(HttpClientTest, LlamaNativeProtocolAndNextTokenQuery) {
+  TestHttpServer server;
+  json seen;
+  server.server().Post("/completion", [&](const httplib::Request& req, httplib::Response& res) {
+    seen = json::parse(req.body);
+    res.set_content(kNativeBody, "application/json");
+  });
+  server.start();
+  auto client = make_llm_client("llama:" + server.url(), fast_options());
+  ASSERT_TRUE(client.has_value()) << client.error().describe();
+  QueryAbout about;
+  about.kind = QueryKind::kActionWord;
+  auto words = next_token_alternatives(**client, "Steps:\n1.", 5, about);
+  ASSERT_TRUE(words.has_value()) << words.error().describe();
+  ASSERT_EQ(words->size(), 3u);
+  EXPECT_EQ((*words)[0], (TokenLogprob{" Open", -0.6}));
+  EXPECT_EQ((*words)[1].token, " Pick");
+  EXPECT_EQ(seen["n_predict"], 1);
+  EXPECT_EQ(seen["n_probs"], 5);
+  EXPECT_EQ(seen["temperature"], 0.0);
+}
+
+TEST(HttpClientTest, RetriesA500ThenSucceeds) {
+  TestHttpServer server;
+  std::atomic<int> hits{0};
+  server.server().Post("/v1/completions", [&](const httplib::Request&, httplib::Response& res) {
+    if (hits++ == 0) {
+      res.status = 500;
+      res.set_content("internal error", "text/plain");
+      return;
+    }
+    res.set_content(kOpenAiBody, "application/json");
+  });
+  server.start();
+  auto client = openai_client(server.url(), fast_options());
+  auto completion = client->complete(goal_request());
+  ASSERT_TRUE(completion.has_value()) << completion.error().describe();
+  EXPECT_EQ(hits.load(), 2);
+}
+
+TEST(HttpClientTest, GivesUpAfterTheLastRetry) {
+  TestHttpServer server;
+  std::atomic<int> hits{0};
+  server.server().Post("/v1/completions", [&](const httplib::Request&, httplib::Response& res) {
+    ++hits;
+    res.status = 503;
+    res.set_content("{\"error\":\"loading model\"}", "application/json");
+  });
+  server.start();
+  auto client = openai_client(server.url(), fast_options());
+  const auto start = std::chrono::steady_clock::now();
+  auto completion = client->complete(goal_request());
+  ASSERT_FALSE(completion.has_value());
+  EXPECT_EQ(completion.error().code, ErrorCode::kUnavailable);
+  EXPECT_NE(completion.error().message.find("HTTP 503"), std::string::npos) << completion.error().message;
+  EXPECT_NE(completion.error().message.find("loading model"), std::string::npos);
+  EXPECT_NE(completion.error().message.find("gave up after 3 attempts"), std::string::npos);
+  EXPECT_EQ(hits.load(), 3);
+  EXPECT_LT(seconds_since(start), 2.0);
+  EXPECT_EQ(client->usage().failures, 1);
+}
+
+TEST(HttpClientTest, HonoursRetryAfterOn429) {
+  TestHttpServer server;
+  std::atomic<int> hits{0};
+  server.server().Post("/v1/completions", [&](const httplib::Request&, httplib::Response& res) {
+    if (hits++ == 0) {
+      res.status = 429;
+      res.set_header("Retry-After", "1");
+      res.set_content("{\"error\":{\"message\":\"rate limited\"}}", "application/json");
+      return;
+    }
+    res.set_content(kOpenAiBody, "application/json");
+  });
+  server.start();
+  auto client = openai_client(server.url(), fast_options());
+  const auto start = std::chrono::steady_clock::now();
+  auto completion = client->complete(goal_request());
+  ASSERT_TRUE(completion.has_value()) << completion.error().describe();
+  const double elapsed = seconds_since(start);
+  EXPECT_GE(elapsed, 0.95);  // waited as told, not the 10 ms backoff
+  EXPECT_LT(elapsed, 3.0);
+  EXPECT_EQ(hits.load(), 2);
+}
+
+TEST(HttpClientTest, RetryAfterIsCapped) {
+  TestHttpServer server;
+  std::atomic<int> hits{0};
+  server.server().Post("/v1/completions", [&](const httplib::Request&, httplib::Response& res) {
+    ++hits;
+    res.status = 429;
+    res.set_header("Retry-After", "3600");
+    res.set_content("slow down", "text/plain");
+  });
+  server.start();
+  LlmOptions options = fast_options();
+  options.retry_after_cap = milliseconds(50);
+  auto client = openai_client(server.url(), options);
+  const auto start = std::chrono::steady_clock::now();
+  auto completion = client->complete(goal_request());
+  ASSERT_FALSE(completion.has_value());
+  EXPECT_NE(completion.error().message.find("HTTP 429"), std::string::npos);
+  EXPECT_LT(seconds_since(start), 2.0);
+  EXPECT_EQ(hits.load(), 3);
+}
+
+TEST(HttpClientTest, SlowServerTimesOutWithoutRetry) {
+  TestHttpServer server;
+  std::atomic<int> hits{0};
+  server.server().Post("/v1/completions", [&](const httplib::Request&, httplib::Response& res) {
+    ++hits;
+    server.wait(milliseconds(5000));
+    res.set_content(kOpenAiBody, "application/json");
+  });
+  server.start();
+  LlmOptions options = fast_options();
+  options.request_timeout = milliseconds(300);
+  auto client = openai_client(server.url(), options);
+  const auto start = std::chrono::steady_clock::now();
+  auto completion = client->complete(goal_request());
+  ASSERT_FALSE(completion.has_value());
+  EXPECT_EQ(completion.error().code, ErrorCode::kDeadlineExceeded);
+  EXPECT_NE(completion.error().message.find("in time"), std::string::npos) << completion.error().message;
+  EXPECT_LT(seconds_since(start), 2.0);
+  EXPECT_EQ(hits.load(), 1);
+}
+
+struct BadBodyCase {
+  const char* name;
+  std::string body;
+  const char* says;
+};
+
+class BadBodyTest : public ::testing::TestWithParam<BadBodyCase> {};
+
+TEST_P(BadBodyTest, IsAClearErrorAndNotRetried) {
+  TestHttpServer server;
+  std::atomic<int> hits{0};
+  server.server().Post("/v1/completions", [&](const httplib::Request&, httplib::Response& res) {
+    ++hits;
+    res.set_content(GetParam().body, "application/json");
+  });
+  server.start();
+  auto client = openai_client(server.url(), fast_options());
+  auto completion = client->complete(goal_request());
+  ASSERT_FALSE(completion.has_value());
+  EXPECT_EQ(completion.error().code, ErrorCode::kUnavailable);
+  EXPECT_NE(completion.error().message.find(GetParam().says), std::string::npos)
+      << completion.error().message;
+  EXPECT_NE(completion.error().message.find(server.url()), std::string::npos);
+  EXPECT_EQ(hits.load(), 1);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Faults, BadBodyTest,
+    ::testing::Values(BadBodyCase{"truncated", std::string(kOpenAiBody).substr(0, 60), "cut short"},
+                      BadBodyCase{"malformed", "{\"choices\": [oops]}", "not JSON"},
+                      BadBodyCase{"invalid_utf8",
+                                  "{\"choices\":[{\"text\":\" caf\xC3\x28 table\"}]}",
+                                  "not valid UTF-8"},
+                      BadBodyCase{"wrong_layout", "{\"content\":\"x\"}", "OpenAI completions layout"}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+TEST(HttpClientTest, HungConnectionIsBoundedByTheRequestTimeout) {
+  RawTcpServer server(RawTcpServer::Mode::kHang);
+  LlmOptions options = fast_options();
+  options.request_timeout = milliseconds(700);
+  auto client = openai_client(server.url(), options);
+  const auto start = std::chrono::steady_clock::now();
+  auto completion = client->complete(goal_request());
+  ASSERT_FALSE(completion.has_value());
+  EXPECT_EQ(completion.error().code, ErrorCode::kDeadlineExceeded);
+  EXPECT_LT(seconds_since(start), 2.5);
+  EXPECT_EQ(server.connections(), 1);
+}
+
+TEST(HttpClientTest, StalledConnectionIsBoundedByTheStallTimeout) {
+  RawTcpServer server(RawTcpServer::Mode::kHang);
+  LlmOptions options = fast_options();
+  options.request_timeout = milliseconds(20'000);
+  options.stall_timeout = milliseconds(1000);
+  auto client = openai_client(server.url(), options);
+  const auto start = std::chrono::steady_clock::now();
+  auto completion = client->complete(goal_request());
+  ASSERT_FALSE(completion.has_value());
+  EXPECT_EQ(completion.error().code, ErrorCode::kDeadlineExceeded);
+  EXPECT_NE(completion.error().message.find("nothing sent or received for 1000 ms"), std::string::npos)
+      << completion.error().message;
+  EXPECT_LT(seconds_since(start), 2.5);
+}
+
+TEST(HttpClientTest, TransferCutShortIsRetriedThenReported) {
+  RawTcpServer server(RawTcpServer::Mode::kCutBody);
+  LlmOptions options = fast_options();
+  options.max_retries = 1;
+  auto client = openai_client(server.url(), options);
+  auto completion = client->complete(goal_request());
+  ASSERT_FALSE(completion.has_value());
+  EXPECT_EQ(completion.error().code, ErrorCode::kUnavailable);
+  EXPECT_NE(completion.error().message.find("gave up after 2 attempts"), std::string::npos)
+      << completion.error().message;
+  EXPECT_EQ(server.connections(), 2);
+}
+
+int unused_port() {
+  int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  ::bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof address);
+  socklen_t length = sizeof address;
+  ::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &length);
+  ::close(fd);
+  return ntohs(address.sin_port);
+}
+
+TEST(HttpClientTest, RefusedConnectionIsRetriedThenReported) {
+  auto client = openai_client("http://127.0.0.1:" + std::to_string(unused_port()), fast_options());
+  const auto start = std::chrono::steady_clock::now();
+  auto completion = client->complete(goal_request());
+  ASSERT_FALSE(completion.has_value());
+  EXPECT_EQ(completion.error().code, ErrorCode::kUnavailable);
+  EXPECT_NE(completion.error().message.find("cannot get an answer"), std::string::npos);
+  EXPECT_NE(completion.error().message.find("gave up after 3 attempts"), std::string::npos);
+  EXPECT_LT(seconds_since(start), 2.0);
+}
+
+TEST(HttpClientTest, ClientErrorsAreNotRetriedAndNeverShowTheKey) {
+  TestHttpServer server;
+  std::atomic<int> hits{0};
+  server.server().Post("/v1/completions", [&](const httplib::Request& req, httplib::Response& res) {
+    ++hits;
+    const std::string model = json::parse(req.body).value("model", "");
+    if (model == "missing") {
+      res.status = 404;
+      res.set_content("{\"error\":{\"message\":\"model not found\"}}", "application/json");
+    } else if (model == "bad") {
+      res.status = 400;
+      res.set_content("{\"error\":{\"message\":\"max_tokens too large\"}}", "application/json");
+    } else {
+      res.status = 401;
+      // Servers do echo keys back; we must not pass them on.
+      res.set_content(std::string("{\"error\":{\"message\":\"Incorrect API key provided: ") + kKey + "\"}}",
+                      "application/json");
+    }
+  });
+  server.start();
+  LlmOptions options = fast_options();
+  auto unauthorised = openai_client(server.url(), options)->complete(goal_request());
+  ASSERT_FALSE(unauthorised.has_value());
+  EXPECT_EQ(unauthorised.error().code, ErrorCode::kFailedPrecondition);
+  EXPECT_NE(unauthorised.error().message.find("[redacted]"), std::string::npos);
+  EXPECT_NE(unauthorised.error().message.find("OPENAI_API_KEY"), std::string::npos);
+  expect_no_key(unauthorised.error());
+  options.model = "missing";
+  auto missing = openai_client(server.url(), options)->complete(goal_request());
+  ASSERT_FALSE(missing.has_value());
+  EXPECT_EQ(missing.error().code, ErrorCode::kNotFound);
+  options.model = "bad";
+  auto bad = openai_client(server.url(), options)->complete(goal_request());
+  ASSERT_FALSE(bad.has_value());
+  EXPECT_EQ(bad.error().code, ErrorCode::kInvalidInput);
+  EXPECT_NE(bad.error().message.find("max_tokens too large"), std::string::npos);
+  EXPECT_EQ(hits.load(), 3);
+}
+
+TEST(HttpClientTest, LogsNeverShowTheKey) {
+  TestHttpServer server;
+  std::atomic<int> hits{0};
+  server.server().Post("/v1/completions", [&](const httplib::Request&, httplib::Response& res) {
+    ++hits;
+    res.status = 500;
+    res.set_content(std::string("key ") + kKey + " is over quota", "text/plain");
+  });
+  server.start();
+  std::ostringstream log;
+  auto previous = spdlog::default_logger();
+  auto capture = std::make_shared<spdlog::logger>(
+      "capture", std::make_shared<spdlog::sinks::ostream_sink_mt>(log));
+  capture->set_level(spdlog::level::trace);
+  spdlog::set_default_logger(capture);
+  auto completion = openai_client(server.url(), fast_options())->complete(goal_request());
+  spdlog::set_default_logger(previous);
+  ASSERT_FALSE(completion.has_value());
+  expect_no_key(completion.error());
+  EXPECT_NE(log.str().find("retrying"), std::string::npos) << log.str();
+  EXPECT_EQ(log.str().find(kKey), std::string::npos) << log.str();
+}
+
+}  // namespace
+}  // namespace apprentice::llm

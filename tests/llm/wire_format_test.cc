@@ -1,0 +1,170 @@
+#include "llm/wire_format.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <nlohmann/json.hpp>
+
+namespace apprentice::llm {
+namespace {
+
+using nlohmann::json;
+
+CompletionRequest goal_request() {
+  CompletionRequest request;
+  request.prompt = "(TASK) ... (RESULT)";
+  request.temperature = 0.9;
+  request.max_tokens = 64;
+  request.stop = {"(END RESULT)"};
+  request.top_logprobs = 0;
+  return request;
+}
+
+TEST(WireFormatTest, OpenAiRequestBody) {
+  json body = json::parse(build_request_body(WireFormat::kOpenAi, goal_request(), {"davinci", 7}));
+  EXPECT_EQ(body["prompt"], "(TASK) ... (RESULT)");
+  EXPECT_EQ(body["temperature"], 0.9);
+  EXPECT_EQ(body["max_tokens"], 64);
+  EXPECT_EQ(body["logprobs"], 1);  // at least one, for the chosen tokens
+  EXPECT_EQ(body["stop"], json::array({"(END RESULT)"}));
+  EXPECT_EQ(body["model"], "davinci");
+  EXPECT_EQ(body["seed"], 7);
+  EXPECT_EQ(body["stream"], false);
+}
+
+TEST(WireFormatTest, NativeRequestBodyOmitsUnsetFields) {
+  CompletionRequest request = goal_request();
+  request.top_logprobs = 5;
+  request.stop.clear();
+  json body = json::parse(build_request_body(WireFormat::kLlamaNative, request, {}));
+  EXPECT_EQ(body["n_predict"], 64);
+  EXPECT_EQ(body["n_probs"], 5);
+  EXPECT_FALSE(body.contains("model"));
+  EXPECT_FALSE(body.contains("seed"));
+  EXPECT_FALSE(body.contains("stop"));
+}
+
+TEST(WireFormatTest, OpenAiLegacyLogprobs) {
+  const std::string body = R"({"id":"cmpl-1","object":"text_completion","choices":[{"text":" Open",
+    "index":0,"finish_reason":"length","logprobs":{"tokens":[" Open"],"token_logprobs":[-0.6],
+    "top_logprobs":[{" Pick":-1.58," Open":-0.6," Check":-2.7}],"text_offset":[10]}}],
+    "usage":{"prompt_tokens":300,"completion_tokens":1,"total_tokens":301}})";
+  auto completion = parse_response_body(WireFormat::kOpenAi, body);
+  ASSERT_TRUE(completion.has_value()) << completion.error().describe();
+  EXPECT_EQ(completion->text, " Open");
+  ASSERT_EQ(completion->tokens.size(), 1u);
+  EXPECT_EQ(completion->tokens[0], (TokenLogprob{" Open", -0.6}));
+  ASSERT_EQ(completion->top_logprobs.size(), 1u);
+  ASSERT_EQ(completion->top_logprobs[0].size(), 3u);
+  EXPECT_EQ(completion->top_logprobs[0][0].token, " Open");  // most probable first
+  EXPECT_EQ(completion->top_logprobs[0][1].token, " Pick");
+  EXPECT_EQ(completion->top_logprobs[0][2].token, " Check");
+  EXPECT_EQ(completion->finish_reason, "length");
+  EXPECT_EQ(completion->prompt_tokens, 300);
+  EXPECT_EQ(completion->completion_tokens, 1);
+  EXPECT_EQ(completion->source, ResponseSource::kModel);
+  EXPECT_EQ(completion->raw, body);
+}
+
+TEST(WireFormatTest, OpenAiNullLogprobEntriesAreUnreported) {
+  const std::string body = R"({"choices":[{"text":"a b","logprobs":{"tokens":["a"," b"],
+    "token_logprobs":[null,-0.5],"top_logprobs":[null,{" b":-0.5}]}}]})";
+  auto completion = parse_response_body(WireFormat::kOpenAi, body);
+  ASSERT_TRUE(completion.has_value()) << completion.error().describe();
+  EXPECT_TRUE(std::isnan(completion->tokens[0].logprob));
+  EXPECT_DOUBLE_EQ(*mean_logprob(completion->tokens), -0.5);
+  EXPECT_EQ(completion->completion_tokens, 2);  // no usage: counted tokens
+}
+
+TEST(WireFormatTest, LlamaServerOpenAiCompatibleLogprobs) {
+  const std::string body = R"({"choices":[{"text":" dishwasher","index":0,"finish_reason":"stop",
+    "logprobs":{"content":[{"id":5,"token":" dish","bytes":[32],"logprob":-0.01,
+    "top_logprobs":[{"id":5,"token":" dish","logprob":-0.01},{"id":6,"token":" cupboard","logprob":-5.0}]},
+    {"id":7,"token":"washer","logprob":-0.001,"top_logprobs":[]}]}}],
+    "usage":{"completion_tokens":2,"prompt_tokens":280,"total_tokens":282}})";
+  auto completion = parse_response_body(WireFormat::kOpenAi, body);
+  ASSERT_TRUE(completion.has_value()) << completion.error().describe();
+  EXPECT_EQ(completion->text, " dishwasher");
+  ASSERT_EQ(completion->tokens.size(), 2u);
+  EXPECT_EQ(completion->tokens[1], (TokenLogprob{"washer", -0.001}));
+  EXPECT_EQ(completion->top_logprobs[0][1], (TokenLogprob{" cupboard", -5.0}));
+}
+
+TEST(WireFormatTest, NativeCurrentLayout) {
+  const std::string body = R"({"content":" Open","stop":true,"stop_type":"limit",
+    "tokens_predicted":1,"tokens_evaluated":301,
+    "completion_probabilities":[{"id":1,"token":" Open","bytes":[32,79],"logprob":-0.6,
+      "top_logprobs":[{"id":2,"token":" Pick","logprob":-1.58},{"id":1,"token":" Open","logprob":-0.6}]}]})";
+  auto completion = parse_response_body(WireFormat::kLlamaNative, body);
+  ASSERT_TRUE(completion.has_value()) << completion.error().describe();
+  EXPECT_EQ(completion->text, " Open");
+  EXPECT_EQ(completion->tokens[0], (TokenLogprob{" Open", -0.6}));
+  EXPECT_EQ(completion->top_logprobs[0][0].token, " Open");
+  EXPECT_EQ(completion->finish_reason, "length");
+  EXPECT_EQ(completion->prompt_tokens, 301);
+  EXPECT_EQ(completion->completion_tokens, 1);
+}
+
+TEST(WireFormatTest, NativePostSamplingLayout) {
+  const std::string body = R"({"content":" Open","stop_type":"word","tokens_predicted":1,
+    "completion_probabilities":[{"id":1,"token":" Open","prob":0.5,
+      "top_probs":[{"id":1,"token":" Open","prob":0.5},{"id":2,"token":" Pick","prob":0.0}]}]})";
+  auto completion = parse_response_body(WireFormat::kLlamaNative, body);
+  ASSERT_TRUE(completion.has_value()) << completion.error().describe();
+  EXPECT_DOUBLE_EQ(completion->tokens[0].logprob, std::log(0.5));
+  EXPECT_EQ(completion->top_logprobs[0][1], (TokenLogprob{" Pick", kFloorLogprob}));
+  EXPECT_EQ(completion->finish_reason, "stop");
+}
+
+TEST(WireFormatTest, NativeLegacyLayout) {
+  const std::string body = R"({"content":" Open","stopped_limit":true,"tokens_predicted":1,
+    "tokens_evaluated":12,"completion_probabilities":[{"content":" Open",
+      "probs":[{"tok_str":" Pick","prob":0.25},{"tok_str":" Open","prob":0.5}]}]})";
+  auto completion = parse_response_body(WireFormat::kLlamaNative, body);
+  ASSERT_TRUE(completion.has_value()) << completion.error().describe();
+  EXPECT_EQ(completion->tokens[0].token, " Open");
+  EXPECT_DOUBLE_EQ(completion->tokens[0].logprob, std::log(0.5));  // found among the probs
+  EXPECT_EQ(completion->top_logprobs[0][0].token, " Open");
+  EXPECT_EQ(completion->finish_reason, "length");
+}
+
+void expect_unusable(WireFormat format, const std::string& body, const std::string& says) {
+  auto completion = parse_response_body(format, body);
+  ASSERT_FALSE(completion.has_value()) << body;
+  EXPECT_EQ(completion.error().code, ErrorCode::kUnavailable);
+  EXPECT_NE(completion.error().message.find(says), std::string::npos) << completion.error().message;
+}
+
+TEST(WireFormatTest, BadBodiesAreClearErrors) {
+  expect_unusable(WireFormat::kOpenAi, R"({"choices":[{"text":" The goal)", "cut short");
+  expect_unusable(WireFormat::kOpenAi, R"({"choices":[{"text": nope}]})", "not JSON");
+  expect_unusable(WireFormat::kOpenAi, "", "cut short");
+  expect_unusable(WireFormat::kOpenAi, "<html>busy</html>", "not JSON");
+  expect_unusable(WireFormat::kOpenAi, "[1,2]", "not a JSON object");
+  expect_unusable(WireFormat::kOpenAi, R"({"choices":[]})", "OpenAI completions layout");
+  expect_unusable(WireFormat::kOpenAi, R"({"choices":[{"text":5}]})", "OpenAI completions layout");
+  expect_unusable(WireFormat::kLlamaNative, R"({"text":"x"})", "llama-server layout");
+  expect_unusable(WireFormat::kOpenAi, "{\"choices\":[{\"text\":\"caf\xC3\"}]}", "not valid UTF-8");
+  expect_unusable(WireFormat::kOpenAi, R"({"error":{"message":"model not loaded","code":503}})",
+                  "model not loaded");
+}
+
+TEST(WireFormatTest, Utf8Validation) {
+  EXPECT_FALSE(find_invalid_utf8("plain ascii").has_value());
+  EXPECT_FALSE(find_invalid_utf8("caf\xC3\xA9 \xE2\x82\xAC \xF0\x9F\x8D\xBD").has_value());
+  EXPECT_EQ(find_invalid_utf8("ab\xC3"), 2u);                 // cut short
+  EXPECT_EQ(find_invalid_utf8("\xC0\xAF"), 0u);               // overlong
+  EXPECT_EQ(find_invalid_utf8("x\xED\xA0\x80"), 1u);          // surrogate
+  EXPECT_EQ(find_invalid_utf8("\xF4\x90\x80\x80"), 0u);       // above U+10FFFF
+  EXPECT_EQ(find_invalid_utf8("\xFF"), 0u);
+}
+
+TEST(WireFormatTest, ExcerptIsPrintableAndBounded) {
+  EXPECT_EQ(excerpt_for_message("a\nb\x01\xFF" "c", 100), "a b??c");
+  EXPECT_EQ(excerpt_for_message(std::string(300, 'x'), 10), std::string(10, 'x') + "...");
+  EXPECT_EQ(excerpt_for_message("caf\xC3\xA9"), "caf\xC3\xA9");
+}
+
+}  // namespace
+}  // namespace apprentice::llm
