@@ -14,10 +14,6 @@ namespace {
 
 using language::Interpretation;
 
-constexpr int kGrounded = 0;
-constexpr int kNotGrounded = 1;
-constexpr int kBadInput = 2;
-
 // --object as an id, else as a category (at the --subtask's place if given).
 Result<std::optional<ObjectId>> object_option(const Scenario& scenario, const InterpretOptions& options) {
   if (!options.object) return std::optional<ObjectId>();
@@ -69,38 +65,27 @@ void print_json(const World& world, std::string_view sentence, const Interpretat
   out << j.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << "\n";
 }
 
-int run_corpus(const Scenario& scenario, const language::Grounder& grounder, const InterpretOptions& options,
-               std::ostream& out, std::ostream& err) {
+CommandResult run_corpus(const Scenario& scenario, const language::Grounder& grounder,
+                         const InterpretOptions& options, std::ostream& out) {
   auto lines = language::read_corpus(*options.corpus);
-  if (!lines) {
-    err << "apprentice: " << lines.error().describe() << "\n";
-    return kBadInput;
-  }
+  if (!lines) return tl::unexpected(lines.error());
   auto results = language::ground_corpus(grounder, scenario, *lines);
   language::CorpusReport report = language::summarize(results);
   out << (options.json ? language::format_report_json(report) + "\n" : language::format_report(report));
-  return kGrounded;
+  return Outcome::kSuccess;
 }
 
 }  // namespace
 
-int run_interpret(const InterpretOptions& options, std::ostream& out, std::ostream& err) {
-  if (options.sentence.has_value() == options.corpus.has_value()) {
-    err << "apprentice: interpret takes either a sentence or --corpus FILE\n";
-    return kBadInput;
-  }
+CommandResult run_interpret(const InterpretOptions& options, std::ostream& out) {
+  if (options.sentence.has_value() == options.corpus.has_value())
+    return make_error(ErrorCode::kInvalidInput, "interpret takes either a sentence or --corpus FILE");
   auto scenario = load_scenario(options.scenario);
-  if (!scenario) {
-    err << "apprentice: " << scenario.error().describe() << "\n";
-    return kBadInput;
-  }
+  if (!scenario) return tl::unexpected(scenario.error());
   language::Grounder grounder(language::Lexicon::open_default());
-  if (options.corpus) return run_corpus(*scenario, grounder, options, out, err);
+  if (options.corpus) return run_corpus(*scenario, grounder, options, out);
   auto object = object_option(*scenario, options);
-  if (!object) {
-    err << "apprentice: " << object.error().describe() << "\n";
-    return kBadInput;
-  }
+  if (!object) return tl::unexpected(object.error());
   const World& world = scenario->world;
   Interpretation in = grounder.interpret(*options.sentence, world, *object);
   if (options.json) {
@@ -108,9 +93,12 @@ int run_interpret(const InterpretOptions& options, std::ostream& out, std::ostre
   } else {
     print_text(world, *options.sentence, in, out);
   }
-  if (const auto* failure = in.failure())
-    return failure->kind == language::FailureKind::kUninterpretable ? kBadInput : kNotGrounded;
-  return kGrounded;
+  if (const auto* failure = in.failure()) {
+    if (failure->kind == language::FailureKind::kUninterpretable)
+      return make_error(ErrorCode::kInvalidInput, "the sentence is outside the grammar: " + failure->detail);
+    return Outcome::kGoalNotReached;
+  }
+  return Outcome::kSuccess;
 }
 
 }  // namespace apprentice::cli

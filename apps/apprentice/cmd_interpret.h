@@ -6,15 +6,19 @@
 //     grounds the `response` of every line for that line's object and
 //     subtask and prints counts by outcome and agreement with `stars_viable`.
 //
-// Exit codes: 0 the sentence grounded (or the corpus report was printed);
-// 1 it parsed but did not ground (unknown word, no such object, affordance
-// mismatch, unknown predicate); 2 bad input: options, files, or a sentence
-// the grammar does not cover.
+// Outcomes (main() maps them to exit codes): success when the sentence
+// grounded (or the corpus report was printed); kGoalNotReached (exit 1)
+// when it parsed but did not ground (unknown word, no such object,
+// affordance mismatch, unknown predicate); an kInvalidInput or kNotFound
+// error (exit 2) for bad options or files, or a sentence the grammar does
+// not cover.
 #pragma once
 
 #include <iosfwd>
 #include <optional>
 #include <string>
+
+#include "outcome.h"
 
 namespace apprentice::cli {
 
@@ -27,6 +31,6 @@ struct InterpretOptions {
   bool json = false;
 };
 
-int run_interpret(const InterpretOptions& options, std::ostream& out, std::ostream& err);
+CommandResult run_interpret(const InterpretOptions& options, std::ostream& out);
 
 }  // namespace apprentice::cli

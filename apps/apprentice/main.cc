@@ -13,6 +13,7 @@
 
 #include "cmd_agent.h"
 #include "cmd_core.h"
+#include "cmd_interpret.h"
 #include "util/log.h"
 
 namespace apprentice::cli {
@@ -79,12 +80,30 @@ int run(int argc, char** argv) {
     cmd->add_option("--llm", flags.spec,
                     "LLM backend: openai:URL, llama:URL, replay:FILE, record:FILE,SPEC, corpus:FILE "
                     "(default: $APPRENTICE_LLM)");
-    cmd->add_option("--model", flags.model, "Model name sent to the LLM server (default: $OPENAI_MODEL)");
-    cmd->add_option("--api-key", flags.api_key, "API key for the LLM server (default: $OPENAI_API_KEY)");
+    cmd->add_option("--llm-model", flags.model, "Model name sent to the LLM server (default: $OPENAI_MODEL)");
+    cmd->add_option("--llm-api-key", flags.api_key, "API key for the LLM server (default: $OPENAI_API_KEY)");
     cmd->add_option("--llm-timeout-ms", flags.timeout_ms, "Total time allowed for one LLM request")
         ->check(CLI::PositiveNumber);
   };
   const std::string program = argc > 0 ? argv[0] : "apprentice";
+
+  InterpretOptions interpret;
+  std::string interpret_sentence, interpret_object, interpret_subtask, interpret_corpus;
+  auto* interpret_cmd = app.add_subcommand(
+      "interpret", "Print a sentence's logical form and its grounding, or ground a corpus of LLM goal statements");
+  interpret_cmd->add_option("--scenario", interpret.scenario, "Scenario file (YAML)")->required();
+  interpret_cmd->add_option("--object", interpret_object, "The object of interest: an id (mug2) or a category");
+  interpret_cmd->add_option("--subtask", interpret_subtask, "The subtask (a category --object is taken at its place)");
+  interpret_cmd->add_option("--corpus", interpret_corpus, "A JSONL corpus of LLM goal statements to ground");
+  interpret_cmd->add_flag("--json", interpret.json, "Machine-readable output");
+  interpret_cmd->add_option("sentence", interpret_sentence, "The sentence to interpret");
+  interpret_cmd->callback([&] {
+    if (!interpret_sentence.empty()) interpret.sentence = interpret_sentence;
+    if (!interpret_object.empty()) interpret.object = interpret_object;
+    if (!interpret_subtask.empty()) interpret.subtask = interpret_subtask;
+    if (!interpret_corpus.empty()) interpret.corpus = interpret_corpus;
+    result = run_interpret(interpret, std::cout);
+  });
 
   ExperimentOptions experiment;
   auto* experiment_cmd = app.add_subcommand(

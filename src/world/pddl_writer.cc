@@ -86,13 +86,23 @@ std::string category_from_name(const std::string& name) {
   return end == 0 ? name : name.substr(0, end);
 }
 
+// Objects of a problem file are places if their type says so, so that
+// search (relevance pruning) treats them as it treats a scenario's places.
+ObjectKind kind_of_type(const Domain& domain, TypeId type) {
+  auto receptacle = domain.find_type("receptacle");
+  if (receptacle && domain.is_subtype(type, *receptacle)) return ObjectKind::kReceptacle;
+  auto surface = domain.find_type("surface");
+  if (surface && domain.is_subtype(type, *surface)) return ObjectKind::kSurface;
+  return ObjectKind::kItem;
+}
+
 Status read_objects(const Domain& domain, const SExpr& section, Universe& universe,
                     std::string_view source) {
   std::vector<const SExpr*> pending;
   auto flush = [&](TypeId type) -> Status {
     for (const SExpr* n : pending) {
       if (universe.find(n->atom)) return tl::unexpected(syntax_error(source, n->position, "object " + n->atom + " is declared twice"));
-      universe.add(ObjectInfo{n->atom, category_from_name(n->atom), ObjectKind::kItem, type});
+      universe.add(ObjectInfo{n->atom, category_from_name(n->atom), kind_of_type(domain, type), type});
     }
     pending.clear();
     return {};

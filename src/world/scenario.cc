@@ -77,9 +77,12 @@ class ScenarioBuilder {
 
  private:
   tl::unexpected<Error> fail(const YAML::Node& at, const std::string& message) const {
+    return fail_at(at.IsDefined() ? at.Mark() : YAML::Mark::null_mark(), message);
+  }
+
+  tl::unexpected<Error> fail_at(const YAML::Mark& mark, const std::string& message) const {
     std::string where = source_.string();
-    if (at.IsDefined() && at.Mark().line >= 0)
-      where += ":" + std::to_string(at.Mark().line + 1) + ":" + std::to_string(at.Mark().column + 1);
+    if (mark.line >= 0) where += ":" + std::to_string(mark.line + 1) + ":" + std::to_string(mark.column + 1);
     return tl::unexpected(Error{ErrorCode::kInvalidInput, where + ": " + message});
   }
 
@@ -125,7 +128,12 @@ class ScenarioBuilder {
     if (!path) return tl::unexpected(path.error());
     scenario.domain_path = source_.parent_path() / *path;
     auto domain = read_domain_file(scenario.domain_path);
-    if (!domain) return fail(root["domain"], "cannot load the domain: " + domain.error().message);
+    if (!domain) {
+      // Keep the code: a missing domain file is kNotFound, as a missing scenario is.
+      auto error = fail(root["domain"], "cannot load the domain: " + domain.error().message);
+      error.value().code = domain.error().code;
+      return error;
+    }
     auto vocabulary = Vocabulary::resolve(*domain);
     if (!vocabulary) return fail(root["domain"], vocabulary.error().message);
     for (const char* type : {"item", "receptacle", "surface"}) {
@@ -141,6 +149,17 @@ class ScenarioBuilder {
 
   std::string next_id(const std::string& category) { return category + std::to_string(++counters_[category]); }
 
+  // Adds an object under the next id of its category. Categories ending in
+  // a digit can clash ("cup" 11 times and "cup1" both make cup11): that is
+  // bad input, refused here rather than left to Universe::add's check.
+  Result<ObjectId> add_object(const YAML::Node& at, ObjectInfo info) {
+    info.id = next_id(info.category);
+    if (universe_.find(info.id))
+      return fail(at, "two objects would have the id " + info.id + " (a category ending in a digit clashes with " +
+                          "another category's numbered ids)");
+    return universe_.add(std::move(info));
+  }
+
   Status read_places(const YAML::Node& root, Scenario&) {
     const YAML::Node places = root["places"];
     if (!places || !places.IsSequence() || places.size() == 0)
@@ -154,8 +173,10 @@ class ScenarioBuilder {
       if (!kind_text) return tl::unexpected(kind_text.error());
       auto kind = parse_object_kind(*kind_text);
       if (!kind || *kind == ObjectKind::kItem) return fail(p["kind"], "expected kind 'surface' or 'receptacle', not '" + *kind_text + "'");
-      ObjectId id = universe_.add(ObjectInfo{next_id(*category), *category, *kind,
-                                             types_[*kind == ObjectKind::kSurface ? "surface" : "receptacle"]});
+      auto added = add_object(p, ObjectInfo{"", *category, *kind,
+                                            types_[*kind == ObjectKind::kSurface ? "surface" : "receptacle"]});
+      if (!added) return tl::unexpected(added.error());
+      ObjectId id = *added;
       facts_.push_back(Fact(*kind == ObjectKind::kSurface ? vocabulary_.surface : vocabulary_.receptacle, {id}));
       if (const YAML::Node door = p["door"]) {
         if (*kind != ObjectKind::kReceptacle) return fail(door, "only a receptacle can have a door");
@@ -193,7 +214,10 @@ class ScenarioBuilder {
         return fail(o["count"], "expected a count between 1 and 100000");
       bool on_surface = universe_.info(*place).kind == ObjectKind::kSurface;
       for (int i = 0; i < count; ++i) {
-        ObjectId id = universe_.add(ObjectInfo{next_id(*category), *category, ObjectKind::kItem, types_["item"]});
+        auto added = add_object(o, ObjectInfo{"", *category, ObjectKind::kItem, types_["item"]});
+        if (!added) return tl::unexpected(added.error());
+        ObjectId id = *added;
+        object_marks_[id] = o.Mark();
         facts_.push_back(Fact(vocabulary_.grabbable, {id}));
         facts_.push_back(Fact(on_surface ? vocabulary_.on : vocabulary_.in, {id, *place}));
       }
@@ -263,11 +287,12 @@ class ScenarioBuilder {
       const Subtask* s = scenario.subtask_of(o);
       if (s == nullptr) continue;
       const std::string& category = scenario.world.universe->info(o).category;
-      if (!scenario.find_intent(s->verb, category))
-        return tl::unexpected(Error{ErrorCode::kInvalidInput,
-                                    source_.string() + ": the intent says nothing about " + category +
-                                        " for subtask " + s->verb + " (object " +
-                                        scenario.world.universe->name(o) + ")"});
+      if (!scenario.find_intent(s->verb, category)) {
+        auto mark = object_marks_.find(o);
+        return fail_at(mark == object_marks_.end() ? YAML::Mark::null_mark() : mark->second,
+                       "the intent says nothing about " + category + " for subtask " + s->verb + " (object " +
+                           scenario.world.universe->name(o) + ")");
+      }
     }
     return {};
   }
@@ -278,6 +303,7 @@ class ScenarioBuilder {
   Vocabulary vocabulary_;
   std::map<std::string, TypeId> types_;
   std::map<std::string, int> counters_;
+  std::map<ObjectId, YAML::Mark> object_marks_;  // where each item was declared
 };
 
 }  // namespace

@@ -1,0 +1,42 @@
+# Quick start (README): bash scripts/install-deps.sh && make run | make test
+#   make run    installs what is missing, builds, runs the paper's experiment
+#   make test   installs what is missing, builds, runs every test (also under ASan+UBSan)
+JOBS ?= $(shell nproc)
+BUILD ?= build
+ASAN_BUILD ?= build-asan
+
+.PHONY: deps build run test test-release test-asan test-fuzz bench clean
+
+deps:
+	@bash scripts/install-deps.sh
+
+build: deps
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo
+	cmake --build $(BUILD) -j $(JOBS)
+
+# The LLM conditions run too when an LLM is at hand: $$APPRENTICE_LLM, or
+# the recorded GPT-3 goal responses of ../shared when this checkout has them.
+CORPUS ?= ../shared/data/stars-tidy-kitchen/goal_responses.jsonl
+LLM_FLAG = $(if $(APPRENTICE_LLM),,$(if $(wildcard $(CORPUS)),--llm corpus:$(CORPUS)))
+
+run: build
+	./$(BUILD)/apprentice experiment --scenario data/scenarios/tidy-kitchen.yaml $(LLM_FLAG) --transcript $(BUILD)/transcripts
+
+test-release: build
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+test-asan: deps
+	cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DAPPRENTICE_SANITIZE=ON -DAPPRENTICE_BENCH=OFF
+	cmake --build $(ASAN_BUILD) -j $(JOBS)
+	cd $(ASAN_BUILD) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j $(JOBS)
+
+test-fuzz: deps
+	@if [ -x scripts/fuzz-parser.sh ]; then bash scripts/fuzz-parser.sh; fi
+
+test: test-release test-asan test-fuzz
+
+bench: build
+	./$(BUILD)/bench/bench_search
+
+clean:
+	rm -rf $(BUILD) $(ASAN_BUILD) build-fuzz

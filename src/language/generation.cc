@@ -1,0 +1,161 @@
+#include "language/generation.h"
+
+#include <algorithm>
+
+#include "util/text.h"
+
+namespace apprentice::language {
+namespace {
+
+std::string capitalized(std::string text) {
+  if (!text.empty() && text[0] >= 'a' && text[0] <= 'z') text[0] = static_cast<char>(text[0] - 'a' + 'A');
+  return text;
+}
+
+// Strips final punctuation and spaces: the question supplies its own.
+std::string_view bare(std::string_view text) {
+  text = trim(text);
+  while (!text.empty() && (text.back() == '.' || text.back() == '?' || text.back() == '!')) {
+    text.remove_suffix(1);
+    text = trim(text);
+  }
+  return text;
+}
+
+// The English of one literal; `object_word` replaces the object of
+// interest's noun ("the object") when set.
+std::string describe_literal(const World& world, const Literal& literal, std::optional<ObjectId> object,
+                             std::string_view object_word) {
+  const Vocabulary& v = world.vocabulary;
+  const Fact& f = literal.fact;
+  auto noun = [&](ObjectId id) {
+    return object && *object == id ? std::string(object_word) : noun_for(world, id);
+  };
+  std::string is = literal.positive ? " is " : " is not ";
+  if ((f.predicate == v.in || f.predicate == v.on) && f.arity == 2)
+    return noun(f.args[0]) + is + (f.predicate == v.in ? "in " : "on ") + noun(f.args[1]);
+  if (f.predicate == v.closed && f.arity == 1) return noun(f.args[0]) + (literal.positive ? " is closed" : " is open");
+  if (f.predicate == v.holding && f.arity == 1) return "I am " + std::string(literal.positive ? "" : "not ") + "holding " + noun(f.args[0]);
+  if (f.predicate == v.handempty) return literal.positive ? "my hand is empty" : "my hand is full";
+  return format_literal(*world.domain, *world.universe, literal);
+}
+
+std::string describe_literals(const World& world, const Goal& goal, std::optional<ObjectId> object,
+                              std::string_view object_word) {
+  std::vector<Literal> ordered = goal.literals;
+  const Vocabulary& v = world.vocabulary;
+  std::stable_partition(ordered.begin(), ordered.end(), [&](const Literal& l) {
+    return l.fact.predicate == v.in || l.fact.predicate == v.on;
+  });
+  std::vector<std::string> parts;
+  for (const Literal& l : ordered) parts.push_back(describe_literal(world, l, object, object_word));
+  return join(parts, " and ");
+}
+
+std::string category_of(const World& world, ObjectId object) { return world.universe->info(object).category; }
+
+std::string for_object(const World& world, ObjectId object) {
+  std::string category = category_of(world, object);
+  std::string where = location_phrase(world, object);
+  return std::string(article_for(category)) + " " + category + (where.empty() ? "" : " " + where);
+}
+
+}  // namespace
+
+std::string_view article_for(std::string_view word) {
+  if (word.empty()) return "a";
+  char c = word.front();
+  return (c == 'a' || c == 'e' || c == 'i' || c == 'o' || c == 'u') ? "an" : "a";
+}
+
+std::string noun_for(const World& world, ObjectId object) {
+  const ObjectInfo& info = world.universe->info(object);
+  std::string name = info.category;
+  if (info.kind != ObjectKind::kItem) std::replace(name.begin(), name.end(), '-', ' ');
+  return "the " + name;
+}
+
+std::string location_phrase(const World& world, ObjectId object) {
+  const Vocabulary& v = world.vocabulary;
+  for (const Fact& f : world.state.facts()) {
+    if (f.arity != 2 || f.args[0] != object) continue;
+    if (f.predicate == v.on) return "on " + noun_for(world, f.args[1]);
+    if (f.predicate == v.in) return "in " + noun_for(world, f.args[1]);
+  }
+  return "";
+}
+
+std::string say_task_name(std::string_view name) { return capitalized(std::string(bare(name))) + "."; }
+
+std::string say_repeat_while(const World& world, ObjectId place) {
+  bool surface = world.universe->info(place).kind == ObjectKind::kSurface;
+  return "Repeat the following tasks while an object is " + std::string(surface ? "on " : "in ") +
+         noun_for(world, place) + ".";
+}
+
+std::string say_subtask(std::string_view verb, const World& world, ObjectId place) {
+  bool surface = world.universe->info(place).kind == ObjectKind::kSurface;
+  return capitalized(std::string(verb)) + " an object that is " + (surface ? "on " : "in ") +
+         noun_for(world, place) + ".";
+}
+
+std::string say_done() { return "You are done."; }
+std::string say_repeat() { return "Repeat."; }
+std::string say_answer(bool yes) { return yes ? "yes." : "no."; }
+
+std::string describe_goal(const World& world, const Goal& goal) {
+  return describe_literals(world, goal, std::nullopt, "");
+}
+
+std::string describe_goal_instruction(const World& world, ObjectId object, const Goal& goal) {
+  std::string category = category_of(world, object);
+  return "If the object is " + std::string(article_for(category)) + " " + category +
+         " then the goal is that " + describe_literals(world, goal, object, "the object") + ".";
+}
+
+std::string describe_action(const World& world, const Action& action) {
+  const std::string& schema = world.domain->actions.at(action.schema).name;
+  auto args = action.arguments();
+  auto arg = [&](std::size_t i) { return i < args.size() ? noun_for(world, args[i]) : std::string("it"); };
+  if (schema == "open") return "Open " + arg(0) + ".";
+  if (schema == "close") return "Close " + arg(0) + ".";
+  if (schema == "pick-up" || schema == "pick-up-from") return "Pick up " + arg(0) + ".";
+  if (schema == "put-in") return "Put " + arg(0) + " in " + arg(1) + ".";
+  if (schema == "put-on") return "Put " + arg(0) + " on " + arg(1) + ".";
+  return capitalized(format_action(*world.domain, *world.universe, action)) + ".";
+}
+
+std::string describe_plan(const World& world, std::span<const Action> actions) {
+  std::vector<std::string> sentences;
+  for (const Action& a : actions) sentences.push_back(describe_action(world, a));
+  return join(sentences, " ");
+}
+
+std::string say_next_goal_request(std::string_view subtask_verb) {
+  return "What is the next goal or subtask of " + std::string(subtask_verb) + "?";
+}
+
+std::string say_next_action_request(std::string_view subtask_verb) {
+  return "What do I do next for " + std::string(subtask_verb) + "?";
+}
+
+std::string say_goal_question(const World& world, ObjectId object, std::string_view goal_statement,
+                              bool from_language_model) {
+  std::string_view statement = bare(goal_statement);
+  constexpr std::string_view kPrefix = "the goal is that ";
+  if (starts_with_ignoring_case(statement, kPrefix)) statement.remove_prefix(kPrefix.size());
+  return std::string(from_language_model ? "[LM] " : "") + "For " + for_object(world, object) +
+         " is the goal that " + std::string(trim(statement)) + "?";
+}
+
+std::string say_goal_question(const World& world, ObjectId object, const Goal& goal, bool from_language_model) {
+  return say_goal_question(world, object, describe_goal(world, goal), from_language_model);
+}
+
+std::string say_action_question(const World& world, ObjectId object, std::string_view action_text,
+                                bool from_language_model) {
+  return std::string(from_language_model ? "[LM] " : "") + "For the " + category_of(world, object) +
+         " should I '" + std::string(bare(action_text)) + "'?";
+}
+
+}  // namespace apprentice::language

@@ -1,0 +1,70 @@
+// What the agent and the simulated instructor say, in the paper's words and
+// exactly as ../shared/data/stars-tidy-kitchen/instructor_script.txt says
+// it. Items keep their hyphenated category ("the ceramic-plate"); places are
+// spoken with spaces ("the recycling bin", "the dish rack"), as the script
+// does. Every sentence here parses back (language/parser.h) to what it says.
+#pragma once
+
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "world/action.h"
+#include "world/goal.h"
+#include "world/scenario.h"
+
+namespace apprentice::language {
+
+// "an" before a vowel, else "a": "an apple-juice", "a ketchup".
+std::string_view article_for(std::string_view word);
+// "the ketchup", "the recycling bin".
+std::string noun_for(const World& world, ObjectId object);
+// "on the table" / "in the dish rack": where the object is now; "" if it is
+// on or in nothing (held).
+std::string location_phrase(const World& world, ObjectId object);
+
+// --- The instructor's task structure -------------------------------------
+// "Tidy kitchen."
+std::string say_task_name(std::string_view name);
+// "Repeat the following tasks while an object is on the table." ("in" for
+// a receptacle: "... is in the dish rack.")
+std::string say_repeat_while(const World& world, ObjectId place);
+// "Clear an object that is on the table."
+std::string say_subtask(std::string_view verb, const World& world, ObjectId place);
+std::string say_done();    // "You are done."
+std::string say_repeat();  // "Repeat."
+// "yes." / "no." (the script's answers).
+std::string say_answer(bool yes);
+
+// --- Goals and actions in English ----------------------------------------
+// "the ketchup is in the fridge and the fridge is closed": placements
+// first, then doors, in the goal's order otherwise.
+std::string describe_goal(const World& world, const Goal& goal);
+// "If the object is a ketchup then the goal is that the object is in the
+// fridge and the fridge is closed." — `object` is spoken as "the object".
+std::string describe_goal_instruction(const World& world, ObjectId object, const Goal& goal);
+// "Open the fridge.", "Pick up the ketchup.", "Put the ketchup in the
+// fridge.", "Put the mug on the counter.", "Close the fridge."
+std::string describe_action(const World& world, const Action& action);
+// The actions' sentences, space-separated, for transcripts.
+std::string describe_plan(const World& world, std::span<const Action> actions);
+
+// --- The agent's questions -------------------------------------------------
+// "What is the next goal or subtask of clear?"
+std::string say_next_goal_request(std::string_view subtask_verb);
+// "What do I do next for clear?"
+std::string say_next_action_request(std::string_view subtask_verb);
+// "[LM] For a ceramic-plate on the table is the goal that the ceramic-plate
+// is in the cupboard and the cupboard is closed?" — `goal_statement` is the
+// LLM's text ("the goal is that ..." or just what follows "that"); the tag
+// marks words that came from the language model.
+std::string say_goal_question(const World& world, ObjectId object, std::string_view goal_statement,
+                              bool from_language_model = true);
+// The same for a goal the agent holds: "... is the goal that <describe_goal>?"
+std::string say_goal_question(const World& world, ObjectId object, const Goal& goal,
+                              bool from_language_model);
+// "[LM] For the ceramic-plate should I 'Pick up ceramic-plate'?"
+std::string say_action_question(const World& world, ObjectId object, std::string_view action_text,
+                                bool from_language_model = true);
+
+}  // namespace apprentice::language

@@ -1,0 +1,57 @@
+// Reference resolution: which perceived object a noun phrase names. Used by
+// language/grounding.cc; public so that tests can probe the policy alone.
+//
+// Tiers, first that answers wins (docs/language.md):
+//   1. "the object": the object of interest;
+//   2. the phrase is a category, hyphenated or spaced ("plastic bottle"),
+//      or a type of the domain ("receptacle": every receptacle);
+//   3. a bare head noun that ends the names of the role's categories ("bin"
+//      -> recycling-bin: the world calls nothing else here a bin);
+//   4. a WordNet base form that is a category ("ketchups");
+//   5. WordNet spellings and relations (language/lexicon.h), over the
+//      categories of the role's objects, accepted only if exactly one
+//      object fits.
+// Where several objects fit, the object of interest wins if it is one of
+// them, else the only one at the place the sentence names; otherwise the
+// phrase is ambiguous, which is a failure.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <variant>
+
+#include "language/grounding.h"
+#include "language/lexicon.h"
+#include "language/logical_form.h"
+#include "world/scenario.h"
+
+namespace apprentice::language {
+
+// What kind of thing the sentence needs there: an item to move, a place to
+// put it or open, or either. Only tiers 3 and 5 filter by role; a category
+// named exactly is taken whatever it is, so that "Open the ketchup" is an
+// affordance mismatch rather than a mystery.
+enum class Role { kItem, kPlace, kAny };
+
+struct ReferenceContext {
+  const World& world;
+  const Lexicon& lexicon;
+  std::optional<ObjectId> object_of_interest;
+  // A place the sentence locates the thing at ("Pick up the plate from the
+  // table"): among several fitting objects, the one there is meant.
+  std::optional<ObjectId> located_at = std::nullopt;
+};
+
+using Resolution = std::variant<Reference, GroundingFailure>;
+
+Resolution resolve(const NounPhrase& phrase, Role role, const ReferenceContext& context);
+
+// The category a phrase names ("a ketchup" in "If the object is a
+// ketchup"), by the same tiers; every fitting object must share it.
+std::variant<std::string, GroundingFailure> resolve_category(const NounPhrase& phrase,
+                                                             const ReferenceContext& context);
+
+// "recycling bin" / "recycling-bin" -> "recycling-bin".
+std::string category_key(std::string_view phrase);
+
+}  // namespace apprentice::language

@@ -1,0 +1,214 @@
+#include "language/wordnet.h"
+
+#include <cstdlib>
+#include <cstring>
+#include <map>
+#include <mutex>
+
+#include <spdlog/spdlog.h>
+#include <wn.h>
+
+#include "util/text.h"
+
+namespace apprentice::language {
+namespace {
+
+// The C library's own buffers hold WORDBUF (256) bytes; longer strings are
+// never passed in.
+constexpr std::size_t kMaxLemmaBytes = 200;
+
+// The library's global state, mirrored: whether wninit() succeeded and from
+// which directory. This and the lock are the process's only WordNet state,
+// kept as function-local statics because the C library's state is global.
+struct Library {
+  std::mutex mutex;
+  bool open = false;
+  // wninit() initialises only once per process (later calls return its
+  // first status without reopening anything), so every later open, even
+  // after a failure, must go through re_wninit().
+  bool initialised = false;
+  std::string directory;  // "" = the environment or the compiled default
+  bool saw_environment = false;
+  std::optional<std::string> environment;  // WNSEARCHDIR before we touched it
+};
+
+Library& library() {
+  static Library instance;
+  return instance;
+}
+
+// The library reports errors by calling display_message, which by default
+// prints to stderr; we report them as values instead.
+int quiet_message(char*) { return -1; }
+
+// A mutable, NUL-terminated copy for the C API, spaces as underscores.
+struct CString {
+  char text[WORDBUF] = {};
+  explicit CString(std::string_view s, bool underscores = true) {
+    std::size_t n = std::min(s.size(), kMaxLemmaBytes);
+    std::memcpy(text, s.data(), n);
+    text[n] = '\0';
+    if (underscores)
+      for (std::size_t i = 0; i < n; ++i)
+        if (text[i] == ' ') text[i] = '_';
+  }
+};
+
+std::string from_wordnet(const char* word) {
+  std::string out = to_lower(word ? word : "");
+  for (char& c : out)
+    if (c == '_') c = ' ';
+  // Adjective markers such as "(a)" only occur in adjective synsets.
+  if (auto paren = out.find('('); paren != std::string::npos) out.erase(paren);
+  return out;
+}
+
+// "(a receptacle where waste can be discarded; \"she tossed ...\")" ->
+// "a receptacle where waste can be discarded".
+std::string definition_of(const char* defn) {
+  std::string text = defn ? defn : "";
+  if (!text.empty() && text.front() == '(') text.erase(0, 1);
+  if (auto quote = text.find("; \""); quote != std::string::npos) text.erase(quote);
+  while (!text.empty() && (text.back() == ')' || text.back() == ' ')) text.pop_back();
+  return text;
+}
+
+bool usable(std::string_view s) {
+  return !s.empty() && s.size() <= kMaxLemmaBytes && s.find('\0') == std::string_view::npos;
+}
+
+}  // namespace
+
+struct WordNet::Cache {
+  std::map<std::string, std::vector<SynsetOffset>, std::less<>> senses;
+  std::map<SynsetOffset, std::optional<Synset>> synsets;
+};
+
+Result<WordNet> WordNet::open(const std::optional<std::filesystem::path>& dictionary) {
+  Library& lib = library();
+  std::lock_guard lock(lib.mutex);
+  std::string wanted = dictionary ? dictionary->string() : "";
+  if (!lib.open || wanted != lib.directory) {
+    display_message = quiet_message;
+    // WNSEARCHDIR is how the C library is told where the database is; it is
+    // read inside wninit(), under our lock. Without a dictionary, the
+    // caller's environment (as it was before any override) applies.
+    if (!lib.saw_environment) {
+      if (const char* env = std::getenv("WNSEARCHDIR")) lib.environment = env;
+      lib.saw_environment = true;
+    }
+    if (dictionary) {
+      ::setenv("WNSEARCHDIR", wanted.c_str(), 1);
+    } else if (lib.environment) {
+      ::setenv("WNSEARCHDIR", lib.environment->c_str(), 1);
+    } else {
+      ::unsetenv("WNSEARCHDIR");
+    }
+    int status = lib.initialised ? re_wninit() : wninit();
+    lib.initialised = true;
+    if (status != 0) {
+      lib.open = false;
+      const char* env = std::getenv("WNSEARCHDIR");
+      return make_error(ErrorCode::kUnavailable,
+                        "cannot open the WordNet database in " +
+                            (env ? std::string(env) : std::string("the library's default directory")));
+    }
+    lib.open = true;
+    lib.directory = wanted;
+    spdlog::debug("wordnet: opened {}", wanted.empty() ? "the default database" : wanted);
+  }
+  return WordNet(std::make_shared<Cache>());
+}
+
+std::vector<std::string> WordNet::noun_base_forms(std::string_view word) const {
+  std::vector<std::string> forms;
+  if (!usable(word)) return forms;
+  std::lock_guard lock(library().mutex);
+  if (!library().open) return forms;
+  CString query(word);
+  std::string self = from_wordnet(query.text);
+  // morphstr iterates through static state: the first call takes the word,
+  // later calls take NULL, until it returns NULL.
+  for (char* form = morphstr(query.text, NOUN); form != nullptr; form = morphstr(nullptr, NOUN)) {
+    std::string base = from_wordnet(form);
+    if (base != self && std::find(forms.begin(), forms.end(), base) == forms.end()) forms.push_back(base);
+  }
+  return forms;
+}
+
+std::vector<SynsetOffset> WordNet::noun_senses(std::string_view lemma) const {
+  if (!usable(lemma)) return {};
+  std::lock_guard lock(library().mutex);
+  if (!library().open) return {};
+  std::string key = from_wordnet(CString(lemma).text);
+  if (auto it = cache_->senses.find(key); it != cache_->senses.end()) return it->second;
+  std::vector<SynsetOffset> offsets;
+  CString query(key);
+  if (IndexPtr index = index_lookup(query.text, NOUN)) {
+    for (int i = 0; i < index->off_cnt; ++i) offsets.push_back(static_cast<SynsetOffset>(index->offset[i]));
+    free_index(index);
+  }
+  cache_->senses.emplace(key, offsets);
+  return offsets;
+}
+
+std::optional<Synset> WordNet::synset(SynsetOffset offset) const {
+  std::lock_guard lock(library().mutex);
+  if (auto it = cache_->synsets.find(offset); it != cache_->synsets.end()) return it->second;
+  std::optional<Synset> result;
+  char empty[1] = {'\0'};
+  if (!library().open) return result;
+  if (offset >= 0) {
+    if (SynsetPtr raw = read_synset(NOUN, offset, empty)) {
+      Synset s;
+      s.offset = offset;
+      s.lexicographer_file = raw->fnum;
+      for (int i = 0; i < raw->wcount; ++i) s.lemmas.push_back(from_wordnet(raw->words[i]));
+      s.gloss = definition_of(raw->defn);
+      for (int i = 0; i < raw->ptrcount; ++i) {
+        if (raw->ppos[i] != NOUN) continue;
+        if (raw->ptrtyp[i] == HYPERPTR) s.hypernyms.push_back(raw->ptroff[i]);
+        if (raw->ptrtyp[i] == HYPOPTR) s.hyponyms.push_back(raw->ptroff[i]);
+      }
+      free_synset(raw);
+      result = std::move(s);
+    }
+  }
+  cache_->synsets.emplace(offset, result);
+  return result;
+}
+
+bool WordNet::has_noun(std::string_view lemma) const { return !noun_senses(lemma).empty(); }
+
+bool WordNet::has_verb(std::string_view lemma) const {
+  if (!usable(lemma)) return false;
+  std::lock_guard lock(library().mutex);
+  if (!library().open) return false;
+  CString query(lemma);
+  IndexPtr index = index_lookup(query.text, VERB);
+  if (index == nullptr) return false;
+  free_index(index);
+  return true;
+}
+
+bool WordNet::knows(std::string_view word) const {
+  if (!usable(word)) return false;
+  std::lock_guard lock(library().mutex);
+  if (!library().open) return false;
+  for (int pos = NOUN; pos <= ADV; ++pos) {
+    CString query(word);
+    if (IndexPtr index = index_lookup(query.text, pos)) {
+      free_index(index);
+      return true;
+    }
+    CString again(word);
+    if (morphstr(again.text, pos) != nullptr) {
+      while (morphstr(nullptr, pos) != nullptr) {
+      }
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace apprentice::language

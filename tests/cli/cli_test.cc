@@ -1,0 +1,351 @@
+// End-to-end tests of the apprentice binary: output and exit codes of the
+// world, plan and export-pddl subcommands (0 ok, 1 goal not reached, 2 bad
+// input), run as a user would run them.
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "search/iterative_deepening.h"
+#include "world/pddl.h"
+
+namespace apprentice {
+namespace {
+
+using ::testing::ElementsAre;
+using ::testing::HasSubstr;
+using ::testing::StartsWith;
+
+namespace fs = std::filesystem;
+
+constexpr const char* kKetchupGoal = "(and (in ketchup1 fridge1) (closed fridge1))";
+
+std::string source(std::string_view relative) { return (fs::path(APPRENTICE_SOURCE_DIR) / relative).string(); }
+std::string tidy_kitchen() { return source("data/scenarios/tidy-kitchen.yaml"); }
+
+std::string shell_quote(const std::string& arg) {
+  std::string out = "'";
+  for (char c : arg) {
+    if (c == '\'') out += "'\\''";
+    else out += c;
+  }
+  return out + "'";
+}
+
+std::string read_file(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) out.push_back(line);
+  return out;
+}
+
+struct Invocation {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::path(::testing::TempDir()) / "apprentice_cli_tests" / (std::string(info->test_suite_name()) + "." + info->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  Invocation run(const std::vector<std::string>& args) const {
+    std::string command = shell_quote(APPRENTICE_BINARY);
+    for (const std::string& a : args) command += " " + shell_quote(a);
+    const fs::path out = dir_ / "stdout.txt";
+    const fs::path err = dir_ / "stderr.txt";
+    command += " >" + shell_quote(out.string()) + " 2>" + shell_quote(err.string()) + " </dev/null";
+    int status = std::system(command.c_str());
+    Invocation result;
+    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    result.out = read_file(out);
+    result.err = read_file(err);
+    return result;
+  }
+
+  fs::path write(const std::string& name, const std::string& text) const {
+    fs::path path = dir_ / name;
+    std::ofstream(path, std::ios::binary) << text;
+    return path;
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(Cli, PlanFindsTheFourStepKetchupPlan) {
+  Invocation r = run({"plan", "--scenario", tidy_kitchen(), "--goal", kKetchupGoal});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::vector<std::string> lines = lines_of(r.out);
+  ASSERT_EQ(lines.size(), 5u) << r.out;
+  EXPECT_THAT(std::vector<std::string>(lines.begin(), lines.begin() + 4),
+              ElementsAre("(open fridge1)", "(pick-up ketchup1 table1)", "(put-in ketchup1 fridge1)", "(close fridge1)"));
+  EXPECT_THAT(lines[4], StartsWith(";; status solved, 4 steps, "));
+  EXPECT_THAT(lines[4], HasSubstr("nodes expanded"));
+  EXPECT_EQ(r.err, "");
+}
+
+TEST_F(Cli, PlanWithDepthTwoIsExhaustedAndExitsOne) {
+  Invocation r = run({"plan", "--scenario", tidy_kitchen(), "--goal", kKetchupGoal, "--depth", "2"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.out, StartsWith(";; status exhausted, 0 steps, "));
+  EXPECT_THAT(r.out, HasSubstr("depth limit 2"));
+  EXPECT_EQ(r.err, "");
+}
+
+TEST_F(Cli, PlanWithATinyNodeBudgetStopsAndExitsOne) {
+  Invocation r = run({"plan", "--scenario", tidy_kitchen(), "--goal", kKetchupGoal, "--max-nodes", "3", "--json"});
+  EXPECT_EQ(r.exit_code, 1);
+  auto json = nlohmann::json::parse(r.out, nullptr, false);
+  ASSERT_FALSE(json.is_discarded()) << r.out;
+  EXPECT_EQ(json["status"], "budget-exhausted");
+  EXPECT_EQ(json["nodes_expanded"], 3);
+}
+
+TEST_F(Cli, PlanJson) {
+  Invocation r = run({"plan", "--scenario", tidy_kitchen(), "--goal", kKetchupGoal, "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  auto json = nlohmann::json::parse(r.out, nullptr, false);
+  ASSERT_FALSE(json.is_discarded()) << r.out;
+  EXPECT_EQ(json["status"], "solved");
+  EXPECT_EQ(json["plan"], nlohmann::json({"(open fridge1)", "(pick-up ketchup1 table1)", "(put-in ketchup1 fridge1)",
+                                          "(close fridge1)"}));
+  EXPECT_GT(json["nodes_expanded"].get<int>(), 0);
+  EXPECT_EQ(json["depth_limit"], 4);
+  EXPECT_EQ(json["relevant_objects"], 12);
+  EXPECT_TRUE(json["elapsed_ms"].is_number());
+}
+
+TEST_F(Cli, PlanWithoutPruningFindsTheSamePlan) {
+  // A short goal: unpruned search of the whole kitchen is slow under the sanitizers.
+  const char* goal = "(on ketchup1 counter1)";
+  Invocation pruned = run({"plan", "--scenario", tidy_kitchen(), "--goal", goal, "--json"});
+  Invocation full = run({"plan", "--scenario", tidy_kitchen(), "--goal", goal, "--json", "--no-pruning"});
+  ASSERT_EQ(full.exit_code, 0) << full.err;
+  auto a = nlohmann::json::parse(pruned.out);
+  auto b = nlohmann::json::parse(full.out);
+  EXPECT_EQ(a["plan"], b["plan"]);
+  EXPECT_EQ(b["relevant_objects"], 41);
+  EXPECT_GT(b["nodes_generated"].get<int>(), a["nodes_generated"].get<int>());
+}
+
+TEST_F(Cli, PlanIsDeterministic) {
+  Invocation a = run({"plan", "--scenario", tidy_kitchen(), "--goal", "(and (in mug2 cupboard1) (closed cupboard1))", "--json"});
+  Invocation b = run({"plan", "--scenario", tidy_kitchen(), "--goal", "(and (in mug2 cupboard1) (closed cupboard1))", "--json"});
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  auto ja = nlohmann::json::parse(a.out);
+  auto jb = nlohmann::json::parse(b.out);
+  EXPECT_EQ(ja["plan"], jb["plan"]);
+  EXPECT_EQ(ja["nodes_expanded"], jb["nodes_expanded"]);
+  EXPECT_EQ(ja["plan"][1], "(pick-up-from mug2 dish-rack1)");
+}
+
+TEST_F(Cli, BrokenScenarioExitsTwoWithFileAndLine) {
+  std::string text = read_file(tidy_kitchen());
+  // Point the domain at the shipped file, then break the ketchup's place.
+  text.replace(text.find("domain: ../domains/kitchen.pddl"), 31, "domain: " + source("data/domains/kitchen.pddl"));
+  const std::string ketchup = "{category: ketchup, at: table1}";
+  std::size_t at = text.find(ketchup);
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, ketchup.size(), "{category: ketchup, at: shelf1}");
+  const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
+  fs::path path = write("broken.yaml", text);
+
+  Invocation r = run({"plan", "--scenario", path.string(), "--goal", kKetchupGoal});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.out, "");  // nothing half-loaded is used
+  EXPECT_THAT(r.err, HasSubstr(path.string() + ":" + std::to_string(line) + ":"));
+  EXPECT_THAT(r.err, HasSubstr("there is no place 'shelf1'"));
+  // The same for world and export-pddl.
+  Invocation w = run({"world", "--scenario", path.string()});
+  EXPECT_EQ(w.exit_code, 2);
+  EXPECT_EQ(w.out, "");
+  EXPECT_THAT(w.err, HasSubstr(path.string() + ":" + std::to_string(line) + ":"));
+  Invocation e = run({"export-pddl", "--scenario", path.string(), "--goal", kKetchupGoal, "--out", (dir_ / "out").string()});
+  EXPECT_EQ(e.exit_code, 2);
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "problem.pddl"));
+}
+
+TEST_F(Cli, YamlSyntaxErrorExitsTwoWithFileAndLine) {
+  fs::path path = write("syntax.yaml", "name: x\ndomain: d.pddl\nplaces:\n  - {category: table, kind: surface}}\n");
+  Invocation r = run({"world", "--scenario", path.string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, HasSubstr(path.string() + ":4:"));
+  EXPECT_EQ(r.out, "");
+}
+
+TEST_F(Cli, MissingScenarioFileExitsTwo) {
+  const std::string missing = (dir_ / "no-such-scenario.yaml").string();
+  Invocation r = run({"plan", "--scenario", missing, "--goal", kKetchupGoal});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, HasSubstr(missing));
+  EXPECT_THAT(r.err, HasSubstr("no such file"));
+  EXPECT_EQ(r.out, "");
+}
+
+TEST_F(Cli, MissingDomainFileExitsTwo) {
+  std::string text = read_file(tidy_kitchen());
+  text.replace(text.find("domain: ../domains/kitchen.pddl"), 31, "domain: nowhere.pddl");
+  fs::path path = write("nodomain.yaml", text);
+  Invocation r = run({"world", "--scenario", path.string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, HasSubstr(path.string() + ":5:"));
+  EXPECT_THAT(r.err, HasSubstr("nowhere.pddl: no such file"));
+}
+
+TEST_F(Cli, BadGoalExitsTwo) {
+  Invocation unknown = run({"plan", "--scenario", tidy_kitchen(), "--goal", "(in ketchup9 fridge1)"});
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_THAT(unknown.err, HasSubstr("goal:1:5: expected an object; there is no ketchup9"));
+  EXPECT_EQ(unknown.out, "");
+  Invocation syntax = run({"plan", "--scenario", tidy_kitchen(), "--goal", "(in ketchup1 fridge1"});
+  EXPECT_EQ(syntax.exit_code, 2);
+  EXPECT_THAT(syntax.err, HasSubstr("goal:1:"));
+  EXPECT_THAT(syntax.err, HasSubstr("expected ')'"));
+  Invocation typed = run({"export-pddl", "--scenario", tidy_kitchen(), "--goal", "(in ketchup1 table1)", "--out",
+                   (dir_ / "out").string()});
+  EXPECT_EQ(typed.exit_code, 2);
+  EXPECT_THAT(typed.err, HasSubstr("table1 is a surface"));
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "domain.pddl"));
+}
+
+TEST_F(Cli, BadFlagsExitTwo) {
+  EXPECT_EQ(run({"plan", "--scenario", tidy_kitchen()}).exit_code, 2);  // --goal is required
+  EXPECT_EQ(run({"plan", "--scenario", tidy_kitchen(), "--goal", kKetchupGoal, "--depth", "-1"}).exit_code, 2);
+  EXPECT_EQ(run({"plan", "--scenario", tidy_kitchen(), "--goal", kKetchupGoal, "--depth", "deep"}).exit_code, 2);
+  EXPECT_EQ(run({"plan", "--scenario", tidy_kitchen(), "--goal", kKetchupGoal, "--max-nodes", "0"}).exit_code, 2);
+  EXPECT_EQ(run({"world"}).exit_code, 2);
+  EXPECT_EQ(run({"no-such-command"}).exit_code, 2);
+  EXPECT_EQ(run({}).exit_code, 2);
+}
+
+TEST_F(Cli, HelpExitsZeroForEverySubcommand) {
+  Invocation top = run({"--help"});
+  EXPECT_EQ(top.exit_code, 0);
+  for (const char* sub : {"world", "plan", "export-pddl"}) EXPECT_THAT(top.out, HasSubstr(sub));
+  const std::vector<std::pair<std::string, std::vector<std::string>>> expected = {
+      {"world", {"--scenario", "--json"}},
+      {"plan", {"--scenario", "--goal", "--depth", "--max-nodes", "--no-pruning", "--json"}},
+      {"export-pddl", {"--scenario", "--goal", "--out"}},
+  };
+  for (const auto& [sub, flags] : expected) {
+    Invocation r = run({sub, "--help"});
+    EXPECT_EQ(r.exit_code, 0) << sub;
+    for (const std::string& flag : flags) EXPECT_THAT(r.out, HasSubstr(flag)) << sub;
+  }
+}
+
+TEST_F(Cli, WorldPrintsPlacesAndObjects) {
+  Invocation r = run({"world", "--scenario", tidy_kitchen()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("Scenario tidy-kitchen: the robot is in the kitchen."));
+  EXPECT_THAT(r.out, HasSubstr("  table1 (surface)\n"));
+  EXPECT_THAT(r.out, HasSubstr("  fridge1 (receptacle, door closed)\n"));
+  EXPECT_THAT(r.out, HasSubstr("  sink1 (receptacle)\n"));
+  EXPECT_THAT(r.out, HasSubstr("  ketchup1 on table1\n"));
+  EXPECT_THAT(r.out, HasSubstr("  mug2 in dish-rack1\n"));
+  // The world never shows the instructor's intent.
+  EXPECT_THAT(r.out, ::testing::Not(HasSubstr("intent")));
+}
+
+TEST_F(Cli, WorldJsonParses) {
+  Invocation r = run({"world", "--scenario", tidy_kitchen(), "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  auto json = nlohmann::json::parse(r.out, nullptr, false);
+  ASSERT_FALSE(json.is_discarded()) << r.out;
+  EXPECT_EQ(json["scenario"], "tidy-kitchen");
+  EXPECT_EQ(json["location"], "kitchen");
+  EXPECT_EQ(json["hand"], "empty");
+  ASSERT_TRUE(json["places"].is_array());
+  ASSERT_TRUE(json["objects"].is_array());
+  EXPECT_EQ(json["places"].size(), 11u);
+  EXPECT_EQ(json["objects"].size(), 30u);
+  EXPECT_FALSE(json.contains("intent"));
+  bool found_ketchup = false, found_fridge = false;
+  for (const auto& o : json["objects"]) {
+    EXPECT_TRUE(o.contains("id") && o.contains("category") && o.contains("location"));
+    if (o["id"] == "ketchup1") {
+      found_ketchup = true;
+      EXPECT_EQ(o["category"], "ketchup");
+      EXPECT_EQ(o["location"], "on table1");
+    }
+  }
+  for (const auto& p : json["places"]) {
+    if (p["id"] == "fridge1") {
+      found_fridge = true;
+      EXPECT_EQ(p["kind"], "receptacle");
+      EXPECT_EQ(p["door"], "closed");
+    }
+    if (p["id"] == "sink1") {
+      EXPECT_FALSE(p.contains("door"));
+    }
+  }
+  EXPECT_TRUE(found_ketchup);
+  EXPECT_TRUE(found_fridge);
+}
+
+TEST_F(Cli, ExportPddlRoundTrips) {
+  const fs::path out = dir_ / "pddl";
+  Invocation r = run({"export-pddl", "--scenario", tidy_kitchen(), "--goal", kKetchupGoal, "--out", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("wrote " + (out / "domain.pddl").string()));
+  EXPECT_THAT(r.out, HasSubstr("wrote " + (out / "problem.pddl").string()));
+
+  auto domain = read_domain_file(out / "domain.pddl");
+  ASSERT_TRUE(domain.has_value()) << domain.error().describe();
+  EXPECT_EQ(domain->name, "kitchen");
+  EXPECT_EQ(domain->actions.size(), 6u);
+  auto problem_text = read_text_file(out / "problem.pddl");
+  ASSERT_TRUE(problem_text.has_value());
+  auto problem = parse_problem(*domain, *problem_text, (out / "problem.pddl").string());
+  ASSERT_TRUE(problem.has_value()) << problem.error().describe();
+  EXPECT_EQ(problem->universe.size(), 41u);
+  EXPECT_EQ(problem->goal.literals.size(), 2u);
+
+  // The planner finds the same four-step plan on the re-read problem.
+  PlanResult result = find_plan(*domain, problem->universe, problem->init, problem->goal, {});
+  ASSERT_EQ(result.status, SearchStatus::kSolved);
+  std::vector<std::string> steps;
+  for (const Action& a : result.plan) steps.push_back(format_action(*domain, problem->universe, a));
+  EXPECT_THAT(steps, ElementsAre("(open fridge1)", "(pick-up ketchup1 table1)", "(put-in ketchup1 fridge1)",
+                                 "(close fridge1)"));
+  EXPECT_EQ(result.statistics.relevant_objects, 12u);
+}
+
+TEST_F(Cli, ExportPddlIntoAnUnwritablePlaceFails) {
+  // A regular file where the output directory should be.
+  fs::path blocker = write("blocker", "not a directory");
+  Invocation r = run({"export-pddl", "--scenario", tidy_kitchen(), "--goal", kKetchupGoal, "--out", (blocker / "sub").string()});
+  EXPECT_EQ(r.exit_code, 3);
+  EXPECT_THAT(r.err, HasSubstr((blocker / "sub").string()));
+}
+
+TEST_F(Cli, TidyKitchen35Plans) {
+  Invocation r = run({"plan", "--scenario", source("data/scenarios/tidy-kitchen-35.yaml"), "--goal",
+               "(and (in ketchup1 fridge1) (closed fridge1))", "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["plan"].size(), 4u);
+}
+
+}  // namespace
+}  // namespace apprentice

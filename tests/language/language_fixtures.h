@@ -1,0 +1,66 @@
+// Shared helpers for the language tests: the shipped 35-object kitchen, one
+// Grounder with WordNet for the whole binary, and the shared STARS data.
+#pragma once
+
+#include <cstdlib>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include <gtest/gtest.h>
+#include <spdlog/spdlog.h>
+
+#include "language/grounding.h"
+#include "world/scenario.h"
+
+namespace apprentice::language::testing {
+
+inline std::filesystem::path source_path(std::string_view relative) {
+  return std::filesystem::path(APPRENTICE_SOURCE_DIR) / relative;
+}
+
+inline std::filesystem::path shared_path(std::string_view relative) {
+  return std::filesystem::path(APPRENTICE_SHARED_DIR) / relative;
+}
+
+// The scenario, loaded once; a failure to load aborts the binary, since
+// every test below needs it.
+inline const Scenario& kitchen35() {
+  static const Scenario scenario = [] {
+    auto loaded = load_scenario(source_path("data/scenarios/tidy-kitchen-35.yaml"));
+    if (!loaded) {
+      ADD_FAILURE() << loaded.error().describe();
+      std::abort();
+    }
+    return std::move(*loaded);
+  }();
+  return scenario;
+}
+
+inline const World& world35() { return kitchen35().world; }
+
+// WordNet decisions are logged at info; the tests keep stderr quiet.
+inline const Grounder& grounder() {
+  static const Grounder instance = [] {
+    spdlog::set_level(spdlog::level::warn);
+    return Grounder(Lexicon::open_default());
+  }();
+  return instance;
+}
+
+inline ObjectId id(std::string_view name) {
+  auto found = world35().universe->find(name);
+  if (!found) {
+    ADD_FAILURE() << "no object " << name;
+    return 0;
+  }
+  return *found;
+}
+
+// What a sentence grounds to, as format_grounding writes it.
+inline std::string meaning(std::string_view sentence, std::optional<ObjectId> object = std::nullopt) {
+  return format_grounding(world35(), grounder().interpret(sentence, world35(), object).result);
+}
+
+}  // namespace apprentice::language::testing
