@@ -121,6 +121,9 @@ Result<std::optional<Action>> TaskLearningAgent::Session::action_from_llm(const 
   auto known = [this](std::string_view word) { return agent_.understanding_.is_known_action_word(word); };
   std::vector<llm::Candidate> candidates = llm.actions(llm_context(current, object), goal_text, llm_steps_, known);
   const bool instructed = agent_.options_.condition.instruction;
+  if (llm.last_failure() && candidates.empty())
+    dialogue_->say("I could not reach the language model (" + llm.last_failure()->message + ")" +
+                   (instructed ? ", so I will ask." : "."));
   for (const llm::Candidate& candidate : candidates) {
     ActionMeaning meaning = agent_.understanding_.action(world(), candidate.text, object);
     if (!meaning.action || !is_applicable(*world().domain, world().state, *meaning.action)) {

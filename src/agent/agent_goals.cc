@@ -44,9 +44,10 @@ Result<std::optional<Goal>> TaskLearningAgent::Session::goal_from_llm(const Curr
                                                                       ObjectReport& report) {
   LlmAdvisor& llm = *agent_.llm_;
   std::vector<llm::Candidate> candidates = llm.goals(llm_context(current, object));
-  if (llm.last_failure() && candidates.empty())
-    dialogue_->say("I could not reach the language model (" + llm.last_failure()->message + "), so I will ask.");
   const bool instructed = agent_.options_.condition.instruction;
+  if (llm.last_failure() && candidates.empty())
+    dialogue_->say("I could not reach the language model (" + llm.last_failure()->message + ")" +
+                   (instructed ? ", so I will ask." : "."));
   for (const llm::Candidate& candidate : candidates) {
     GoalMeaning meaning = agent_.understanding_.goal(world(), candidate.text, object);
     if (!meaning.goal) {

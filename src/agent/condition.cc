@@ -10,10 +10,13 @@ Result<Condition> parse_condition(std::string_view name) {
   condition.instruction = false;
   std::string_view rest = name;
   bool any = false;
-  while (!rest.empty()) {
+  // `more`: a '+' was read, so a part must follow ("inst+" is malformed).
+  bool more = !rest.empty();
+  while (more) {
     std::size_t plus = rest.find('+');
     std::string_view part = rest.substr(0, plus);
-    rest = plus == std::string_view::npos ? std::string_view() : rest.substr(plus + 1);
+    more = plus != std::string_view::npos;
+    rest = more ? rest.substr(plus + 1) : std::string_view();
     any = true;
     if (part == "instruction" || part == "inst") {
       condition.instruction = true;

@@ -25,7 +25,10 @@ Result<std::string> TerminalInstructor::read_line(const char* prompt) {
   if (interactive_) {
     out_.flush();
     char* line = readline(prompt);
-    if (line == nullptr) return make_error(ErrorCode::kCancelled, "end of input");
+    if (line == nullptr) {
+      out_ << "\n";  // Ctrl-D leaves the cursor after the prompt
+      return make_error(ErrorCode::kCancelled, "end of input");
+    }
     std::string text(line);
     std::free(line);
     if (!trim(text).empty()) add_history(text.c_str());
@@ -36,7 +39,11 @@ Result<std::string> TerminalInstructor::read_line(const char* prompt) {
   std::string text;
   int c;
   while ((c = std::fgetc(in_)) != EOF && c != '\n') text.push_back(static_cast<char>(c));
-  if (c == EOF && text.empty()) return make_error(ErrorCode::kCancelled, "end of input");
+  if (c == EOF && text.empty()) {
+    // End the prompt's line, so that what is printed next starts a line.
+    out_ << "\n";
+    return make_error(ErrorCode::kCancelled, "end of input");
+  }
   out_ << text << "\n";
   return text;
 }

@@ -1,0 +1,115 @@
+// Shared helpers for the agent tests: scenarios, an instructor wrapper that
+// keeps every question, and one learning run with the simulated instructor.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "agent/agent.h"
+#include "instructor/simulated_instructor.h"
+#include "llm/factory.h"
+#include "world/scenario.h"
+#include "world/simulator.h"
+
+namespace apprentice::testing {
+
+inline std::filesystem::path source_path(std::string_view relative) {
+  return std::filesystem::path(APPRENTICE_SOURCE_DIR) / relative;
+}
+inline std::filesystem::path shared_path(std::string_view relative) {
+  return std::filesystem::path(APPRENTICE_SHARED_DIR) / relative;
+}
+inline std::filesystem::path corpus_path() {
+  return shared_path("data/stars-tidy-kitchen/goal_responses.jsonl");
+}
+
+inline Scenario load_or_die(const std::filesystem::path& path) {
+  auto scenario = load_scenario(path);
+  if (!scenario) {
+    ADD_FAILURE() << scenario.error().describe();
+    std::abort();
+  }
+  return std::move(*scenario);
+}
+
+// Passes questions on to `inner` and keeps them, with the world as it was.
+class RecordingInstructor final : public Instructor {
+ public:
+  explicit RecordingInstructor(Instructor& inner) : inner_(inner) {}
+  Result<std::string> answer(const Question& question, const World& world) override {
+    questions.push_back(question);
+    states.push_back(world.state);
+    return inner_.answer(question, world);
+  }
+  void hear(std::string_view statement) override {
+    heard.emplace_back(statement);
+    inner_.hear(statement);
+  }
+  std::vector<Question> questions;
+  std::vector<State> states;
+  std::vector<std::string> heard;
+
+ private:
+  Instructor& inner_;
+};
+
+// One learning run from empty knowledge with the simulated instructor.
+struct LearningRun {
+  Result<AgentReport> report = make_error(ErrorCode::kCancelled, "not run");
+  DialogueCounts counts;
+  std::vector<TranscriptLine> transcript;
+  std::string transcript_text;
+  std::vector<Question> questions;
+  std::vector<State> states_at_questions;
+  State final_state;
+  std::vector<Action> history;
+  int achieved = 0;
+  int total = 0;
+  Knowledge knowledge;
+  LlmTotals llm;
+};
+
+inline std::unique_ptr<LlmAdvisor> corpus_advisor() {
+  auto client = llm::make_llm_client("corpus:" + corpus_path().string(), llm::LlmOptions{});
+  EXPECT_TRUE(client.has_value()) << (client ? "" : client.error().describe());
+  if (!client) return nullptr;
+  auto templates = llm::PromptTemplates::load(source_path("data/prompts"));
+  EXPECT_TRUE(templates.has_value()) << (templates ? "" : templates.error().describe());
+  if (!templates) return nullptr;
+  return std::make_unique<LlmAdvisor>(std::move(*client), std::move(*templates));
+}
+
+inline LearningRun learn(const Scenario& scenario, std::string_view condition_name, LlmAdvisor* llm = nullptr,
+                         KnowledgeStore* store = nullptr) {
+  LearningRun run;
+  auto condition = parse_condition(condition_name);
+  EXPECT_TRUE(condition.has_value());
+  if (!condition) return run;
+  AgentOptions options;
+  options.condition = *condition;
+  TaskLearningAgent agent(options, Knowledge{}, Understanding(), store, llm);
+  Simulator simulator(scenario.world);
+  SimulatedInstructor simulated(scenario);
+  RecordingInstructor instructor(simulated);
+  Dialogue dialogue(instructor);
+  run.report = agent.learn(simulator, dialogue);
+  run.counts = dialogue.counts();
+  run.transcript = dialogue.transcript();
+  run.transcript_text = dialogue.transcript_text();
+  run.questions = instructor.questions;
+  run.states_at_questions = instructor.states;
+  run.final_state = simulator.state();
+  run.history = simulator.history();
+  run.total = static_cast<int>(scenario.goal_assertions().size());
+  for (const Literal& l : scenario.goal_assertions())
+    if (simulator.state().satisfies(l)) ++run.achieved;
+  run.knowledge = agent.knowledge();
+  if (llm) run.llm = llm->totals();
+  return run;
+}
+
+}  // namespace apprentice::testing

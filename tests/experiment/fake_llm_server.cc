@@ -1,0 +1,250 @@
+#include "fake_llm_server.h"
+
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <cctype>
+#include <sstream>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+namespace apprentice::testing {
+
+namespace {
+
+using nlohmann::json;
+
+std::vector<std::string> words_of(const std::string& text) {
+  std::istringstream in(text);
+  std::vector<std::string> out;
+  for (std::string w; in >> w;) out.push_back(w);
+  return out;
+}
+
+std::string replace_all(std::string text, const std::string& from, const std::string& to) {
+  for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+    text.replace(at, from.size(), to);
+  return text;
+}
+
+bool ends_with(const std::string& text, const std::string& suffix) {
+  return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+// The last line of the prompt's (TASK) part, after `marker`, up to the end of the line.
+std::string after_last(const std::string& prompt, const std::string& marker, const std::string& end) {
+  size_t at = prompt.rfind(marker);
+  if (at == std::string::npos) return "";
+  at += marker.size();
+  size_t stop = prompt.find(end, at);
+  return prompt.substr(at, stop == std::string::npos ? std::string::npos : stop - at);
+}
+
+// What the object of the prompt is: "Aware of ketchup on table." -> "ketchup".
+std::string category_of(const std::string& prompt) {
+  std::string aware = after_last(prompt, "Aware of ", "\n");
+  return aware.substr(0, aware.find(' '));
+}
+
+// The usual steps towards the goal of an action prompt: the receptacle is
+// what follows "is in the", and a door is opened first and closed last
+// when the goal says "is closed".
+std::vector<std::string> usual_steps(const std::string& prompt, bool with_article) {
+  std::string goal = after_last(prompt, "(RESULT)", "(END RESULT)");
+  std::string object = category_of(prompt);
+  std::string receptacle = after_last(goal, "is in the ", " and");
+  const std::string the = with_article ? "the " : "";
+  std::vector<std::string> steps;
+  bool door = goal.find(" is closed") != std::string::npos;
+  if (door) steps.push_back("Open " + the + receptacle);
+  steps.push_back("Pick up " + the + object);
+  steps.push_back("Put " + the + object + " in " + the + receptacle);
+  if (door) steps.push_back("Close " + the + receptacle);
+  return steps;
+}
+
+// The number the prompt's next step has: "...\n2." -> 2, "...\n2. Open" -> 2.
+int next_step_number(const std::string& prompt) {
+  size_t line = prompt.rfind('\n');
+  std::string last = prompt.substr(line == std::string::npos ? 0 : line + 1);
+  int n = 0;
+  for (char c : last) {
+    if (!std::isdigit(static_cast<unsigned char>(c))) break;
+    n = n * 10 + (c - '0');
+  }
+  return n;
+}
+
+json completion(const std::string& text, const std::vector<std::string>& tokens, double logprob,
+                const std::vector<std::pair<std::string, double>>& alternatives, int prompt_tokens) {
+  json token_logprobs = json::array(), top = json::array();
+  for (size_t i = 0; i < tokens.size(); ++i) {
+    token_logprobs.push_back(logprob);
+    json position = json::object();
+    position[tokens[i]] = logprob;
+    if (i == 0)
+      for (const auto& [token, lp] : alternatives)
+        if (!position.contains(token)) position[token] = lp;
+    top.push_back(position);
+  }
+  return json{{"id", "cmpl-fake"},
+              {"object", "text_completion"},
+              {"model", "fake-davinci"},
+              {"choices", json::array({json{{"text", text},
+                                            {"index", 0},
+                                            {"finish_reason", "stop"},
+                                            {"logprobs", json{{"tokens", tokens},
+                                                              {"token_logprobs", token_logprobs},
+                                                              {"top_logprobs", top}}}}})},
+              {"usage", json{{"prompt_tokens", prompt_tokens},
+                             {"completion_tokens", static_cast<int>(tokens.size())},
+                             {"total_tokens", prompt_tokens + static_cast<int>(tokens.size())}}}};
+}
+
+}  // namespace
+
+FakeLlmServer::FakeLlmServer(ServerMode mode, Goals goals, std::vector<std::string> fallback)
+    : mode_(mode), goals_(std::move(goals)), fallback_(std::move(fallback)) {
+  server_.set_tcp_nodelay(true);  // no Nagle delay between headers and body
+  server_.Post("/v1/completions",
+               [this](const httplib::Request& request, httplib::Response& response) { handle(request, response); });
+  port_ = server_.bind_to_any_port("127.0.0.1");
+  if (port_ <= 0) throw std::runtime_error("cannot bind a port for the fake LLM server");
+  thread_ = std::thread([this] { server_.listen_after_bind(); });
+  while (!server_.is_running()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+}
+
+FakeLlmServer::~FakeLlmServer() {
+  {
+    std::lock_guard lock(mutex_);
+    stopping_ = true;
+  }
+  released_.notify_all();
+  server_.stop();
+  if (thread_.joinable()) thread_.join();
+}
+
+void FakeLlmServer::pause(std::chrono::milliseconds limit) {
+  std::unique_lock lock(mutex_);
+  released_.wait_for(lock, limit, [this] { return stopping_; });
+}
+
+void FakeLlmServer::handle(const httplib::Request& request, httplib::Response& response) {
+  const int n = ++requests_;
+  switch (mode_) {
+    case ServerMode::kStatus500:
+      response.status = 500;
+      response.set_content(R"({"error": {"message": "the model is overloaded"}})", "application/json");
+      return;
+    case ServerMode::kRateLimited:
+      response.status = 429;
+      response.set_header("Retry-After", "1");
+      response.set_content(R"({"error": {"message": "rate limit reached"}})", "application/json");
+      return;
+    case ServerMode::kRateLimitedOnce:
+      if (n % 2 == 1) {
+        response.status = 429;
+        response.set_header("Retry-After", "1");
+        response.set_content(R"({"error": {"message": "rate limit reached"}})", "application/json");
+        return;
+      }
+      break;
+    case ServerMode::kSlow:
+      pause(std::chrono::seconds(1));
+      break;
+    case ServerMode::kMalformedJson:
+      response.set_content(R"({"choices": [{"text": " The goal is that the)", "application/json");
+      return;
+    case ServerMode::kWrongJson:
+      response.set_content(R"({"object": "list", "data": []})", "application/json");
+      return;
+    case ServerMode::kModel:
+      break;
+  }
+  json body = json::parse(request.body, nullptr, false);
+  if (body.is_discarded() || !body.contains("prompt")) {
+    response.status = 400;
+    response.set_content(R"({"error": {"message": "expected a completion request"}})", "application/json");
+    return;
+  }
+  std::string answer = model_answer(body.value("prompt", ""), body.value("temperature", 0.0),
+                                    body.value("max_tokens", 16), body.value("logprobs", 1));
+  response.set_content(answer, "application/json");
+}
+
+std::string FakeLlmServer::model_answer(const std::string& prompt, double temperature, int max_tokens,
+                                        int logprobs) {
+  const int prompt_tokens = static_cast<int>(words_of(prompt).size());
+  int asked = 0;
+  {
+    std::lock_guard lock(mutex_);
+    asked = asked_[prompt]++;
+  }
+  const std::string category = category_of(prompt);
+  if (ends_with(prompt, "(RESULT)")) {
+    // A goal: the listed statements in order, the first at temperature 0.
+    auto found = goals_.find(category);
+    std::vector<std::string> choices = found != goals_.end() ? found->second : fallback_;
+    size_t index = temperature == 0.0 ? 0 : static_cast<size_t>(asked) % choices.size();
+    std::string text = " " + replace_all(choices[index], "X", category);
+    std::vector<std::string> tokens;
+    for (const std::string& w : words_of(text)) tokens.push_back(" " + w);
+    return completion(text, tokens, -0.2 * static_cast<double>(index + 1), {}, prompt_tokens).dump();
+  }
+  const int number = next_step_number(prompt);
+  std::vector<std::string> steps = usual_steps(prompt, false);
+  const std::string& step = steps[std::min<size_t>(static_cast<size_t>(std::max(number - 1, 0)), steps.size() - 1)];
+  const std::string word = step.substr(0, step.find(' '));
+  if (max_tokens == 1) {
+    // The first word of the next step, with four alternatives below the
+    // agent's threshold for known words.
+    std::vector<std::pair<std::string, double>> alternatives = {
+        {" Open", -3.0}, {" Pick", -3.2}, {" Put", -3.4}, {" Close", -3.6}, {" Wash", -3.8}};
+    if (static_cast<int>(alternatives.size()) > logprobs - 1) alternatives.resize(std::max(logprobs - 1, 0));
+    return completion(" " + word, {" " + word}, -0.1, alternatives, prompt_tokens).dump();
+  }
+  // The rest of a step after its first word: the usual step if the word
+  // fits it, with "the" when asked again at a higher temperature.
+  std::string given = after_last(prompt, std::to_string(number) + ". ", "\n");
+  std::vector<std::string> worded = usual_steps(prompt, temperature > 0 && asked > 0);
+  std::string rest = " something";
+  for (const std::string& s : worded)
+    if (s.rfind(given + " ", 0) == 0) {
+      rest = s.substr(given.size());
+      break;
+    }
+  std::vector<std::string> tokens;
+  for (const std::string& w : words_of(rest)) tokens.push_back(" " + w);
+  return completion(rest, tokens, -0.3, {}, prompt_tokens).dump();
+}
+
+HungServer::HungServer() {
+  fd_ = ::socket(AF_INET, SOCK_STREAM, 0);
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  if (fd_ < 0 || ::bind(fd_, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0 || ::listen(fd_, 64) != 0)
+    throw std::runtime_error("cannot open a listening socket");
+  socklen_t length = sizeof address;
+  ::getsockname(fd_, reinterpret_cast<sockaddr*>(&address), &length);
+  port_ = ntohs(address.sin_port);
+}
+
+HungServer::~HungServer() { ::close(fd_); }
+
+int closed_port() {
+  int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  ::bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof address);
+  socklen_t length = sizeof address;
+  ::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &length);
+  ::close(fd);
+  return ntohs(address.sin_port);
+}
+
+}  // namespace apprentice::testing

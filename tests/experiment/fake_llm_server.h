@@ -1,0 +1,94 @@
+// A local stand-in for an OpenAI-compatible completion server, for the
+// experiment's LLM tests: on 127.0.0.1, an ephemeral port, in-process.
+//
+// When it behaves, it plays a small language model that reads the paper's
+// prompts: for a goal prompt ("... Aware of ketchup on table.\n(RESULT)") it
+// answers the statements the test gave for that category, the first at
+// temperature 0 and the next ones at higher temperatures; for an action
+// prompt it proposes the next step of the usual open / pick up / put /
+// close sequence. Every answer carries log-probabilities.
+//
+// When it misbehaves, it fails every request in one of the ways a real
+// server does. A listener that never accepts stands in for a hung
+// connection.
+#pragma once
+
+#include <httplib.h>
+
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <map>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace apprentice::testing {
+
+enum class ServerMode {
+  kModel,             // answers as described above
+  kStatus500,         // 500 Internal Server Error, always
+  kRateLimited,       // 429 with Retry-After: 1, always
+  kRateLimitedOnce,   // every other request 429 with Retry-After: 1, the next one answered
+  kSlow,              // answers only after a second (past the client's timeout)
+  kMalformedJson,     // 200 with a body cut short
+  kWrongJson,         // 200 with JSON that is not a completion
+};
+
+class FakeLlmServer {
+ public:
+  // Goal statements by object category, most probable first. A category
+  // not listed gets `fallback` (with "X" replaced by the category).
+  using Goals = std::map<std::string, std::vector<std::string>>;
+
+  explicit FakeLlmServer(ServerMode mode, Goals goals = {},
+                         std::vector<std::string> fallback = {"The goal is that the X is on the moon",
+                                                              "The goal is that the X is clean",
+                                                              "The goal is that the X is in the attic"});
+  ~FakeLlmServer();
+  FakeLlmServer(const FakeLlmServer&) = delete;
+  FakeLlmServer& operator=(const FakeLlmServer&) = delete;
+
+  // The API base for the openai: backend.
+  std::string url() const { return "http://127.0.0.1:" + std::to_string(port_) + "/v1"; }
+  int requests() const { return requests_.load(); }
+
+ private:
+  void handle(const httplib::Request& request, httplib::Response& response);
+  std::string model_answer(const std::string& prompt, double temperature, int max_tokens, int logprobs);
+  // Sleeps up to `limit`, less if the server is being torn down.
+  void pause(std::chrono::milliseconds limit);
+
+  ServerMode mode_;
+  Goals goals_;
+  std::vector<std::string> fallback_;
+  httplib::Server server_;
+  int port_ = 0;
+  std::thread thread_;
+  std::atomic<int> requests_{0};
+  std::mutex mutex_;
+  std::condition_variable released_;
+  bool stopping_ = false;
+  std::map<std::string, int> asked_;  // prompt -> times asked (guarded by mutex_)
+};
+
+// A port that accepts connections into its backlog and never answers: a
+// client connects, sends its request, and waits.
+class HungServer {
+ public:
+  HungServer();
+  ~HungServer();
+  HungServer(const HungServer&) = delete;
+  HungServer& operator=(const HungServer&) = delete;
+  std::string url() const { return "http://127.0.0.1:" + std::to_string(port_) + "/v1"; }
+
+ private:
+  int fd_ = -1;
+  int port_ = 0;
+};
+
+// A port nobody listens on.
+int closed_port();
+
+}  // namespace apprentice::testing

@@ -1,0 +1,185 @@
+// A failing LLM never spoils a learning run. Against a local server that
+// fails in each way a real one does, a run of an LLM condition completes
+// the task with the instructor taking over: the agent says it could not
+// reach the model, asks instead, keeps everything it learns, and takes
+// bounded time (small timeouts and one retry, from LlmOptions).
+#include <chrono>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "experiment_fixtures.h"
+#include "fake_llm_server.h"
+#include "knowledge/store.h"
+
+namespace apprentice {
+namespace {
+
+using testing::experiment_options;
+using testing::factory;
+using testing::FakeLlmServer;
+using testing::load_or_die;
+using testing::ServerMode;
+using testing::source_path;
+using ::testing::HasSubstr;
+
+constexpr const char* kCouldNotReach = "Agent: I could not reach the language model (";
+
+// The run without any LLM, which a run whose LLM always fails must equal
+// in everything the instructor says.
+const ConditionResult& baseline(const Scenario& scenario, const std::string& condition) {
+  static std::map<std::string, ConditionResult> cache;
+  std::string key = scenario.name + "/" + condition;
+  auto found = cache.find(key);
+  if (found == cache.end()) found = cache.emplace(key, testing::run(scenario, condition, experiment_options())).first;
+  return found->second;
+}
+
+// What the instructor said, in order.
+std::vector<std::string> instructor_lines(const std::string& transcript) {
+  std::vector<std::string> out;
+  std::istringstream in(transcript);
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("Instructor: ", 0) == 0) out.push_back(line);
+  return out;
+}
+
+struct FaultCase {
+  const char* name;
+  ServerMode mode;
+  const char* scenario;   // relative to the source directory
+  const char* condition;  // an LLM condition
+  const char* without_llm;
+};
+
+void PrintTo(const FaultCase& c, std::ostream* out) { *out << c.name; }
+
+class LlmFault : public testing::ScratchTest, public ::testing::WithParamInterface<FaultCase> {};
+
+void expect_instructor_takes_over(const Scenario& scenario, const FaultCase& c, const ConditionResult& result,
+                                  double seconds, const std::filesystem::path& knowledge_dir) {
+  const ConditionResult& without = baseline(scenario, c.without_llm);
+  EXPECT_EQ(result.completion_rate, 100.0);
+  EXPECT_EQ(result.assertions_achieved, result.assertions_total);
+  // The instructor said exactly what it says when there is no LLM at all.
+  EXPECT_EQ(result.counts.instructions, without.counts.instructions);
+  EXPECT_EQ(result.counts.words, without.counts.words);
+  EXPECT_EQ(result.counts.yes_no, 0);
+  EXPECT_EQ(instructor_lines(result.transcript), instructor_lines(without.transcript));
+  // The agent tried, said it could not reach the model, and asked.
+  EXPECT_GT(result.llm_calls, 0);
+  EXPECT_THAT(result.transcript, HasSubstr(kCouldNotReach));
+  EXPECT_THAT(result.transcript, HasSubstr("), so I will ask.\n"));
+  EXPECT_EQ(result.relevance, std::nullopt);  // no yes/no question was asked
+  // Nothing learned was lost: every goal is in the store.
+  EXPECT_EQ(result.report.goals_learned, without.report.goals_learned);
+  auto store = KnowledgeStore::open(knowledge_dir / (std::string(c.condition) + ".sqlite"));
+  ASSERT_TRUE(store.has_value()) << store.error().describe();
+  auto knowledge = store->load(*scenario.world.domain);
+  ASSERT_TRUE(knowledge.has_value()) << knowledge.error().describe();
+  EXPECT_EQ(static_cast<int>(knowledge->goals.size()), without.report.goals_learned);
+  EXPECT_EQ(knowledge->tasks.size(), 1u);
+  // Bounded time.
+  EXPECT_LT(seconds, 20.0);
+  std::printf("%s: %s %d LLM calls, %.1f s\n", c.name, c.condition, result.llm_calls, seconds);
+}
+
+TEST_P(LlmFault, TheInstructorTakesOverAndNothingIsLost) {
+  const FaultCase& c = GetParam();
+  Scenario scenario = load_or_die(source_path(c.scenario));
+  FakeLlmServer server(c.mode);
+  ExperimentOptions options = experiment_options(factory("openai:" + server.url()));
+  options.knowledge_out = dir_;
+  auto started = std::chrono::steady_clock::now();
+  ConditionResult result = testing::run(scenario, c.condition, options);
+  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  EXPECT_GT(server.requests(), 0);
+  expect_instructor_takes_over(scenario, c, result, seconds, dir_);
+}
+
+// Fast failures on the paper's kitchen; slow ones on a small kitchen,
+// since every query then costs the whole (300 ms) timeout.
+INSTANTIATE_TEST_SUITE_P(
+    Servers, LlmFault,
+    ::testing::Values(
+        FaultCase{"500s_inst_llm", ServerMode::kStatus500, "data/scenarios/tidy-kitchen.yaml", "inst+llm", "instruction"},
+        FaultCase{"500s_inst_search4_llm", ServerMode::kStatus500, "data/scenarios/tidy-kitchen.yaml",
+                  "inst+search4+llm", "inst+search4"},
+        FaultCase{"429_retry_after_inst_llm", ServerMode::kRateLimited, "data/scenarios/tidy-kitchen.yaml", "inst+llm",
+                  "instruction"},
+        FaultCase{"malformed_json_inst_llm", ServerMode::kMalformedJson, "data/scenarios/tidy-kitchen.yaml",
+                  "inst+llm", "instruction"},
+        FaultCase{"not_a_completion_inst_search2_llm", ServerMode::kWrongJson, "data/scenarios/tidy-kitchen.yaml",
+                  "inst+search2+llm", "inst+search2"},
+        FaultCase{"timeout_inst_search4_llm", ServerMode::kSlow, "tests/experiment/data/small-kitchen.yaml",
+                  "inst+search4+llm", "inst+search4"},
+        FaultCase{"timeout_inst_llm", ServerMode::kSlow, "tests/experiment/data/small-kitchen.yaml", "inst+llm",
+                  "instruction"}),
+    [](const ::testing::TestParamInfo<FaultCase>& info) { return std::string(info.param.name); });
+
+class LlmUnreachable : public testing::ScratchTest {};
+
+TEST_F(LlmUnreachable, AHungConnectionTimesOutAndTheInstructorTakesOver) {
+  Scenario scenario = load_or_die(source_path("tests/experiment/data/small-kitchen.yaml"));
+  testing::HungServer server;
+  ExperimentOptions options = experiment_options(factory("openai:" + server.url()));
+  options.knowledge_out = dir_;
+  auto started = std::chrono::steady_clock::now();
+  ConditionResult result = testing::run(scenario, "inst+search4+llm", options);
+  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  expect_instructor_takes_over(scenario, FaultCase{"hung", ServerMode::kSlow, "", "inst+search4+llm", "inst+search4"},
+                               result, seconds, dir_);
+  EXPECT_THAT(result.transcript, ::testing::AnyOf(HasSubstr("timed out"), HasSubstr("time")));
+}
+
+TEST_F(LlmUnreachable, ARefusedConnectionIsReportedAndTheInstructorTakesOver) {
+  Scenario scenario = load_or_die(source_path("data/scenarios/tidy-kitchen.yaml"));
+  std::string url = "http://127.0.0.1:" + std::to_string(testing::closed_port()) + "/v1";
+  ExperimentOptions options = experiment_options(factory("openai:" + url));
+  options.knowledge_out = dir_;
+  auto started = std::chrono::steady_clock::now();
+  ConditionResult result = testing::run(scenario, "inst+llm", options);
+  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  expect_instructor_takes_over(scenario, FaultCase{"refused", ServerMode::kSlow, "", "inst+llm", "instruction"},
+                               result, seconds, dir_);
+}
+
+TEST_F(LlmUnreachable, WithoutAnInstructorTheRunEndsWithoutGoalsButCleanly) {
+  // search4+llm has nobody to ask: the objects fail, the run does not.
+  Scenario scenario = load_or_die(source_path("data/scenarios/tidy-kitchen.yaml"));
+  FakeLlmServer server(ServerMode::kStatus500);
+  ConditionResult result =
+      testing::run(scenario, "search4+llm", experiment_options(factory("openai:" + server.url())));
+  EXPECT_LT(result.completion_rate, 100.0);
+  EXPECT_EQ(result.counts.instructions, 14);  // the task structure alone
+  EXPECT_EQ(result.counts.words, 76);
+  EXPECT_THAT(result.transcript, HasSubstr(kCouldNotReach));
+  EXPECT_THAT(result.transcript, ::testing::Not(HasSubstr("so I will ask")));
+  EXPECT_EQ(result.report.goals_learned, 0);
+}
+
+TEST(LlmRateLimit, ARetryAfterA429GetsTheAnswerAndTheLlmIsUsed) {
+  // Every other request is refused with 429 and Retry-After: the client
+  // waits (capped at 5 ms here) and retries once, and gets the answer.
+  Scenario scenario = load_or_die(source_path("data/scenarios/tidy-kitchen.yaml"));
+  FakeLlmServer server(ServerMode::kRateLimitedOnce,
+                       {{"ketchup", {"The goal is that the X is in the fridge and the fridge is closed"}},
+                        {"milk", {"The goal is that the X is in the fridge and the fridge is closed"}}});
+  llm::LlmOptions options = testing::fast_failing_options();
+  options.retry_after_cap = std::chrono::milliseconds(5);
+  auto started = std::chrono::steady_clock::now();
+  ConditionResult result =
+      testing::run(scenario, "inst+search4+llm", experiment_options(factory("openai:" + server.url(), options)));
+  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  EXPECT_EQ(result.completion_rate, 100.0);
+  EXPECT_THAT(result.transcript, ::testing::Not(HasSubstr(kCouldNotReach)));
+  // The two goals the model knows were proposed and accepted.
+  EXPECT_THAT(result.transcript, HasSubstr("For a ketchup on the table is the goal that the ketchup is in the fridge "
+                                           "and the fridge is closed?\nInstructor: yes.\n"));
+  EXPECT_GE(result.counts.yes, 2);
+  EXPECT_EQ(server.requests(), 2 * result.llm_calls);
+  EXPECT_LT(seconds, 20.0);
+}
+
+}  // namespace
+}  // namespace apprentice

@@ -1,0 +1,102 @@
+// The results table: each condition's figures beside the paper's Table 3
+// row, "--" where the paper has no relevance; and completion counted over
+// the scenario's goal assertions.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "experiment_fixtures.h"
+
+namespace apprentice {
+namespace {
+
+using ::testing::HasSubstr;
+
+ConditionResult result(std::string condition, double completion, std::optional<double> relevance, int instructions,
+                       int words, int yes_no) {
+  ConditionResult r;
+  r.condition = std::move(condition);
+  r.completion_rate = completion;
+  r.relevance = relevance;
+  r.counts = DialogueCounts{instructions, words, yes_no, 0};
+  r.search_nodes = 260;
+  r.llm_calls = 7;
+  r.wall_ms = 1.25;
+  return r;
+}
+
+TEST(PaperRow, HasTable3ForTheSixConditions) {
+  auto row = paper_row("inst+search4");
+  ASSERT_TRUE(row.has_value());
+  EXPECT_EQ(row->instructions, 40);
+  EXPECT_EQ(row->words, 603);
+  EXPECT_EQ(row->yes_no, 0);
+  EXPECT_EQ(row->relevance, std::nullopt);
+  row = paper_row("search4+llm");
+  ASSERT_TRUE(row.has_value());
+  EXPECT_DOUBLE_EQ(row->completion, 54.3);
+  EXPECT_EQ(row->relevance, std::optional<double>(53.3));
+  EXPECT_EQ(row->instructions, 14);
+  EXPECT_EQ(row->words, 76);
+  row = paper_row("inst+search4+llm");
+  ASSERT_TRUE(row.has_value());
+  EXPECT_EQ(row->instructions, 70);
+  EXPECT_EQ(row->words, 360);
+  EXPECT_EQ(row->yes_no, 43);
+  for (const std::string& name : paper_condition_names()) EXPECT_TRUE(paper_row(name).has_value()) << name;
+  EXPECT_FALSE(paper_row("inst+search3").has_value());
+}
+
+TEST(FormatResultsTable, ShowsEachConditionBesideThePaper) {
+  std::string table = format_results_table({result("instruction", 100, std::nullopt, 48, 636, 0),
+                                            result("inst+llm", 100, 62.857, 70, 395, 35),
+                                            result("inst+search3", 100, std::nullopt, 40, 603, 0)});
+  std::istringstream in(table);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  ASSERT_EQ(lines.size(), 6u) << table;  // header, 2 x (ours, paper), ours without a paper row
+  EXPECT_THAT(lines[0], HasSubstr("Completion%"));
+  EXPECT_THAT(lines[0], HasSubstr("#Yes/No"));
+  EXPECT_EQ(lines[1].substr(0, 26), "instruction        ours   ");
+  EXPECT_THAT(lines[1], HasSubstr("100.0        --       48     636       0          260         7       1.2"));
+  EXPECT_THAT(lines[2], HasSubstr("paper        100.0        --       76     757       0"));
+  EXPECT_THAT(lines[3], HasSubstr("ours         100.0      62.9       70     395      35"));
+  EXPECT_THAT(lines[4], HasSubstr("paper        100.0      59.1      112     348      88"));
+  EXPECT_THAT(lines[5], HasSubstr("inst+search3       ours"));
+}
+
+TEST(FormatResultsTable, AnEmptyRunIsJustTheHeader) {
+  std::string table = format_results_table({});
+  EXPECT_EQ(std::count(table.begin(), table.end(), '\n'), 1);
+}
+
+TEST(CountAchievedAssertions, CountsTheIntentsAssertionsThatHold) {
+  Scenario scenario = testing::load_or_die(testing::source_path("data/scenarios/tidy-kitchen.yaml"));
+  // The five doors start closed and must end closed.
+  EXPECT_EQ(count_achieved_assertions(scenario, scenario.world.state), 5);
+  EXPECT_EQ(scenario.goal_assertions().size(), 35u);
+}
+
+TEST(RunCondition, AnLlmConditionWithoutAnLlmIsRefused) {
+  Scenario scenario = testing::load_or_die(testing::source_path("data/scenarios/tidy-kitchen.yaml"));
+  auto condition = parse_condition("inst+llm");
+  ASSERT_TRUE(condition.has_value());
+  auto result = run_condition(scenario, *condition, testing::experiment_options());
+  ASSERT_FALSE(result.has_value());
+  EXPECT_EQ(result.error().code, ErrorCode::kInvalidInput);
+  EXPECT_THAT(result.error().message, HasSubstr("--llm"));
+}
+
+TEST(RunCondition, EachRunStartsFromEmptyKnowledgeAndTheInitialWorld) {
+  Scenario scenario = testing::load_or_die(testing::source_path("data/scenarios/tidy-kitchen.yaml"));
+  ConditionResult first = testing::run(scenario, "inst+search4", testing::experiment_options());
+  ConditionResult second = testing::run(scenario, "inst+search4", testing::experiment_options());
+  EXPECT_EQ(first.counts, second.counts);
+  EXPECT_EQ(first.transcript, second.transcript);
+  EXPECT_EQ(first.search_nodes, second.search_nodes);
+  EXPECT_EQ(first.counts, (DialogueCounts{40, 603, 0, 0}));
+  EXPECT_EQ(first.completion_rate, 100.0);
+  EXPECT_EQ(first.relevance, std::nullopt);
+}
+
+}  // namespace
+}  // namespace apprentice
