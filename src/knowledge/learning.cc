@@ -94,15 +94,36 @@ std::vector<Rule> learn_policy_rules(const Domain& domain, const Universe& unive
                                      const Episode& episode, Generalization generalization) {
   APPRENTICE_CHECK(episode.sources.size() == episode.actions.size());
   // Replaying checks the episode is what the contract says.
-  State state = episode.initial;
-  for (const Action& a : episode.actions) state = apply(domain, state, a);
-  APPRENTICE_CHECK_MSG(episode.goal.satisfied_by(state), "learning from an episode that missed its goal");
+  std::vector<State> states{episode.initial};  // states[i]: before action i
+  for (const Action& a : episode.actions) states.push_back(apply(domain, states.back(), a));
+  APPRENTICE_CHECK_MSG(episode.goal.satisfied_by(states.back()), "learning from an episode that missed its goal");
+
+  // Actions that lead back to a state already visited (open and close the
+  // dishwasher, pick an item up and put it back) are a loop: they achieved
+  // nothing, though regression alone would see each undoing the other's
+  // effect as a contribution. Only the actions outside loops are analysed.
+  std::vector<std::size_t> kept;
+  for (std::size_t i = 0; i < episode.actions.size();) {
+    std::size_t next = i;
+    for (std::size_t j = episode.actions.size(); j > i; --j) {
+      if (states[j] == states[i]) {
+        next = j;
+        break;
+      }
+    }
+    if (next > i) {
+      i = next;
+      continue;
+    }
+    kept.push_back(i++);
+  }
 
   std::set<Literal> needed(episode.goal.literals.begin(), episode.goal.literals.end());
   std::vector<Rule> rules;
   Variablizer variablizer(universe, episode, generalization);
   int steps = 0;
-  for (std::size_t i = episode.actions.size(); i-- > 0;) {
+  for (std::size_t k = kept.size(); k-- > 0;) {
+    const std::size_t i = kept[k];
     const Action& action = episode.actions[i];
     std::vector<Fact> adds = add_effects_of(domain, action);
     std::vector<Fact> deletes = delete_effects_of(domain, action);

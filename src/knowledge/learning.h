@@ -6,7 +6,8 @@
 // before it on which the rest of the plan depended. Each action that
 // contributed to the goal becomes a rule whose conditions are only those
 // facts and the goal, with object identities turned into variables. Actions
-// that contributed nothing (detours) give no rule.
+// that contributed nothing (detours) give no rule, nor do actions that only
+// lead back to a state the episode had already been in (loops).
 #pragma once
 
 #include <string>

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <set>
+#include <tuple>
 
 namespace apprentice {
 
@@ -18,54 +19,66 @@ std::string shape_of(const std::vector<std::pair<PredicateId, bool>>& parts) {
   return key;
 }
 
-// Backtracking unification of one rule against the goal and the state.
+// Backtracking unification of a rule against the goal and the state. One
+// unifier serves all the rules of a query, reusing its buffers, so that
+// trying a rule allocates nothing.
 class Unifier {
- public:
-  Unifier(const Rule& rule, const Universe& universe, const MatchQuery& query)
-      : rule_(rule), universe_(universe), query_(query) {
-    binding_.fill(kUnbound);
-    for (std::size_t i = 0; i < rule_.conditions.size(); ++i)
-      if (rule_.conditions[i].positive) order_.push_back(i);
-    for (std::size_t i = 0; i < rule_.conditions.size(); ++i)
-      if (!rule_.conditions[i].positive) order_.push_back(i);
-  }
+  // The variables one atom bound: at most its arity.
+  struct Newly {
+    std::array<VariableId, kMaxArity> variables{};
+    std::uint8_t count = 0;
+  };
 
-  // Calls found(binding) for every full match.
+ public:
+  Unifier(const Universe& universe, const MatchQuery& query) : universe_(universe), query_(query) {}
+
+  // Calls found(binding) for every full match of `rule`.
   template <typename Found>
-  void run(Found found) {
-    if (rule_.goal.size() != query_.goal->literals.size()) return;
-    used_goal_.assign(rule_.goal.size(), false);
+  void run(const Rule& rule, Found found) {
+    if (rule.goal.size() != query_.goal->literals.size()) return;
+    rule_ = &rule;
+    binding_.fill(kUnbound);
+    order_.clear();
+    for (std::size_t i = 0; i < rule.conditions.size(); ++i)
+      if (rule.conditions[i].positive) order_.push_back(i);
+    for (std::size_t i = 0; i < rule.conditions.size(); ++i)
+      if (!rule.conditions[i].positive) order_.push_back(i);
+    used_goal_.assign(rule.goal.size(), false);
     match_goal(0, found);
   }
 
  private:
-  bool bind(const AtomPattern& pattern, const Fact& fact, std::vector<VariableId>& newly) {
+  // Variables bind distinct objects; a rule has at most kMaxRuleVariables,
+  // so a scan of the bindings is cheaper than a set.
+  bool is_bound(ObjectId o) const {
+    for (std::size_t v = 0; v < rule_->variables.size(); ++v)
+      if (binding_[v] == o) return true;
+    return false;
+  }
+
+  bool bind(const AtomPattern& pattern, const Fact& fact, Newly& newly) {
     if (pattern.predicate != fact.predicate || pattern.arity != fact.arity) return false;
     for (std::uint8_t i = 0; i < pattern.arity; ++i) {
       VariableId v = pattern.args[i];
       ObjectId o = fact.args[i];
       if (binding_[v] == o) continue;
-      if (binding_[v] != kUnbound || bound_objects_.count(o) || !admissible(v, o)) {
+      if (binding_[v] != kUnbound || is_bound(o) || !admissible(v, o)) {
         unbind(newly);
         return false;
       }
       binding_[v] = o;
-      bound_objects_.insert(o);
-      newly.push_back(v);
+      newly.variables[newly.count++] = v;
     }
     return true;
   }
 
-  void unbind(std::vector<VariableId>& newly) {
-    for (VariableId v : newly) {
-      bound_objects_.erase(binding_[v]);
-      binding_[v] = kUnbound;
-    }
-    newly.clear();
+  void unbind(Newly& newly) {
+    for (std::uint8_t i = 0; i < newly.count; ++i) binding_[newly.variables[i]] = kUnbound;
+    newly.count = 0;
   }
 
   bool admissible(VariableId v, ObjectId o) const {
-    const RuleVariable& variable = rule_.variables[v];
+    const RuleVariable& variable = rule_->variables[v];
     if (variable.object_of_interest && o != query_.object_of_interest) return false;
     if (!variable.object_of_interest && o == query_.object_of_interest) return false;
     if (variable.category && universe_.info(o).category != *variable.category) return false;
@@ -74,15 +87,15 @@ class Unifier {
 
   template <typename Found>
   void match_goal(std::size_t j, Found& found) {
-    if (j == rule_.goal.size()) {
+    if (j == rule_->goal.size()) {
       match_conditions(0, found);
       return;
     }
-    const LiteralPattern& pattern = rule_.goal[j];
+    const LiteralPattern& pattern = rule_->goal[j];
     for (std::size_t k = 0; k < query_.goal->literals.size(); ++k) {
       const Literal& literal = query_.goal->literals[k];
       if (used_goal_[k] || literal.positive != pattern.positive) continue;
-      std::vector<VariableId> newly;
+      Newly newly;
       if (!bind(pattern.atom, literal.fact, newly)) continue;
       used_goal_[k] = true;
       match_goal(j + 1, found);
@@ -111,7 +124,7 @@ class Unifier {
     // Bound conditions are checked directly; the first with free variables
     // enumerates the state's facts of its predicate.
     for (; j < order_.size(); ++j) {
-      const LiteralPattern& c = rule_.conditions[order_[j]];
+      const LiteralPattern& c = rule_->conditions[order_[j]];
       if (!fully_bound(c.atom)) break;
       if (query_.state->holds(ground(c.atom)) != c.positive) return;
     }
@@ -119,7 +132,7 @@ class Unifier {
       found(binding_);
       return;
     }
-    const LiteralPattern& c = rule_.conditions[order_[j]];
+    const LiteralPattern& c = rule_->conditions[order_[j]];
     // A negative condition whose variables nothing binds cannot be decided:
     // the rule does not match. Learned rules never contain one.
     if (!c.positive) return;
@@ -128,18 +141,17 @@ class Unifier {
     low.predicate = c.atom.predicate;
     auto it = std::lower_bound(facts.begin(), facts.end(), low);
     for (; it != facts.end() && it->predicate == c.atom.predicate; ++it) {
-      std::vector<VariableId> newly;
+      Newly newly;
       if (!bind(c.atom, *it, newly)) continue;
       match_conditions(j + 1, found);
       unbind(newly);
     }
   }
 
-  const Rule& rule_;
   const Universe& universe_;
   const MatchQuery& query_;
+  const Rule* rule_ = nullptr;
   std::array<ObjectId, kMaxRuleVariables> binding_{};
-  std::set<ObjectId> bound_objects_;
   std::vector<bool> used_goal_;
   std::vector<std::size_t> order_;
 };
@@ -160,16 +172,21 @@ std::string RuleMatcher::goal_shape(const std::vector<Literal>& goal) {
   return shape_of(parts);
 }
 
-std::string RuleMatcher::bucket_key(const std::vector<LiteralPattern>& goal, std::string_view category) const {
-  std::vector<std::pair<PredicateId, bool>> parts;
-  for (const LiteralPattern& l : goal) parts.emplace_back(l.atom.predicate, l.positive);
-  return shape_of(parts) + "|" + std::string(category);
+std::string RuleMatcher::bucket_key(std::string_view shape, std::string_view category, std::string_view subtask) {
+  std::string key(shape);
+  key += '|';
+  key += category;
+  key += '|';
+  key += subtask;
+  return key;
 }
 
 bool RuleMatcher::add(const Domain& domain, Rule rule) {
   std::string signature = rule_signature(domain, rule);
   if (!signatures_.emplace(signature, true).second) return false;
-  buckets_[bucket_key(rule.goal, goal_category(rule))].push_back(rules_.size());
+  std::vector<std::pair<PredicateId, bool>> parts;
+  for (const LiteralPattern& l : rule.goal) parts.emplace_back(l.atom.predicate, l.positive);
+  buckets_[bucket_key(shape_of(parts), goal_category(rule), rule.subtask.value_or(""))].push_back(rules_.size());
   rules_.push_back(std::move(rule));
   return true;
 }
@@ -177,33 +194,42 @@ bool RuleMatcher::add(const Domain& domain, Rule rule) {
 std::vector<Proposal> RuleMatcher::propose(const Domain& domain, const Universe& universe,
                                            const MatchQuery& query) const {
   (void)domain;
+  // The buckets that can hold a matching rule: this goal's shape; a goal
+  // category of "*" or one of the goal's objects' categories; no subtask
+  // test or this subtask.
   std::set<std::string> categories{"*"};
   for (ObjectId o : query.goal->objects()) categories.insert(universe.info(o).category);
+  std::vector<std::string_view> subtasks{""};
+  if (!query.subtask.empty()) subtasks.push_back(query.subtask);
   std::string shape = goal_shape(query.goal->literals);
   std::vector<Proposal> out;
+  Unifier unifier(universe, query);
   for (const std::string& category : categories) {
-    auto bucket = buckets_.find(shape + "|" + category);
-    if (bucket == buckets_.end()) continue;
-    for (std::size_t index : bucket->second) {
-      const Rule& rule = rules_[index];
-      if (rule.subtask && *rule.subtask != query.subtask) continue;
-      Unifier unifier(rule, universe, query);
-      unifier.run([&](const std::array<ObjectId, kMaxRuleVariables>& binding) {
-        std::vector<ObjectId> args;
-        for (VariableId v : rule.action_args) args.push_back(binding[v]);
-        Action action(rule.action, args);
-        auto same = std::find_if(out.begin(), out.end(), [&](const Proposal& p) { return p.action == action; });
-        if (same == out.end()) {
-          out.push_back(Proposal{action, rule.steps_to_goal, index});
-        } else if (std::tie(rule.steps_to_goal, index) < std::tie(same->steps_to_goal, same->rule_index)) {
-          same->steps_to_goal = rule.steps_to_goal;
-          same->rule_index = index;
-        }
-      });
+    for (std::string_view subtask : subtasks) {
+      auto bucket = buckets_.find(bucket_key(shape, category, subtask));
+      if (bucket == buckets_.end()) continue;
+      for (std::size_t index : bucket->second) {
+        const Rule& rule = rules_[index];
+        if (rule.subtask && *rule.subtask != query.subtask) continue;
+        unifier.run(rule, [&](const std::array<ObjectId, kMaxRuleVariables>& binding) {
+          std::vector<ObjectId> args;
+          for (VariableId v : rule.action_args) args.push_back(binding[v]);
+          Action action(rule.action, args);
+          auto same = std::find_if(out.begin(), out.end(), [&](const Proposal& p) { return p.action == action; });
+          if (same == out.end()) {
+            out.push_back(Proposal{action, rule.steps_to_goal, index});
+          } else if (std::tie(rule.steps_to_goal, index) < std::tie(same->steps_to_goal, same->rule_index)) {
+            same->steps_to_goal = rule.steps_to_goal;
+            same->rule_index = index;
+          }
+        });
+      }
     }
   }
+  // One rule may propose several actions: ties go to the smaller action, so
+  // that the order never depends on the order the buckets were read in.
   std::sort(out.begin(), out.end(), [](const Proposal& a, const Proposal& b) {
-    return std::tie(a.steps_to_goal, a.rule_index) < std::tie(b.steps_to_goal, b.rule_index);
+    return std::tie(a.steps_to_goal, a.rule_index, a.action) < std::tie(b.steps_to_goal, b.rule_index, b.action);
   });
   return out;
 }

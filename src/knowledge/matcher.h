@@ -2,10 +2,11 @@
 // goal, subtask and object of interest.
 //
 // Rules are indexed by the shape of their goal (which predicates, positive
-// or negative) and by the category their goal pattern tests, if any, so that
-// a query looks only at rules that could match this goal. The cost of a
-// query grows with the number of rules in the few buckets it reads, not with
-// all the rules known.
+// or negative), by the category their goal pattern tests, if any, and by
+// the subtask they test, if any, so that a query looks only at rules that
+// could match this goal in this subtask. The cost of a query grows with the
+// number of rules in the few buckets it reads, not with all the rules known
+// (bench/bench_matcher.cc, docs/benchmarks.md).
 #pragma once
 
 #include <optional>
@@ -54,7 +55,8 @@ class RuleMatcher {
                                  const MatchQuery& query) const;
 
  private:
-  std::string bucket_key(const std::vector<LiteralPattern>& goal, std::string_view category) const;
+  // shape|category|subtask; category "*" and subtask "" for rules that test none.
+  static std::string bucket_key(std::string_view shape, std::string_view category, std::string_view subtask);
   static std::string goal_shape(const std::vector<Literal>& goal);
 
   std::vector<Rule> rules_;

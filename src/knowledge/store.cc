@@ -1,5 +1,8 @@
 #include "knowledge/store.h"
 
+#include <fstream>
+#include <string_view>
+
 #include <nlohmann/json.hpp>
 #include <SQLiteCpp/SQLiteCpp.h>
 
@@ -11,10 +14,12 @@ using nlohmann::json;
 
 constexpr const char* kFormatName = "apprentice-knowledge";
 
+constexpr const char* kUnreadable = " (the file is not a readable apprentice knowledge store)";
+
 Error sqlite_error(const std::filesystem::path& path, const std::exception& e) {
   std::string message = path.string() + ": " + e.what();
   if (message.find("not a database") != std::string::npos || message.find("malformed") != std::string::npos)
-    return Error{ErrorCode::kDataLoss, message + " (the file is not a readable apprentice knowledge store)"};
+    return Error{ErrorCode::kDataLoss, message + kUnreadable};
   return Error{ErrorCode::kIo, message};
 }
 
@@ -91,6 +96,21 @@ Result<Rule> rule_from_json(const Domain& domain, const json& j) {
     return make_error(ErrorCode::kDataLoss, "a stored rule has the wrong arity for " + domain.actions[*action].name);
   rule.steps_to_goal = j.at("steps").get<int>();
   if (j.contains("subtask")) rule.subtask = j.at("subtask").get<std::string>();
+  // The matcher binds variables from the goal and the positive conditions
+  // only; a rule whose action or negative conditions use any other
+  // variable would act on no object at all.
+  std::vector<bool> bound(rule.variables.size(), false);
+  for (const auto* part : {&rule.goal, &rule.conditions})
+    for (const LiteralPattern& l : *part)
+      if (l.positive || part == &rule.goal)
+        for (std::uint8_t i = 0; i < l.atom.arity; ++i) bound[l.atom.args[i]] = true;
+  std::vector<VariableId> used(rule.action_args);
+  for (const LiteralPattern& l : rule.conditions)
+    if (!l.positive) used.insert(used.end(), l.atom.args.begin(), l.atom.args.begin() + l.atom.arity);
+  for (VariableId v : used)
+    if (!bound[v])
+      return make_error(ErrorCode::kDataLoss, "a stored rule uses variable " + rule.variables[v].name +
+                                                  ", which no goal literal or condition binds");
   return rule;
 }
 
@@ -162,6 +182,21 @@ Status check_or_create_schema(SQLite::Database& db, const std::filesystem::path&
   return {};
 }
 
+// A file that exists with content must be an SQLite database. SQLite
+// itself takes a 1-byte file for an empty database (a workaround for an old
+// kernel bug) and would overwrite it with a new store.
+Status check_sqlite_header(const std::filesystem::path& path) {
+  std::error_code ec;
+  auto size = std::filesystem::file_size(path, ec);
+  if (ec || size == 0) return {};  // absent (created below) or empty: a new store
+  constexpr std::string_view kHeader("SQLite format 3\0", 16);
+  std::string head(kHeader.size(), '\0');
+  std::ifstream in(path, std::ios::binary);
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  if (in.gcount() == static_cast<std::streamsize>(head.size()) && head == kHeader) return {};
+  return make_error(ErrorCode::kDataLoss, path.string() + ": file is not a database" + kUnreadable);
+}
+
 }  // namespace
 
 KnowledgeStore::KnowledgeStore(std::filesystem::path path, std::unique_ptr<SQLite::Database> db)
@@ -171,6 +206,7 @@ KnowledgeStore& KnowledgeStore::operator=(KnowledgeStore&&) noexcept = default;
 KnowledgeStore::~KnowledgeStore() = default;
 
 Result<KnowledgeStore> KnowledgeStore::open(const std::filesystem::path& path) {
+  if (auto status = check_sqlite_header(path); !status) return tl::unexpected(status.error());
   try {
     auto db = std::make_unique<SQLite::Database>(path.string(), SQLite::OPEN_READWRITE | SQLite::OPEN_CREATE);
     db->exec("PRAGMA busy_timeout = 5000");
