@@ -39,9 +39,28 @@ Result<Generalization> parse_generalization(const std::string& text) {
   return make_error(ErrorCode::kInvalidInput, "--generalization must be full or paper, not " + text);
 }
 
-std::optional<LlmFactory> llm_factory(const LlmFlags& flags) {
+// With several conditions, each keeps its own cassette: record:FILE,SPEC and
+// replay:FILE use FILE's name with ".<condition>" before its extension, so
+// that every condition replays exactly what it recorded.
+std::string per_condition_spec(const std::string& spec, const std::string& condition) {
+  for (const char* scheme : {"record:", "replay:"}) {
+    std::string prefix = scheme;
+    if (spec.rfind(prefix, 0) != 0) continue;
+    std::string rest = spec.substr(prefix.size());
+    std::size_t comma = prefix == "record:" ? rest.find(',') : std::string::npos;
+    std::filesystem::path file = rest.substr(0, comma);
+    std::string tail = comma == std::string::npos ? "" : rest.substr(comma);
+    std::filesystem::path renamed =
+        file.parent_path() / (file.stem().string() + "." + condition + file.extension().string());
+    return prefix + renamed.string() + tail;
+  }
+  return spec;
+}
+
+std::optional<LlmFactory> llm_factory(const LlmFlags& flags, const std::string& condition = "") {
   auto spec = llm::resolve_llm_spec(flags.spec);
   if (!spec) return std::nullopt;
+  if (!condition.empty()) spec = per_condition_spec(*spec, condition);
   llm::LlmOptions options;
   options.model = flags.model;
   options.api_key = flags.api_key;
@@ -98,6 +117,9 @@ CommandResult run_experiment(const ExperimentOptions& options, const std::string
   for (const std::string& name : names) {
     auto condition = parse_condition(name);
     if (!condition) return tl::unexpected(condition.error());
+    if (names.size() > 1) {
+      if (auto factory = llm_factory(options.llm, name)) experiment.llm = *factory;
+    }
     spdlog::info("running condition {}", name);
     auto result = run_condition(*scenario, *condition, experiment);
     if (!result) return tl::unexpected(prefix_error(result.error(), "condition " + name));

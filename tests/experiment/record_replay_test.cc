@@ -138,12 +138,9 @@ TEST_F(RecordReplay, TheCliReplaysARecordedRunToTheSameTableAndTranscript) {
   EXPECT_EQ(testing::read_text(dir_ / "replayed" / "inst+search2+llm.txt"), transcript);
 }
 
-// Known problem, reported: `experiment --conditions a,b --llm record:FILE,SPEC`
-// makes a fresh client per condition, and each one truncates FILE, so the
-// cassette holds only the last condition and a replay of the others
-// differs. Enable once the CLI keeps one cassette per condition (or the
-// cassette records which condition each exchange belongs to).
-TEST_F(RecordReplay, DISABLED_OneCassetteForSeveralConditionsReplaysEach) {
+// With several conditions each keeps its own cassette (FILE's name with
+// ".<condition>" inserted), so a replay of every condition is exact.
+TEST_F(RecordReplay, OneCassetteForSeveralConditionsReplaysEach) {
   const std::string cassette = (dir_ / "run.jsonl").string();
   std::vector<std::string> args = {"experiment", "--scenario", source_path("data/scenarios/tidy-kitchen.yaml").string(),
                                    "--conditions", "inst+llm,inst+search4+llm", "--json"};
