@@ -81,7 +81,6 @@ Result<AgentReport> TaskLearningAgent::Session::learn_task() {
   const auto& words = std::get<language::TaskName>(*form).words;
   task_.name = join(words, " ");
   task_verb_ = words.front();
-  std::optional<ObjectId> loop_place;
   std::optional<Current> current;
   int confused = 0;
   for (;;) {
@@ -91,8 +90,8 @@ Result<AgentReport> TaskLearningAgent::Session::learn_task() {
     if (step && std::holds_alternative<language::Done>(*step)) break;
     if (step && std::holds_alternative<language::RepeatWhile>(*step)) {
       const auto& repeat = std::get<language::RepeatWhile>(*step);
-      loop_place = agent_.understanding_.place(world(), repeat.place, repeat.relation);
-      if (loop_place) continue;
+      // The loop's place comes again in its subtask; here it must only exist.
+      if (agent_.understanding_.place(world(), repeat.place, repeat.relation)) continue;
     } else if (step && std::holds_alternative<language::SubtaskCommand>(*step)) {
       const auto& command = std::get<language::SubtaskCommand>(*step);
       auto place = agent_.understanding_.place(world(), command.place, command.relation);
@@ -113,7 +112,6 @@ Result<AgentReport> TaskLearningAgent::Session::learn_task() {
     dialogue_->say("I do not understand " + apprentice::quoted(*reply) + (step ? "" : ": " + step.error().message) + ".");
   }
   report_.task_finished = true;
-  (void)loop_place;
   return report_;
 }
 
