@@ -102,7 +102,7 @@ Status read_objects(const Domain& domain, const SExpr& section, Universe& univer
   auto flush = [&](TypeId type) -> Status {
     for (const SExpr* n : pending) {
       if (universe.find(n->atom)) return tl::unexpected(syntax_error(source, n->position, "object " + n->atom + " is declared twice"));
-      universe.add(ObjectInfo{n->atom, category_from_name(n->atom), kind_of_type(domain, type), type});
+      universe.add(ObjectInfo{n->atom, category_from_name(n->atom), kind_of_type(domain, type), type, {}});
     }
     pending.clear();
     return {};

@@ -174,7 +174,7 @@ class ScenarioBuilder {
       auto kind = parse_object_kind(*kind_text);
       if (!kind || *kind == ObjectKind::kItem) return fail(p["kind"], "expected kind 'surface' or 'receptacle', not '" + *kind_text + "'");
       auto added = add_object(p, ObjectInfo{"", *category, *kind,
-                                            types_[*kind == ObjectKind::kSurface ? "surface" : "receptacle"]});
+                                            types_[*kind == ObjectKind::kSurface ? "surface" : "receptacle"], {}});
       if (!added) return tl::unexpected(added.error());
       ObjectId id = *added;
       facts_.push_back(Fact(*kind == ObjectKind::kSurface ? vocabulary_.surface : vocabulary_.receptacle, {id}));
@@ -214,7 +214,7 @@ class ScenarioBuilder {
         return fail(o["count"], "expected a count between 1 and 100000");
       bool on_surface = universe_.info(*place).kind == ObjectKind::kSurface;
       for (int i = 0; i < count; ++i) {
-        auto added = add_object(o, ObjectInfo{"", *category, ObjectKind::kItem, types_["item"]});
+        auto added = add_object(o, ObjectInfo{"", *category, ObjectKind::kItem, types_["item"], {}});
         if (!added) return tl::unexpected(added.error());
         ObjectId id = *added;
         object_marks_[id] = o.Mark();

@@ -25,6 +25,9 @@ struct ObjectInfo {
   std::string category;  // "ketchup"
   ObjectKind kind = ObjectKind::kItem;
   TypeId type = kRootType;  // its PDDL type
+  // Words a person uses to tell look-alikes apart ("top", "blue", "left"),
+  // lower-case; empty for most objects.
+  std::vector<std::string> properties;
 };
 
 class Universe {

@@ -1,0 +1,140 @@
+// Reading a teacher's reply in the context of the question it answers.
+//
+// The agent asks one kind of question at a time (what the task is, what
+// comes next in it, where an object goes, what to do next, yes or no, which
+// of several things). `read_reply` says what a reply means in that context
+// and the current world: a step of the task structure, a goal, an action, an
+// answer, a command to the agent, a request to tell look-alikes apart, or
+// why it cannot be used, in plain English, with replies that would work.
+//
+// The grammar of the paper's script (language/parser.h) is one of the forms
+// understood; everyday English is read too (docs/language.md). The reader
+// never guesses: a reply that could mean two things is `Ambiguous`, and a
+// goal that does not mention the object asked about (and is not "it") is
+// `Unusable`, so that the agent asks back instead of storing it silently.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "language/grounding.h"
+#include "language/logical_form.h"
+#include "world/action.h"
+#include "world/goal.h"
+#include "world/scenario.h"
+
+namespace apprentice::language {
+
+// The question a reply answers.
+enum class Asked {
+  kTask,        // "What task should I learn?"
+  kTaskStep,    // what comes next in the task: a subtask, a loop, or the end
+  kSubtaskEnd,  // the first object of a subtask is done: more to it, or is it done?
+  kGoal,        // where should `object` go (its goal)?
+  kAction,      // what should I do next for `object`?
+  kYesNo,       // a yes/no question: a proposed goal, action or analogy
+  kWhich,       // which of `choices` is meant?
+};
+
+std::string_view to_string(Asked asked);
+
+struct ReplyContext {
+  Asked asked = Asked::kTask;
+  // The object asked about: what "it", "this" and "that one" mean.
+  std::optional<ObjectId> object;
+  // The place named last in the conversation: what "the door" and "close
+  // it" (after a placement) mean.
+  std::optional<ObjectId> recent_place;
+  // kWhich: the things the agent offered.
+  std::vector<ObjectId> choices;
+};
+
+// --- What a reply can mean --------------------------------------------------
+
+// "Tidy kitchen.", "I want you to tidy the kitchen": the task's name, verb
+// first ("tidy kitchen").
+struct TaskNamed {
+  std::string name;
+};
+
+// "Clear an object that is on the table.", "First, clear the table.": a
+// subtask over the objects at `places` (several when a category names every
+// place of that kind: "unload the bags").
+struct SubtaskNamed {
+  std::string verb;  // "clear"
+  Relation relation = Relation::kOn;
+  std::vector<ObjectId> places;  // never empty
+};
+
+// "Repeat the following tasks while an object is on the table."
+struct LoopNamed {
+  Relation relation = Relation::kOn;
+  std::vector<ObjectId> places;  // never empty
+};
+
+// "You are done.", "That's all.", "Done.", "We're finished.": the end of
+// whatever is being taught (the subtask or the task).
+struct Finished {};
+
+// "Repeat.", "next", "keep going": go on.
+struct Proceed {};
+
+struct GoalGiven {
+  Goal goal;
+};
+
+struct ActionGiven {
+  Action action;
+};
+
+struct YesNo {
+  bool yes = false;
+};
+
+// kWhich: the one meant.
+struct Chosen {
+  ObjectId object = 0;
+};
+
+// A command to the agent rather than an answer. These are never counted as
+// instructions.
+struct Command {
+  enum class Kind { kHelp, kStatus, kUndo, kForget, kQuit };
+  Kind kind = Kind::kHelp;
+  std::string argument;  // kForget: the kind of object ("ketchup")
+};
+
+// A phrase that fits several things: the agent should ask which.
+struct Ambiguous {
+  std::string phrase;               // as the teacher wrote it: "mug"
+  std::vector<ObjectId> candidates;  // at least two
+  std::string question;             // "Which do you mean: the mug on the counter or the mug in the dish rack?"
+};
+
+// A reply the agent cannot use here.
+struct Unusable {
+  std::string reason;                 // plain English: "The recycling bin has no lid, so it can't be closed."
+  std::vector<std::string> examples;  // replies that would work at this question
+  // The grounder's failure, where the reply parsed but did not ground.
+  std::optional<GroundingFailure> failure;
+};
+
+using Reply = std::variant<TaskNamed, SubtaskNamed, LoopNamed, Finished, Proceed, GoalGiven, ActionGiven, YesNo,
+                           Chosen, Command, Ambiguous, Unusable>;
+
+// What `text` means as an answer to `context.asked` in `world`. Never
+// throws; every reply gets a meaning, if only `Unusable`.
+Reply read_reply(const Grounder& grounder, const World& world, const ReplyContext& context, std::string_view text);
+
+// Two or more replies that would work at this question, for help and after
+// an unusable reply: "the ketchup goes in the fridge".
+std::vector<std::string> example_replies(const World& world, const ReplyContext& context);
+
+// One line for golden files: "subtask clear on table1", "goal (and ...)",
+// "finished", "command undo", "ambiguous mug: mug1 mug2", "unusable ...".
+std::string format_reply(const World& world, const Reply& reply);
+
+}  // namespace apprentice::language
