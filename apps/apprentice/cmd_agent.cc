@@ -9,6 +9,7 @@
 #include "experiment/experiment.h"
 #include "instructor/terminal_instructor.h"
 #include "llm/factory.h"
+#include "util/json.h"
 #include "util/log.h"
 #include "world/pddl.h"
 
@@ -135,7 +136,7 @@ CommandResult run_experiment(const ExperimentOptions& options, const std::string
   if (options.json) {
     nlohmann::json all = nlohmann::json::array();
     for (const ConditionResult& r : results) all.push_back(result_json(r));
-    out << all.dump(2) << "\n";
+    out << dump_json(all, 2) << "\n";
   } else {
     out << "Scenario " << scenario->name << " (" << scenario->goal_assertions().size() << " goal assertions)";
     for (const ConditionResult& r : results)
@@ -201,9 +202,7 @@ CommandResult run_teach(const TeachOptions& options, const std::string& program,
 CommandResult run_run(const RunOptions& options, std::ostream& out) {
   auto scenario = load_scenario(options.scenario);
   if (!scenario) return tl::unexpected(scenario.error());
-  if (!std::filesystem::exists(options.knowledge))
-    return make_error(ErrorCode::kNotFound, options.knowledge + ": no such knowledge store");
-  auto store = KnowledgeStore::open(options.knowledge);
+  auto store = KnowledgeStore::open(options.knowledge, StoreAccess::kReadOnly);
   if (!store) return tl::unexpected(store.error());
   auto knowledge = store->load(*scenario->world.domain);
   if (!knowledge) return tl::unexpected(knowledge.error());
@@ -217,12 +216,11 @@ CommandResult run_run(const RunOptions& options, std::ostream& out) {
   int total = static_cast<int>(scenario->goal_assertions().size());
   double completion = total == 0 ? 100.0 : 100.0 * achieved / total;
   if (options.json) {
-    out << nlohmann::json{{"completion_rate", completion}, {"assertions_achieved", achieved},
-                          {"assertions_total", total}, {"instructions", 0}, {"search_nodes", report->search_nodes},
-                          {"llm_calls", 0}, {"actions", report->actions_executed},
-                          {"help_needed", report->help_needed}}
-                 .dump(2)
-        << "\n";
+    const nlohmann::json document{{"completion_rate", completion}, {"assertions_achieved", achieved},
+                                  {"assertions_total", total}, {"instructions", 0}, {"search_nodes", report->search_nodes},
+                                  {"llm_calls", 0}, {"actions", report->actions_executed},
+                                  {"help_needed", report->help_needed}};
+    out << dump_json(document, 2) << "\n";
   } else {
     out << "Performed with learned knowledge alone: " << achieved << " of " << total << " goal assertions ("
         << completion << "%), " << report->actions_executed << " actions, 0 instructions, "
@@ -239,9 +237,7 @@ CommandResult run_knowledge(const KnowledgeOptions& options, const std::string& 
       options.domain.empty() ? data_dir() / "domains" / "kitchen.pddl" : std::filesystem::path(options.domain);
   auto domain = read_domain_file(domain_path);
   if (!domain) return tl::unexpected(domain.error());
-  if (!std::filesystem::exists(options.knowledge))
-    return make_error(ErrorCode::kNotFound, options.knowledge + ": no such knowledge store");
-  auto store = KnowledgeStore::open(options.knowledge);
+  auto store = KnowledgeStore::open(options.knowledge, StoreAccess::kReadOnly);
   if (!store) return tl::unexpected(store.error());
   auto knowledge = store->load(*domain);
   if (!knowledge) return tl::unexpected(knowledge.error());
@@ -257,7 +253,7 @@ CommandResult run_knowledge(const KnowledgeOptions& options, const std::string& 
       goals.push_back({{"text", format_goal_knowledge(g)}, {"object", g.provenance.object}, {"source", g.provenance.source}});
     for (const Rule& r : knowledge->rules.rules())
       rules.push_back({{"signature", rule_signature(*domain, r)}, {"object", r.provenance.object}, {"source", r.provenance.source}});
-    out << nlohmann::json{{"tasks", tasks}, {"goals", goals}, {"rules", rules}}.dump(2) << "\n";
+    out << dump_json(nlohmann::json{{"tasks", tasks}, {"goals", goals}, {"rules", rules}}, 2) << "\n";
     return Outcome::kSuccess;
   }
   for (const TaskKnowledge& t : knowledge->tasks) {
