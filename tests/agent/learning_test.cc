@@ -144,8 +144,7 @@ TEST_F(Learning, NeverAsksTwiceForAGoalOfTheSameKind) {
 }
 
 TEST_F(Learning, NeverAsksTwiceForAGoalWithTheLlmEither) {
-  if (!std::filesystem::exists(testing::corpus_path()))
-    GTEST_SKIP() << "no " << testing::corpus_path() << " (../shared is not part of a clone)";
+  SKIP_WITHOUT_CORPUS();
   for (const char* condition : {"inst+llm", "inst+search2+llm", "inst+search4+llm", "search4+llm"}) {
     SCOPED_TRACE(condition);
     auto advisor = testing::corpus_advisor();
