@@ -120,7 +120,7 @@ inline Problem build_problem(const WorldSpec& spec) {
     std::string category = p.surface ? "shelf" : (p.door ? "cabinet" : "bin");
     ObjectKind kind = p.surface ? ObjectKind::kSurface : ObjectKind::kReceptacle;
     ObjectId id = universe.add(ObjectInfo{category + std::to_string(i), category, kind,
-                                          *domain->find_type(p.surface ? "surface" : "receptacle")});
+                                          *domain->find_type(p.surface ? "surface" : "receptacle"), {}});
     places.push_back(id);
     facts.push_back(Fact(p.surface ? v.surface : v.receptacle, {id}));
     if (!p.surface && p.door) {
@@ -131,7 +131,7 @@ inline Problem build_problem(const WorldSpec& spec) {
   bool hand_full = false;
   for (std::size_t i = 0; i < spec.item_at.size(); ++i) {
     ObjectId id = universe.add(ObjectInfo{"thing" + std::to_string(i), "thing", ObjectKind::kItem,
-                                          *domain->find_type("item")});
+                                          *domain->find_type("item"), {}});
     items.push_back(id);
     facts.push_back(Fact(v.grabbable, {id}));
     int at = spec.item_at[i];
