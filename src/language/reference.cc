@@ -169,9 +169,15 @@ std::optional<Candidates> by_parts(const std::string& phrase, Role role, const R
   for (const ObjectInfo& info : universe.objects()) {
     if (!fits(info, role)) continue;
     std::vector<std::string> parts = name_parts(info.category);
+    // Parts run together count too: "poptarts" is pop + tart.
+    std::vector<std::string> pieces = parts;
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+      std::string joined = parts[i];
+      for (std::size_t j = i + 1; j < parts.size(); ++j) pieces.push_back(joined += parts[j]);
+    }
     bool all_in = std::all_of(forms.begin(), forms.end(), [&](const std::vector<std::string>& f) {
       return std::any_of(f.begin(), f.end(), [&](const std::string& form) {
-        return std::find(parts.begin(), parts.end(), form) != parts.end();
+        return std::find(pieces.begin(), pieces.end(), form) != pieces.end();
       });
     });
     if (all_in) within.insert(info.category);

@@ -50,6 +50,10 @@ struct ReplyContext {
   std::optional<ObjectId> recent_place;
   // kWhich: the things the agent offered.
   std::vector<ObjectId> choices;
+  // The verbs of the subtasks taught so far, in order ("clear", "store"):
+  // what "do the same with the counter" and "the counter next" do. Empty
+  // when unknown; such replies then get a question back.
+  std::vector<std::string> taught_subtasks = {};
 };
 
 // --- What a reply can mean --------------------------------------------------

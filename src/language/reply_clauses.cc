@@ -20,7 +20,7 @@ struct HouseholdVerb {
 };
 
 // The verbs people use for moving things around a house, by what they do.
-constexpr std::array<HouseholdVerb, 63> kHouseholdVerbs{{
+constexpr std::array<HouseholdVerb, 72> kHouseholdVerbs{{
     {"put", VerbClass::kPlace},      {"place", VerbClass::kPlace},    {"set", VerbClass::kPlace},
     {"store", VerbClass::kPlace},    {"keep", VerbClass::kPlace},     {"leave", VerbClass::kPlace},
     {"move", VerbClass::kPlace},     {"bring", VerbClass::kPlace},    {"carry", VerbClass::kPlace},
@@ -42,6 +42,9 @@ constexpr std::array<HouseholdVerb, 63> kHouseholdVerbs{{
     {"discard", VerbClass::kDiscard}, {"dump", VerbClass::kDiscard},  {"junk", VerbClass::kDiscard},
     {"ditch", VerbClass::kDiscard},  {"rid", VerbClass::kDiscard},    {"recycle", VerbClass::kRecycle},
     {"compost", VerbClass::kDiscard}, {"empty", VerbClass::kNone},    {"clear", VerbClass::kNone},
+    {"stack", VerbClass::kPlace},    {"pack", VerbClass::kPlace},     {"squeeze", VerbClass::kPlace},
+    {"slot", VerbClass::kPlace},     {"stuff", VerbClass::kPlace},    {"cram", VerbClass::kPlace},
+    {"wedge", VerbClass::kPlace},    {"arrange", VerbClass::kPlace},  {"sort", VerbClass::kPlace},
 }};
 
 const HouseholdVerb* find_household(std::string_view base) {
@@ -89,7 +92,8 @@ const std::vector<std::vector<std::string_view>>& frames() {
     {"i", "would"}, {"i", "think"}, {"i", "guess"}, {"i", "believe"}, {"thank", "you"}, {"for", "now"},
     {"for", "me"}, {"if", "you", "can"}, {"if", "you", "would"}, {"after", "that"}, {"and", "then"},
     {"when", "you", "are", "done"}, {"once", "you", "are", "done"}, {"when", "done"},
-    {"start", "by"}, {"begin", "by"}, {"first", "of", "all"}, {"as", "well"},
+    {"start", "by"}, {"begin", "by"}, {"first", "of", "all"}, {"as", "well"}, {"like", "i", "said"},
+    {"as", "i", "said"}, {"i", "said"}, {"i", "told", "you"}, {"i", "mean"}, {"i", "meant"},
   };
   return kFrames;
 }
@@ -125,6 +129,8 @@ class ClauseReader {
     // form before its object ("bin it", "store the things ..."), not
     // "recycling bin".
     if (v_.is_name_word(word) && !(i_ == 0 && v_.household_verb(word) == word && starts_noun(1))) return false;
+    // "trash can", "recycle bin": the first word of a compound noun.
+    if (i_ + 1 < w_.size() && v_.compound_noun(word, at(1))) return false;
     base = v_.household_verb(word);
     if (!base.empty()) return true;
     base = v_.any_verb(word);
@@ -160,19 +166,21 @@ class ClauseReader {
     // "do the counter" is a verb; "do not", "does it" are auxiliaries.
     if (is_one_of(t, {"do", "does", "did"}) && c_.verb.empty() && (is_determiner(at(1)) || v_.is_name_word(at(1)))) {
       c_.verb = "do";
+      c_.verb_word = std::string(t);
       ++i_;
       return;
     }
     // "to the fridge", "to recycling": a place; "needs to go": an infinitive.
     if (t == "to" && (is_determiner(at(1)) || v_.is_name_word(at(1)) || is_object_pronoun(at(1)))) {
       ++i_;
-      PrepPhrase phrase{Preposition::kTo, chunk()};
+      PrepPhrase phrase{Preposition::kTo, chunk(), "to"};
       c_.phrases.push_back(std::move(phrase));
       return;
     }
     // "get the milk" is a verb; "gets closed", "get put away" are auxiliaries.
     if (is_one_of(t, {"get", "gets", "got"}) && c_.verb.empty() && starts_noun(1)) {
       c_.verb = "get";
+      c_.verb_word = std::string(t);
       ++i_;
       return;
     }
@@ -180,11 +188,11 @@ class ClauseReader {
       ++i_;
       return;
     }
-    // "the door of the fridge": one phrase.
-    if (t == "of" && (c_.object || c_.subject) && c_.phrases.empty()) {
+    // "the door of the fridge", "the top shelf of the fridge": one phrase.
+    if (t == "of" && (c_.object || c_.subject || !c_.phrases.empty())) {
       ++i_;
       Chunk noun = chunk();
-      Chunk& previous = c_.object ? *c_.object : *c_.subject;
+      Chunk& previous = !c_.phrases.empty() ? c_.phrases.back().noun : c_.object ? *c_.object : *c_.subject;
       for (std::string& word : noun.words) previous.words.push_back(std::move(word));
       return;
     }
@@ -196,9 +204,13 @@ class ClauseReader {
       return;
     }
     if (auto p = preposition_at(w_, i_)) {
+      PrepPhrase phrase{p->second, {}, std::string(t)};
       i_ += p->first;
-      PrepPhrase phrase{p->second, {}};
+      // "for the mug on the counter": a place after a noun inside such a
+      // phrase says where that noun is.
+      inside_other_ = p->second == Preposition::kOther;
       if (i_ < w_.size() && (starts_noun(0) || continues_noun(0, true))) phrase.noun = chunk();
+      inside_other_ = false;
       c_.phrases.push_back(std::move(phrase));
       return;
     }
@@ -221,11 +233,13 @@ class ClauseReader {
     if (is_one_of(c_.verb, {"keep", "start", "begin", "continue", "stop", "finish", "try"}) && !c_.object &&
         t.ends_with("ing") && !v_.any_verb(t).empty() && !v_.is_name_word(t)) {
       c_.verb = v_.any_verb(t);
+      c_.verb_word = std::string(t);
       ++i_;
       return;
     }
     if (c_.verb.empty() && is_verb_here(t, base)) {
       c_.verb = base;
+      c_.verb_word = std::string(t);
       ++i_;
       // "get rid of": the verb is "rid".
       if (c_.verb == "get" && at(0) == "rid") {
@@ -355,8 +369,9 @@ class ClauseReader {
       for (std::size_t k = after; k < w_.size(); ++k)
         if (auto q = preposition_at(w_, k); q && q->second != Preposition::kFrom && q->second != Preposition::kOther)
           another_follows = true;
-      if ((before_verb && !noun.empty()) || relative || another_follows || p->second == Preposition::kFrom) {
-        if (p->second == Preposition::kFrom && !before_verb && !relative && !another_follows) {
+      if ((before_verb && !noun.empty()) || relative || another_follows || inside_other_ ||
+          p->second == Preposition::kFrom) {
+        if (p->second == Preposition::kFrom && !before_verb && !relative && !another_follows && !inside_other_) {
           i_ = save;  // "take the mug from the dish rack": the clause's phrase
           return noun;
         }
@@ -379,6 +394,7 @@ class ClauseReader {
   const ReplyVocabulary& v_;
   Clause c_;
   std::size_t i_ = 0;
+  bool inside_other_ = false;
 };
 
 }  // namespace
@@ -423,11 +439,17 @@ std::string ReplyVocabulary::any_verb(std::string_view word) const {
   return "";
 }
 
+bool ReplyVocabulary::compound_noun(std::string_view first, std::string_view second) const {
+  if (first.empty() || second.empty() || first == "," || second == ",") return false;
+  std::string pair = std::string(first) + " " + std::string(second);
+  if (names_.count(std::string(first) + "-" + std::string(second))) return true;
+  return lexicon_.has_noun(pair) || !lexicon_.variants(pair).empty();
+}
+
 VerbClass verb_class(std::string_view base, std::string_view particle) {
   const HouseholdVerb* v = find_household(base);
   if (!v) return VerbClass::kNone;
   if (base == "put" && (particle == "away" || particle == "back")) return VerbClass::kPlace;
-  if ((base == "throw" || base == "toss" || base == "chuck") && particle.empty()) return VerbClass::kPlace;
   if (base == "take" && (particle == "out" || particle == "away")) return VerbClass::kDiscard;
   return v->kind;
 }
@@ -455,6 +477,7 @@ std::string Chunk::text() const {
   if (pronoun && all.empty()) return "it";
   if (located_by) {
     all.emplace_back(*located_by == Preposition::kOn ? "on" : *located_by == Preposition::kFrom ? "from" : "in");
+    all.emplace_back("the");
     for (const std::string& w : location) all.push_back(w);
   }
   return join(all, " ");

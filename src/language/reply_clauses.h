@@ -42,6 +42,8 @@ class ReplyVocabulary {
   std::string household_verb(std::string_view word) const;
   // The base form if WordNet has `word` as a verb ("tidying" -> "tidy"), else "".
   std::string any_verb(std::string_view word) const;
+  // Whether two words make one noun ("trash can", "recycle bin").
+  bool compound_noun(std::string_view first, std::string_view second) const;
 
  private:
   const Lexicon& lexicon_;
@@ -75,12 +77,14 @@ struct Chunk {
 
 struct PrepPhrase {
   Preposition preposition = Preposition::kOther;
-  Chunk noun;  // empty for "put it inside"
+  Chunk noun;        // empty for "put it inside"
+  std::string word;  // as said: "in", "into", "to"
 };
 
 struct Clause {
   std::vector<std::string> words;  // as read, for messages
   std::string verb;                // base form of the main verb; "" if none
+  std::string verb_word;           // the verb as said: "unloaded", "clear"
   std::string particle;            // away, up, back, down, out, off
   bool negated = false;
   bool copula = false;             // is/are/be before the predicate
@@ -92,6 +96,8 @@ struct Clause {
   std::optional<bool> closed;      // "closed", "shut": true; "open": false
 
   VerbClass verb_class() const { return language::verb_class(verb, particle); }
+  // "the table is clear": a verb's base form after "is" is an adjective.
+  bool adjective() const { return copula && !verb.empty() && verb_word == verb; }
 };
 
 // Splits at clause breaks (",", "and", "then", "with", ...) and reads each

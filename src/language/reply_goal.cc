@@ -85,6 +85,11 @@ class EventReader {
       return std::nullopt;
     }
     Choice choice = resolver_.choose(*chunk, Role::kItem);
+    if (const auto* id = std::get_if<ObjectId>(&choice); id && (*id == in_.context.object || !in_.context.object))
+      return *id;
+    // A name that fits the object asked about in other words ("the paper"
+    // for the newspaper) is about it.
+    if (in_.context.asked == Asked::kGoal && resolver_.fits_asked(*chunk)) return *in_.context.object;
     if (const auto* id = std::get_if<ObjectId>(&choice)) return *id;
     // A goal names the object asked about; look-alikes of another kind do
     // not make the reply ambiguous, only not about it.
@@ -108,8 +113,15 @@ class EventReader {
   // it, a receptacle in it. "on" a receptacle without a door ("on the dish
   // rack", "on the shelf") is read as in it; "on" a receptacle with a door
   // and "in" a surface are kept, for the grounder to explain.
-  Relation relation(std::optional<Preposition> preposition, ObjectId place) const {
+  Relation relation(std::optional<Preposition> preposition, ObjectId place, const Chunk& said) const {
     ObjectKind kind = in_.world.universe->info(place).kind;
+    // "on the top shelf of the fridge": "on" is about the shelf.
+    std::vector<std::string> name = name_parts(in_.world.universe->info(place).category);
+    bool described = std::any_of(said.words.begin(), said.words.end(), [&](const std::string& w) {
+      return std::find(name.begin(), name.end(), w) == name.end() && !in_.vocabulary.is_property(w) &&
+             w != in_.world.universe->name(place);
+    });
+    if (described && !said.pronoun) preposition.reset();
     if (preposition == Preposition::kIn) return Relation::kIn;
     if (preposition == Preposition::kOn)
       return kind == ObjectKind::kReceptacle && !openable(in_.world, place) ? Relation::kIn : Relation::kOn;
@@ -167,10 +179,25 @@ class EventReader {
   // the verb ("throw it away", "recycle it"), or a place said on its own
   // ("fridge", "that's trash", "the fridge is where it goes").
   std::optional<Event> placement(const Clause& c, VerbClass verb, std::optional<Choice>& failure) {
+    // The destination: the last place phrase that names a place here ("in
+    // the fridge on the door shelf": the shelf is a detail of the fridge).
+    // A verb this reader does not know places things only "into" or
+    // "onto" something ("unload it into the cupboard", not "walk to the
+    // fridge", "wash it in the sink"); picking up "in"/"on" a place says
+    // where the thing is, not where it goes.
     const PrepPhrase* destination = nullptr;
-    for (const PrepPhrase& p : c.phrases)
-      if (p.preposition == Preposition::kIn || p.preposition == Preposition::kOn || p.preposition == Preposition::kTo)
-        destination = &p;
+    bool known_verb = c.verb.empty() || c.copula || verb != VerbClass::kNone;
+    for (const PrepPhrase& p : c.phrases) {
+      if (p.preposition != Preposition::kIn && p.preposition != Preposition::kOn && p.preposition != Preposition::kTo)
+        continue;
+      bool moving = p.word == "into" || p.word == "onto" || p.word == "inside";
+      if (!known_verb && !moving) continue;
+      if (verb == VerbClass::kPick && p.preposition != Preposition::kTo && !moving) continue;
+      if (destination && !p.noun.empty() && !names_place(p.noun) && !destination->noun.empty() &&
+          names_place(destination->noun))
+        continue;
+      destination = &p;
+    }
     std::optional<Chunk> where;
     std::optional<Preposition> preposition;
     const std::optional<Chunk>* item_chunk = nullptr;
@@ -186,7 +213,10 @@ class EventReader {
     } else if (c.where && c.subject) {
       where = *c.subject;
       item_chunk = &c.object;
-    } else if (!c.closed && (verb == VerbClass::kNone || verb == VerbClass::kBe) && c.phrases.empty()) {
+    } else if (!c.closed && (verb == VerbClass::kNone || verb == VerbClass::kBe) &&
+               std::all_of(c.phrases.begin(), c.phrases.end(), [](const PrepPhrase& p) {
+                 return p.preposition == Preposition::kOther || p.preposition == Preposition::kFrom;
+               })) {
       // A place said on its own: the subject, or what follows "is".
       if (c.subject && !c.object && names_place(*c.subject)) {
         where = *c.subject;
@@ -196,6 +226,9 @@ class EventReader {
       } else {
         return std::nullopt;
       }
+    } else if (auto here = stays_put(c)) {
+      where = *here;
+      item_chunk = &c.object;
     } else if (auto implied = implied_place(c)) {
       where = *implied;
       item_chunk = c.object ? &c.object : &c.subject;
@@ -213,13 +246,30 @@ class EventReader {
     }
     Event event;
     event.place = place_id;
-    event.relation = relation(preposition, *place_id);
+    event.relation = relation(preposition, *place_id, *where);
     std::optional<Chunk> none;
     const std::optional<Chunk>& said = item_chunk ? *item_chunk : none;
     if (said) event.item_words = said->text();
     event.item = item(said, event.item_named, failure);
     if (!event.item) return std::nullopt;
     return event;
+  }
+
+  // "leave it where it is", "leave it here", "it stays put": the place
+  // the object asked about is at now.
+  std::optional<Chunk> stays_put(const Clause& c) const {
+    if (!in_.context.object || c.negated) return std::nullopt;
+    if (c.verb != "leave" && c.verb != "keep" && c.verb != "stay") return std::nullopt;
+    const std::vector<std::string>& w = c.words;
+    auto has = [&](std::initializer_list<std::string_view> phrase) {
+      return std::search(w.begin(), w.end(), phrase.begin(), phrase.end()) != w.end();
+    };
+    if (!(has({"where", "it", "is"}) || has({"where", "it", "was"}) || has({"here"}) || has({"alone"}) ||
+          has({"put"}) || has({"as", "it", "is"}) || has({"where", "they", "are"})))
+      return std::nullopt;
+    auto place = place_of(in_.world, *in_.context.object);
+    if (!place) return std::nullopt;
+    return Chunk::of_words({in_.world.universe->name(*place)});
   }
 
   // A verb that names its place: "refrigerate it" (a refrigerator),

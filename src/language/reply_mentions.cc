@@ -121,6 +121,24 @@ Choice Resolver::choose(const std::vector<ObjectId>& objects, const std::string&
   return Ambiguous{phrase, objects, say_which_question(in_.world, objects)};
 }
 
+bool Resolver::fits_asked(const Chunk& chunk) const {
+  if (!in_.context.object || chunk.words.empty() || chunk.pronoun || chunk.located_by) return false;
+  const std::string& category = in_.world.universe->info(*in_.context.object).category;
+  // A phrase that names the object's own kind is about one of that kind.
+  auto found = candidates(Chunk::of_words(chunk.words), Role::kItem);
+  if (const auto* ids = std::get_if<std::vector<ObjectId>>(&found))
+    if (std::any_of(ids->begin(), ids->end(),
+                    [&](ObjectId id) { return in_.world.universe->info(id).category == category; }))
+      return false;
+  std::string noun = chunk.words.back();
+  if (noun.size() > 3 && noun.back() == 's' && !noun.ends_with("ss")) noun.pop_back();
+  std::string closed = category;
+  std::erase(closed, '-');
+  if (closed.size() > noun.size() + 2 && closed.ends_with(noun) && category.find('-') == std::string::npos) return true;
+  std::vector<std::string> categories{category};
+  return !in_.grounder.lexicon().related(join(chunk.words, " "), categories, false).empty();
+}
+
 std::string verb_name(const std::string& verb, const std::string& particle) {
   if (particle == "away" || particle == "back" || particle == "out") return verb + " " + particle;
   return verb;

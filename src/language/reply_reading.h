@@ -53,6 +53,11 @@ class Resolver {
   Choice choose(const Chunk& chunk, Role role) const;
   Choice choose(const std::vector<ObjectId>& objects, const std::string& phrase, Role role) const;
 
+  // Whether the phrase, which names something else first, may also name
+  // the object asked about: its name ends with the phrase's noun as a
+  // closed compound ("the paper" for the newspaper) or WordNet relates them.
+  bool fits_asked(const Chunk& chunk) const;
+
   // The place named last: in this reply, else the conversation's.
   std::optional<ObjectId> last_place() const { return last_place_ ? last_place_ : in_.context.recent_place; }
   void named_place(ObjectId place) { last_place_ = place; }

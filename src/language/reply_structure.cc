@@ -87,8 +87,10 @@ bool verb_like(const std::string& word, const ReplyInput& in, std::string& base)
 std::optional<TaskNamed> gerund_task(const Words& words, const ReplyInput& in) {
   for (std::size_t i = 1; i < words.size(); ++i) {
     const std::string& w = words[i];
-    if (!(w.ends_with("ing") || w.ends_with("ed"))) continue;
-    std::string base = in.vocabulary.any_verb(w);
+    std::string base;
+    if (w.ends_with("ing") || w.ends_with("ed")) base = in.vocabulary.any_verb(w);
+    // "kitchen cleanup": a verb run together with its particle.
+    if (base.empty() && w.size() > 4 && w.ends_with("up")) base = in.vocabulary.any_verb(w.substr(0, w.size() - 2));
     if (base.empty() || base == w) continue;
     std::string name = base;
     for (std::size_t k = 0; k < words.size(); ++k) {
@@ -112,7 +114,9 @@ bool finished_words(const Words& words) {
            {"would", "be", "all"}, {"nothing", "else"}, {"nothing", "more"}, {"no", "more"}, {"all", "set"},
            {"that", "is", "enough"}, {"that", "should", "be", "it"}, {"that", "should", "do", "it"},
            {"that", "does", "it"}, {"that", "was", "it"}, {"that", "was", "all"}, {"nothing", "left"},
-           {"the", "end"}, {"are", "through"}, {"whole", "task"}, {"whole", "thing"}, {"whole", "job"},
+           {"the", "end"}, {"are", "through"}, {"is", "clear"}, {"is", "empty"}, {"is", "clean"}, {"is", "tidy"},
+           {"are", "clear"}, {"are", "empty"}, {"is", "cleared"}, {"is", "emptied"}, {"is", "tidied"},
+           {"is", "cleaned"}, {"are", "cleared"}, {"is", "clear", "now"}, {"whole", "task"}, {"whole", "thing"}, {"whole", "job"},
            {"entire", "task"}, {"nothing", "to", "do"}})
     if (contains(words, phrase)) return true;
   return words.size() == 1 && is_one_of(words[0], {"nothing", "enough", "stop"});
@@ -125,7 +129,8 @@ bool proceed_words(const Words& words) {
   for (const std::vector<std::string_view>& phrase : std::vector<std::vector<std::string_view>>{
            {"keep", "going"}, {"keep", "on"}, {"go", "on"}, {"carry", "on"}, {"move", "on"}, {"keep", "at", "it"}, {"go", "ahead"},
            {"keep", "it", "up"}, {"same", "way"}, {"the", "same"}, {"same", "for"}, {"same", "with"},
-           {"all", "of", "them"}, {"one", "more"}})
+           {"all", "of", "them"}, {"one", "more"}, {"not", "yet"}, {"not", "done"}, {"not", "finished"},
+           {"there", "is", "more"}})
     if (contains(words, phrase)) return true;
   return words.size() == 1 && is_one_of(words[0], {"more", "go", "same"});
 }
@@ -140,6 +145,9 @@ bool loop_words(const Words& words) {
              contains(words, {"for", "everything"}) || contains(words, {"for", "anything"});
   return (verb && cue) || (!words.empty() && words[0] == "repeat" && words.size() > 1);
 }
+
+// The longest yes or no phrase the words start with (below).
+std::optional<std::pair<std::size_t, bool>> answer_prefix(const Words& words);
 
 struct Places {
   std::vector<ObjectId> objects;
@@ -171,12 +179,33 @@ class StructureReader {
       else if (proceed_words(piece)) proceed = true;
     }
     if (finished) return Finished{};
-    if (proceed) return Proceed{};
+    // "the counter next", "same with the counter": the last subtask's verb
+    // at a place named without one.
+    std::optional<Places> named;
+    if (!problem_ && !ambiguous_ && !item_named_) named = first_places(clauses);
+    if (named && !in_.context.taught_subtasks.empty()) {
+      std::vector<ObjectId> holding = holding_items(named->objects);
+      if (!holding.empty())
+        return SubtaskNamed{in_.context.taught_subtasks.back(), relation(holding.front()), holding};
+    }
+    if (proceed && !named) return Proceed{};
     if (problem_ || ambiguous_) return outcome();
+    if (in_.context.asked == Asked::kSubtaskEnd && answer_prefix(in_.words))
+      return unusable(in_, Problem{"Please say it in words: \"that's all\" if this part is done, or \"keep going\" "
+                                   "if there is more to it.",
+                                   std::nullopt});
     if (item_named_)
       return unusable(in_, Problem{"First tell me the parts of the task, such as \"" + first_example() +
                                        "\"; I will ask where each thing goes when I come to it.",
                                    std::nullopt});
+    // A place and no verb: "the table first".
+    if (named) {
+      std::string place = distinct_noun_for(in_.world, named->objects.front());
+      return unusable(in_, Problem{"What should I do with the things " +
+                                       std::string(relation(named->objects.front()) == Relation::kOn ? "on " : "in ") +
+                                       place + "? For example: \"clear " + place + "\".",
+                                   std::nullopt});
+    }
     return unusable(in_, Problem{"I didn't catch what comes next in the task in \"" + join(in_.words, " ") + "\".",
                                  std::nullopt});
   }
@@ -202,6 +231,20 @@ class StructureReader {
           f.args[1] == place)
         return true;
     return false;
+  }
+
+  std::vector<ObjectId> holding_items(const std::vector<ObjectId>& places) const {
+    std::vector<ObjectId> holding;
+    for (ObjectId id : places)
+      if (holds_items(id)) holding.push_back(id);
+    return holding;
+  }
+
+  // The verb a subtask is named by: "do" after others were taught ("then
+  // do the counter") is the last one's.
+  std::string subtask_verb(const Clause& c) const {
+    if (c.verb == "do" && !in_.context.taught_subtasks.empty()) return in_.context.taught_subtasks.back();
+    return verb_name(c.verb, c.particle);
   }
 
   // The places a phrase names: one, or every place of one kind ("the bags").
@@ -257,30 +300,58 @@ class StructureReader {
     return std::nullopt;
   }
 
+  static bool has_place_pronoun(const Clause& c) {
+    auto there = [](const std::optional<Chunk>& chunk) { return chunk && chunk->place_pronoun; };
+    return there(c.subject) || there(c.object) ||
+           std::any_of(c.others.begin(), c.others.end(), [](const Chunk& o) { return o.place_pronoun; }) ||
+           std::any_of(c.phrases.begin(), c.phrases.end(), [](const PrepPhrase& p) { return p.noun.place_pronoun; });
+  }
+
+  // The places named last before clause `k`, for "there".
+  std::optional<Places> last_places(const std::vector<Clause>& clauses, std::size_t k) {
+    for (std::size_t at = k; at-- > 0;)
+      if (auto found = first_places({clauses[at]})) return found;
+    return std::nullopt;
+  }
+
   // "go through the dish rack and put everything away": the verb in one
   // clause, over everything, and the place in another.
   std::optional<Reply> across_clauses(const std::vector<Clause>& clauses) {
-    for (const Clause& c : clauses) {
-      if (c.verb.empty() || is_one_of(c.verb, {"be", "repeat", "keep", "continue", "go", "finish", "end", "stop", "do"}))
-        continue;
+    for (std::size_t k = 0; k < clauses.size(); ++k) {
+      const Clause& c = clauses[k];
+      if (names_no_subtask(c) || c.verb == "do") continue;
       if (c.verb_class() == VerbClass::kOpen || c.verb_class() == VerbClass::kClose) continue;
       if (c.object && specific(*c.object)) continue;
-      auto found = first_places(clauses);
+      // The place nearest the verb: its own clause ("store the things
+      // there": the place named just before), then the ones before it,
+      // then after.
+      std::optional<Places> found;
+      for (std::size_t d = 0; !found && !problem_ && !ambiguous_ && d < 2 * clauses.size(); ++d) {
+        std::size_t at = d <= k ? k - d : d;
+        if (d > k && at >= clauses.size()) break;
+        if (at == k && d > 0) continue;
+        found = first_places({clauses[at]});
+        if (!found && at == k && k > 0 && has_place_pronoun(c)) found = last_places(clauses, k);
+      }
       if (!found || problem_ || ambiguous_) return std::nullopt;
-      std::vector<ObjectId> holding;
-      for (ObjectId id : found->objects)
-        if (holds_items(id)) holding.push_back(id);
+      std::vector<ObjectId> holding = holding_items(found->objects);
       if (holding.empty()) return std::nullopt;
-      return SubtaskNamed{verb_name(c.verb, c.particle), relation(holding.front()), holding};
+      return SubtaskNamed{subtask_verb(c), relation(holding.front()), holding};
     }
     return std::nullopt;
   }
 
   // "clear the table", "store the things on the counter", "put the stuff on
   // the counter away", "the dishes in the dish rack need to be unloaded".
+  // Verbs that say when or how, not what: no subtask is named by them.
+  static bool names_no_subtask(const Clause& c) {
+    return c.verb.empty() || c.adjective() ||
+           is_one_of(c.verb, {"be", "repeat", "keep", "continue", "go", "finish", "end", "stop", "start", "begin",
+                              "move", "come", "think", "know", "want", "need", "let", "say", "mean", "see", "look"});
+  }
+
   std::optional<Reply> read_subtask(const Clause& c) {
-    if (c.verb.empty() || is_one_of(c.verb, {"be", "repeat", "keep", "continue", "go", "finish", "end", "stop"}))
-      return std::nullopt;
+    if (names_no_subtask(c)) return std::nullopt;
     if (c.verb_class() == VerbClass::kOpen || c.verb_class() == VerbClass::kClose) return std::nullopt;
     std::optional<Places> found;
     for (const std::optional<Chunk>* chunk : {&c.object, &c.subject})
@@ -314,14 +385,12 @@ class StructureReader {
     }
     if (!found && unresolved && !problem_) problem_ = unresolved;
     if (!found || problem_ || ambiguous_) return std::nullopt;
-    std::vector<ObjectId> holding;
-    for (ObjectId id : found->objects)
-      if (holds_items(id)) holding.push_back(id);
+    std::vector<ObjectId> holding = holding_items(found->objects);
     if (holding.empty()) {
       item_named_ = true;  // a place where things go, not where they are
       return std::nullopt;
     }
-    return SubtaskNamed{verb_name(c.verb, c.particle), relation(holding.front()), holding};
+    return SubtaskNamed{subtask_verb(c), relation(holding.front()), holding};
   }
 
   const ReplyInput& in_;
@@ -374,8 +443,9 @@ std::optional<std::pair<std::size_t, bool>> answer_prefix(const Words& words) {
 // Whether words only repeat an answer or thank: "exactly", "that's right", "thanks".
 bool only_confirms(Words words) {
   while (!words.empty()) {
-    if (words.front() == "," || is_one_of(words.front(), {"thanks", "thank", "you", "please", "ok", "so", "then", "place",
-                                                           "spot", "one", "answer", "guess", "idea", "choice"})) {
+    if (words.front() == "," ||
+        is_one_of(words.front(), {"thanks", "thank", "you", "please", "ok", "so", "then", "place", "spot", "one",
+                                  "answer", "guess", "idea", "choice", "sir", "maam", "boss", "mate", "buddy"})) {
       words.erase(words.begin());
       continue;
     }
@@ -389,28 +459,52 @@ bool only_confirms(Words words) {
 }  // namespace
 
 Reply read_task(const ReplyInput& in) {
-  Words words;
-  for (std::string& w : without_fillers(in.words, in.vocabulary))
-    if (w != ",") words.push_back(std::move(w));
-  words = after_frame(words);
+  // The piece that says what to do ("The kitchen is a mess, please tidy
+  // it." has two), without its frame.
+  std::vector<Words> said;
+  for (const Words& piece : pieces(without_fillers(in.words, in.vocabulary))) said.push_back(after_frame(piece));
   std::string verb;
-  if (!words.empty() && !is_determiner(words.front()) && !is_object_pronoun(words.front()) &&
-      verb_like(words.front(), in, verb)) {
-  } else if (auto named = gerund_task(words, in)) {
-    return *named;
-  } else {
+  const Words* words = nullptr;
+  for (const Words& piece : said)
+    if (!piece.empty() && !is_determiner(piece.front()) && !is_object_pronoun(piece.front()) &&
+        verb_like(piece.front(), in, verb)) {
+      words = &piece;
+      break;
+    }
+  if (!words) {
+    Words all;
+    for (const Words& piece : said) all.insert(all.end(), piece.begin(), piece.end());
+    if (auto named = gerund_task(all, in)) return *named;
     return unusable(in, Problem{"I need the name of a task, said as what to do, such as \"" +
                                     example_replies(in.world, in.context).front() + "\".",
                                 std::nullopt});
   }
   std::string particle;
   Words object;
-  for (std::size_t i = 1; i < words.size(); ++i) {
-    const std::string& w = words[i];
-    if (is_particle(w) && (i == 1 || i + 1 == words.size())) {
+  for (std::size_t i = 1; i < words->size(); ++i) {
+    const std::string& w = (*words)[i];
+    if (is_particle(w)) {
       if (w != "up" && particle.empty()) particle = w;  // "tidy up" is "tidy"
     } else if (!is_determiner(w)) {
       object.push_back(w);
+    }
+  }
+  // "a bit", "for me", "right now" say nothing about the task.
+  while (!object.empty() && is_one_of(object.back(), {"bit", "little", "quickly", "now", "today", "please", "me"}))
+    object.pop_back();
+  // "tidy it": what "it" is, from another piece ("the kitchen is a mess").
+  if (object.size() == 1 && is_object_pronoun(object.front())) {
+    for (const Words& piece : said) {
+      if (&piece == words) continue;
+      Words noun;
+      for (const std::string& w : piece) {
+        if (is_copula(w) || is_auxiliary(w)) break;
+        if (!is_determiner(w)) noun.push_back(w);
+      }
+      if (!noun.empty()) {
+        object = noun;
+        break;
+      }
     }
   }
   std::string name = verb_name(verb, particle);

@@ -205,6 +205,23 @@ TEST(ReplyPhrasalVerbs, AsSubtaskVerbsAndInSentences) {
   EXPECT_NE(std::get<Unusable>(away).reason.find("Where"), std::string::npos);
 }
 
+// --- The structure, after a first subtask -------------------------------------------------
+
+TEST(ReplyStructure, APlaceWithoutAVerbTakesTheLastSubtasksVerb) {
+  const World& kitchen = kitchen30().world;
+  ReplyContext step = asking(Asked::kTaskStep);
+  Reply bare = read_reply(grounder(), kitchen, step, "the counter next");
+  ASSERT_TRUE(std::holds_alternative<Unusable>(bare)) << format_reply(kitchen, bare);
+  EXPECT_EQ(std::get<Unusable>(bare).reason,
+            "What should I do with the things on the counter? For example: \"clear the counter\".");
+  step.taught_subtasks = {"clear"};
+  EXPECT_EQ(read(kitchen, step, "the counter next"), "subtask clear on counter1");
+  EXPECT_EQ(read(kitchen, step, "now do the same with the counter"), "subtask clear on counter1");
+  EXPECT_EQ(read(kitchen, step, "then do the dish rack"), "subtask clear in dish-rack1");
+  EXPECT_EQ(read(kitchen, step, "now unload the dish rack"), "subtask unload in dish-rack1");
+  EXPECT_EQ(read(kitchen, step, "that's all for the table"), "finished");
+}
+
 // --- References and reasons (issue 9) --------------------------------------------------
 
 TEST(ReplyReferences, PronounsPartialNamesAndDoors) {
