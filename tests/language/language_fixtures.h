@@ -1,5 +1,6 @@
-// Shared helpers for the language tests: the shipped 35-object kitchen, one
-// Grounder with WordNet for the whole binary, and the shared STARS data.
+// Helpers for the language tests: the shipped 35-object kitchen, one
+// Grounder with WordNet for the whole binary. Paths (the shared STARS data
+// too) and scenario loading come from tests/common.
 #pragma once
 
 #include <cstdlib>
@@ -11,33 +12,19 @@
 #include <gtest/gtest.h>
 #include <spdlog/spdlog.h>
 
+#include "common/paths.h"
+#include "common/scenarios.h"
 #include "language/grounding.h"
-#include "world/scenario.h"
 
 namespace apprentice::language::testing {
 
-inline std::filesystem::path source_path(std::string_view relative) {
-  return std::filesystem::path(APPRENTICE_SOURCE_DIR) / relative;
-}
+using apprentice::testing::shared_path;
+using apprentice::testing::source_path;
 
-inline std::filesystem::path shared_path(std::string_view relative) {
-  return std::filesystem::path(APPRENTICE_SHARED_DIR) / relative;
-}
-
-// A scenario of the repository; a failure to load aborts the binary, since
-// the tests that ask for one all need it.
-inline Scenario load_or_abort(std::string_view relative) {
-  auto loaded = load_scenario(source_path(relative));
-  if (!loaded) {
-    ADD_FAILURE() << loaded.error().describe();
-    std::abort();
-  }
-  return std::move(*loaded);
-}
-
-// The 35-object kitchen of the STARS ground truth, loaded once.
+// The scenario, loaded once; a failure to load aborts the binary, since
+// every test below needs it.
 inline const Scenario& kitchen35() {
-  static const Scenario scenario = load_or_abort("data/scenarios/tidy-kitchen-35.yaml");
+  static const Scenario scenario = apprentice::testing::shipped_scenario("tidy-kitchen-35");
   return scenario;
 }
 
@@ -45,7 +32,7 @@ inline const World& world35() { return kitchen35().world; }
 
 // The paper's 30-object kitchen, the world of `apprentice teach`.
 inline const Scenario& kitchen30() {
-  static const Scenario scenario = load_or_abort("data/scenarios/tidy-kitchen.yaml");
+  static const Scenario scenario = apprentice::testing::shipped_scenario("tidy-kitchen");
   return scenario;
 }
 
