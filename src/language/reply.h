@@ -50,6 +50,15 @@ struct ReplyContext {
   std::optional<ObjectId> recent_place;
   // kWhich: the things the agent offered.
   std::vector<ObjectId> choices;
+  // Phrases the teacher has already said which thing they mean, by
+  // answering a kWhich question about an `Ambiguous` reply: read_reply
+  // takes `phrase` (as Ambiguous::phrase gave it) to mean `object` when it
+  // reads that reply again, instead of finding it ambiguous again.
+  struct Settled {
+    std::string phrase;
+    ObjectId object = 0;
+  };
+  std::vector<Settled> settled;
 };
 
 // --- What a reply can mean --------------------------------------------------
