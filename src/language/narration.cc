@@ -384,7 +384,8 @@ std::string refusal(const World& world, const Action& action) {
   }
   Clause act = action_clause(world, action, false);
   if (!found) return "I cannot " + act.render(world) + ".";
-  return capitalize(reason.render(world)) + ", so I cannot " + act.render(world, reason.last_thing()) + ".";
+  // "it" stands for what the reason is about.
+  return capitalize(reason.render(world)) + ", so I cannot " + act.render(world, reason.first_thing()) + ".";
 }
 
 }  // namespace apprentice::language
