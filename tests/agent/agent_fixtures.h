@@ -58,6 +58,12 @@ class RecordingInstructor final : public Instructor {
   Instructor& inner_;
 };
 
+// The goals of tests/agent/data/two-objects.yaml in the script's words.
+inline constexpr const char* kKetchupGoal =
+    "If the object is a ketchup then the goal is that the object is in the fridge and the fridge is closed.";
+inline constexpr const char* kPaperPlateGoal =
+    "If the object is a paper-plate then the goal is that the object is in the garbage.";
+
 // An instructor whose replies come from a function of the question (what
 // a program or a person would answer); nullopt ends the session as end of
 // input does. `person` says whether the agent must never give up on it.

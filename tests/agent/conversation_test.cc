@@ -19,9 +19,8 @@ using testing::source_path;
 using ::testing::Contains;
 using ::testing::HasSubstr;
 
-const char* const kKetchupGoal =
-    "If the object is a ketchup then the goal is that the object is in the fridge and the fridge is closed.";
-const char* const kPaperPlateGoal = "If the object is a paper-plate then the goal is that the object is in the garbage.";
+using testing::kKetchupGoal;
+using testing::kPaperPlateGoal;
 const std::vector<std::string> kStructure = {"Tidy kitchen.", "Repeat the following tasks while an object is on the table.",
                                              "Clear an object that is on the table."};
 

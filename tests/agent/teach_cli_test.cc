@@ -20,9 +20,8 @@ using ::testing::EndsWith;
 using ::testing::HasSubstr;
 using ::testing::Not;
 
-const char* const kKetchupGoal =
-    "If the object is a ketchup then the goal is that the object is in the fridge and the fridge is closed.";
-const char* const kPaperPlateGoal = "If the object is a paper-plate then the goal is that the object is in the garbage.";
+using testing::kKetchupGoal;
+using testing::kPaperPlateGoal;
 const char* const kBanner =
     "Teaching in two-objects (inst+search4). Answer in your own words; type help at any question. Ctrl-D or quit "
     "stops and keeps what you taught.\n";
