@@ -164,7 +164,7 @@ void print_teach_summary(const Scenario& scenario, const State& state, bool fini
   if (assertions.empty()) out << ", after " << instructions_phrase << ".\n";
   else
     out << ": " << achieved << " of " << language::count_phrase(static_cast<long long>(assertions.size()), "goal assertion")
-        << " hold, after " << instructions_phrase << ".\n";
+        << (achieved == 1 ? " holds" : " hold") << ", after " << instructions_phrase << ".\n";
   World now = scenario.world;
   now.state = state;
   for (const Literal& l : assertions)

@@ -106,7 +106,7 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::learn_task_name() {
   if (const TaskKnowledge* known = agent_.knowledge_.find_task(name)) {
     progress_.task = *known;
     progress_.known_to_do.assign(known->subtasks.begin(), known->subtasks.end());
-    progress_.asked_about_task = true;
+    progress_.asked_about_task = !known->subtasks.empty();
     say("I know how to " + language::task_phrase(name) + "; I will ask only about what is new.");
     return {};
   }

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "agent_fixtures.h"
+#include "common/scratch.h"
 #include "knowledge/store.h"
 #include "util/text.h"
 
@@ -189,9 +190,8 @@ TEST_F(Conversation, UndoTwiceGoesBackTwoLessonsAndNothingToUndoIsSaid) {
 }
 
 TEST_F(Conversation, UndoRevertsTheStoreToo) {
-  std::filesystem::path path = std::filesystem::path(::testing::TempDir()) / "apprentice_undo_store.sqlite";
-  std::filesystem::remove(path);
-  auto store = KnowledgeStore::open(path);
+  testing::ScratchDir dir;
+  auto store = KnowledgeStore::open(dir / "knowledge.sqlite");
   ASSERT_TRUE(store.has_value()) << store.error().describe();
   std::vector<std::string> lines = with_structure({"If the object is a ketchup then the goal is that the object is in "
                                                    "the garbage.",
@@ -207,7 +207,6 @@ TEST_F(Conversation, UndoRevertsTheStoreToo) {
   // The structure taught before the undone goal is kept.
   ASSERT_EQ(loaded->tasks.size(), 1u);
   EXPECT_EQ(loaded->tasks[0].subtasks.size(), 1u);
-  std::filesystem::remove(path);
 }
 
 TEST_F(Conversation, SayingDoneAtAGoalQuestionLeavesTheObject) {

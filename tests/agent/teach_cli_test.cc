@@ -9,6 +9,7 @@
 
 #include "agent_fixtures.h"
 #include "knowledge/store.h"
+#include "common/scratch.h"
 #include "process.h"
 
 namespace apprentice {
@@ -44,16 +45,10 @@ std::string lines(const std::vector<std::string>& script) {
   return text;
 }
 
-class Teach : public ::testing::Test {
+// Each test has a fresh directory of its own (testing::ScratchTest::dir_),
+// so that runs in parallel never share a store.
+class Teach : public testing::ScratchTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::path(::testing::TempDir()) / "apprentice_teach_tests" / info->name();
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   std::vector<std::string> teach_args(const std::string& condition = "inst+search4") const {
     return {APPRENTICE_BINARY, "teach", "--scenario", scenario_.string(), "--knowledge", knowledge().string(),
             "--condition", condition};
@@ -72,7 +67,6 @@ class Teach : public ::testing::Test {
   }
 
   fs::path scenario_ = testing::source_path("tests/agent/data/two-objects.yaml");
-  fs::path dir_;
 };
 
 TEST_F(Teach, LearnsTheTaskFromAScriptOnStdinSayingWhatItUnderstoodAndDid) {
@@ -291,7 +285,7 @@ TEST_F(Teach, EndOfInputBeforeAnythingIsStillCleanAndNamesWhatIsNotDone) {
   // Only the fridge's door holds already (it starts closed).
   Process teach(teach_args());
   EXPECT_EQ(teach.wait(), 1);
-  EXPECT_THAT(teach.out(), EndsWith("Instructor: \nStopped: 1 of 3 goal assertions hold, after 0 instructions.\n"
+  EXPECT_THAT(teach.out(), EndsWith("Instructor: \nStopped: 1 of 3 goal assertions holds, after 0 instructions.\n"
                                     "Not done: the ketchup should be in the fridge.\n"
                                     "Not done: the paper plate should be in the garbage.\n" +
                                     kept()));

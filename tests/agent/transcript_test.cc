@@ -8,12 +8,11 @@
 #include <gtest/gtest.h>
 
 #include "agent_fixtures.h"
+#include "common/scratch.h"
 #include "pty.h"
 
 namespace apprentice {
 namespace {
-
-namespace fs = std::filesystem;
 
 std::string replaced(std::string text, const std::string& from, const std::string& to) {
   for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
@@ -90,9 +89,7 @@ What you taught me is kept in STORE.
 )";
 
 TEST(Transcript, MistakeHelpUndoCtrlCAndResumeAtATerminal) {
-  fs::path dir = fs::path(::testing::TempDir()) / "apprentice_transcript_test";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  testing::ScratchDir dir;
   const std::string store = (dir / "kitchen.sqlite").string();
   const std::vector<std::string> args = {APPRENTICE_BINARY, "teach", "--scenario",
                                          testing::source_path("tests/agent/data/two-objects.yaml").string(),
@@ -115,7 +112,6 @@ TEST(Transcript, MistakeHelpUndoCtrlCAndResumeAtATerminal) {
               &code);
   EXPECT_EQ(second, replaced(kResumedSession, "STORE", store));
   EXPECT_EQ(code, 0);
-  fs::remove_all(dir);
 }
 
 }  // namespace
