@@ -29,14 +29,10 @@ std::string step_text(const World& world, const Action& action) {
 
 TaskLearningAgent::Session::Flow<bool> TaskLearningAgent::Session::achieve(InProgress& work) {
   const Condition& condition = agent_.options_.condition;
-  const Goal& goal = work.goal;
   ObjectReport& report = work.report;
-  std::deque<Action> plan;
-  // A failed search is not repeated until some other source has changed
-  // the state.
-  std::optional<State> searched_in;
+  Attempt attempt;
   int actions = 0;
-  while (!goal.satisfied_by(world().state)) {
+  while (!work.goal.satisfied_by(world().state)) {
     // Past the bound, a program's run gives up on the object; a person is
     // asked instead, and only what the person says is done.
     const bool over_bound = actions >= agent_.options_.max_actions_per_object;
@@ -46,39 +42,10 @@ TaskLearningAgent::Session::Flow<bool> TaskLearningAgent::Session::achieve(InPro
     }
     std::optional<Action> next;
     std::string source;
-    if (!over_bound && !plan.empty()) {
-      next = plan.front();
-      plan.pop_front();
-      source = "search";
-    }
-    if (!over_bound && !next && agent_.options_.use_rules) {
-      MatchQuery query{&world().state, &goal, work.object, current().verb};
-      if (auto proposal = agent_.knowledge_.rules.select(*world().domain, *world().universe, query)) {
-        next = proposal->action;
-        source = "rule";
-        ++report_.rule_actions;
-      }
-    }
-    if (!over_bound && !next && learning_ && condition.search_depth > 0 && searched_in != world().state) {
-      SearchOptions options;
-      options.max_depth = condition.search_depth;
-      PlanResult result = find_plan(*world().domain, *world().universe, world().state, goal, options);
-      ++report_.searches;
-      report_.search_nodes += result.statistics.nodes_expanded;
-      searched_in = world().state;
-      if (result.status == SearchStatus::kSolved && !result.plan.empty()) {
-        plan.assign(result.plan.begin() + 1, result.plan.end());
-        next = result.plan.front();
-        source = "search";
-      }
-    }
-    if (!over_bound && !next && learning_ && condition.llm) {
-      auto from_llm = action_from_llm(work);
-      if (!from_llm) return tl::unexpected(from_llm.error());
-      if (*from_llm) {
-        next = *from_llm;
-        source = "llm: " + advice_;
-      }
+    if (!over_bound) {
+      auto own = own_next_action(work, attempt, source);
+      if (!own) return tl::unexpected(own.error());
+      next = *own;
     }
     if (!next && learning_ && condition.instruction) {
       auto from_instructor = action_from_instructor(work);
@@ -90,12 +57,12 @@ TaskLearningAgent::Session::Flow<bool> TaskLearningAgent::Session::achieve(InPro
     if (!next) {
       report.note = "no way to reach the goal";
       if (!learning_)
-        report_.help_needed.push_back("how to make it so that " + language::goal_facts(world(), goal));
+        report_.help_needed.push_back("how to make it so that " + language::goal_facts(world(), work.goal));
       return false;
     }
     if (auto status = simulator_.execute(*next); !status) {
       // Advice that cannot be carried out; the plan, if any, is stale.
-      plan.clear();
+      attempt.plan.clear();
       say(language::refusal(world(), *next), Voice::kResponse);
       if (source.rfind("instructor", 0) != 0) ++actions;
       continue;
@@ -107,6 +74,45 @@ TaskLearningAgent::Session::Flow<bool> TaskLearningAgent::Session::achieve(InPro
     ++actions;
   }
   return true;
+}
+
+TaskLearningAgent::Session::Flow<std::optional<Action>> TaskLearningAgent::Session::own_next_action(
+    InProgress& work, Attempt& attempt, std::string& source) {
+  const Condition& condition = agent_.options_.condition;
+  if (!attempt.plan.empty()) {
+    Action next = attempt.plan.front();
+    attempt.plan.pop_front();
+    source = "search";
+    return next;
+  }
+  if (agent_.options_.use_rules) {
+    MatchQuery query{&world().state, &work.goal, work.object, current().verb};
+    if (auto proposal = agent_.knowledge_.rules.select(*world().domain, *world().universe, query)) {
+      source = "rule";
+      ++report_.rule_actions;
+      return std::optional<Action>(proposal->action);
+    }
+  }
+  if (learning_ && condition.search_depth > 0 && attempt.searched_in != world().state) {
+    SearchOptions options;
+    options.max_depth = condition.search_depth;
+    PlanResult result = find_plan(*world().domain, *world().universe, world().state, work.goal, options);
+    ++report_.searches;
+    report_.search_nodes += result.statistics.nodes_expanded;
+    attempt.searched_in = world().state;
+    if (result.status == SearchStatus::kSolved && !result.plan.empty()) {
+      attempt.plan.assign(result.plan.begin() + 1, result.plan.end());
+      source = "search";
+      return std::optional<Action>(result.plan.front());
+    }
+  }
+  if (learning_ && condition.llm) {
+    auto from_llm = action_from_llm(work);
+    if (!from_llm) return from_llm;
+    if (*from_llm) source = "llm: " + advice_;
+    return from_llm;
+  }
+  return std::optional<Action>();
 }
 
 TaskLearningAgent::Session::Flow<std::optional<Action>> TaskLearningAgent::Session::action_from_llm(InProgress& work) {

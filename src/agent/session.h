@@ -158,7 +158,16 @@ class TaskLearningAgent::Session {
   llm::TaskContext llm_context(ObjectId object) const;
 
   // Actions (agent_actions.cc).
+  // One attempt at a goal: the rest of a plan found by search, and the
+  // state search last failed in (not searched again until it changes).
+  struct Attempt {
+    std::deque<Action> plan;
+    std::optional<State> searched_in;
+  };
   Flow<bool> achieve(InProgress& work);
+  // The next action from the agent's own sources, in order: the plan being
+  // executed, learned rules, search to the condition's depth, the LLM.
+  Flow<std::optional<Action>> own_next_action(InProgress& work, Attempt& attempt, std::string& source);
   Flow<std::optional<Action>> action_from_llm(InProgress& work);
   Flow<std::optional<Action>> action_from_instructor(InProgress& work);
   Status learn_rules(const InProgress& work);
