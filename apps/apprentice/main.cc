@@ -97,8 +97,16 @@ int run(int argc, char** argv) {
   interpret_cmd->add_option("--subtask", interpret_subtask, "The subtask (a category --object is taken at its place)");
   interpret_cmd->add_option("--corpus", interpret_corpus, "A JSONL corpus of LLM goal statements to ground");
   interpret_cmd->add_flag("--json", interpret.json, "Machine-readable output");
+  std::string interpret_asked, interpret_recent;
+  interpret_cmd->add_option("--asked", interpret_asked,
+                            "Read the sentence as a reply to a question: task, task-step, subtask-end, goal, action, "
+                            "yes-no or which");
+  interpret_cmd->add_option("--recent", interpret_recent, "With --asked: the place named last (an id)");
+  interpret_cmd->add_option("--choices", interpret.choices, "With --asked which: the ids offered")->delimiter(',');
   interpret_cmd->add_option("sentence", interpret_sentence, "The sentence to interpret");
   interpret_cmd->callback([&] {
+    if (!interpret_asked.empty()) interpret.asked = interpret_asked;
+    if (!interpret_recent.empty()) interpret.recent = interpret_recent;
     if (!interpret_sentence.empty()) interpret.sentence = interpret_sentence;
     if (!interpret_object.empty()) interpret.object = interpret_object;
     if (!interpret_subtask.empty()) interpret.subtask = interpret_subtask;

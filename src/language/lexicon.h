@@ -70,6 +70,13 @@ class Lexicon {
   // without WordNet.
   bool knows(std::string_view word) const;
 
+  // Verb base forms of an inflected word ("tidying" -> {"tidy"}, "threw"
+  // -> {"throw"}); {} for a base form, an unknown word, or without WordNet.
+  std::vector<std::string> verb_lemmas(std::string_view word) const;
+  // Whether WordNet has the word (a base form) as a verb / as a noun.
+  bool has_verb(std::string_view word) const;
+  bool has_noun(std::string_view word) const;
+
  private:
   std::vector<Synset> synsets(std::string_view phrase) const;
   bool is_container(const Synset& synset) const;

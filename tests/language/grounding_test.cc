@@ -58,7 +58,7 @@ TEST(Grounding, Affordances) {
 TEST(Grounding, FailuresCarryASentenceToSay) {
   Interpretation in = grounder().interpret("Close the recycling bin.", world35(), std::nullopt);
   ASSERT_NE(in.failure(), nullptr);
-  EXPECT_EQ(in.failure()->message, "The recycling bin has no door to close.");
+  EXPECT_EQ(in.failure()->message, "The recycling bin has no lid, so it can't be closed.");
   in = grounder().interpret("the goal is that the sink is full of water", world35(), std::nullopt);
   ASSERT_NE(in.failure(), nullptr);
   EXPECT_EQ(in.failure()->kind, FailureKind::kUnknownPredicate);
