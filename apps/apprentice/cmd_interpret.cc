@@ -8,6 +8,7 @@
 #include "language/generation.h"
 #include "language/grounding.h"
 #include "language/reply.h"
+#include "util/json.h"
 #include "util/text.h"
 #include "world/scenario.h"
 
@@ -64,7 +65,7 @@ void print_json(const World& world, std::string_view sentence, const Interpretat
                     {"method", std::string(language::to_string(r.method))},
                     {"reason", r.reason}});
   j["references"] = refs;
-  out << j.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << "\n";
+  out << dump_json(j) << "\n";
 }
 
 // --asked: the sentence as a teacher's reply.
@@ -116,7 +117,7 @@ CommandResult run_reply(const Scenario& scenario, const language::Grounder& grou
     if (!reason.empty()) j["reason"] = reason;
     if (!question.empty()) j["question"] = question;
     if (!examples.empty()) j["examples"] = examples;
-    out << j.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << "\n";
+    out << dump_json(j) << "\n";
   } else {
     out << "reply: " << *options.sentence << "\nasked: " << *options.asked << "\nmeaning: " << meaning << "\n";
     if (!reason.empty()) out << "reason: " << reason << "\n";

@@ -50,15 +50,14 @@ struct ReplyContext {
   std::optional<ObjectId> recent_place;
   // kWhich: the things the agent offered.
   std::vector<ObjectId> choices;
-  // Phrases the teacher has already said which thing they mean, by
-  // answering a kWhich question about an `Ambiguous` reply: read_reply
-  // takes `phrase` (as Ambiguous::phrase gave it) to mean `object` when it
-  // reads that reply again, instead of finding it ambiguous again.
+  // Phrases the teacher has already settled: after `Ambiguous{"mug", ...}`
+  // and the answer to "Which do you mean ...?", read the same reply again
+  // with {"mug", mug2} here and "mug" means mug2.
   struct Settled {
-    std::string phrase;
+    std::string phrase;  // Ambiguous::phrase
     ObjectId object = 0;
   };
-  std::vector<Settled> settled;
+  std::vector<Settled> settled = {};
   // The verbs of the subtasks taught so far, in order ("clear", "store"):
   // what "do the same with the counter" and "the counter next" do. Empty
   // when unknown; such replies then get a question back.

@@ -94,6 +94,8 @@ const std::vector<std::vector<std::string_view>>& frames() {
     {"when", "you", "are", "done"}, {"once", "you", "are", "done"}, {"when", "done"},
     {"start", "by"}, {"begin", "by"}, {"first", "of", "all"}, {"as", "well"}, {"like", "i", "said"},
     {"as", "i", "said"}, {"i", "said"}, {"i", "told", "you"}, {"i", "mean"}, {"i", "meant"},
+    {"the", "goal", "is", "that"}, {"the", "goal", "is", "for"}, {"the", "goal", "is", "to"},
+    {"the", "goal", "is"}, {"your", "goal", "is", "to"},
   };
   return kFrames;
 }

@@ -50,6 +50,8 @@ std::variant<std::vector<ObjectId>, Problem> Resolver::candidates(const Chunk& c
     return Problem{"I don't know which place you mean; please name it.", std::nullopt};
   };
   if (chunk.place_pronoun) return place_named();
+  for (const ReplyContext::Settled& settled : in_.context.settled)
+    if (!chunk.empty() && settled.phrase == chunk.text()) return std::vector<ObjectId>{settled.object};
   bool the_object = chunk.words.size() == 1 && is_one_of_object_words(chunk.words[0]) &&
                     (chunk.determiner == "the" || chunk.determiner == "this" || chunk.determiner == "that");
   if (chunk.pronoun || the_object) {

@@ -21,20 +21,10 @@ namespace apprentice::language::testing {
 using apprentice::testing::shared_path;
 using apprentice::testing::source_path;
 
-// A scenario of the repository; a failure to load aborts the binary, since
-// the tests that ask for one all need it.
-inline Scenario load_or_abort(std::string_view relative) {
-  auto loaded = load_scenario(source_path(relative));
-  if (!loaded) {
-    ADD_FAILURE() << loaded.error().describe();
-    std::abort();
-  }
-  return std::move(*loaded);
-}
-
-// The 35-object kitchen of the STARS ground truth, loaded once.
+// The scenario, loaded once; a failure to load aborts the binary, since
+// every test below needs it.
 inline const Scenario& kitchen35() {
-  static const Scenario scenario = load_or_abort("data/scenarios/tidy-kitchen-35.yaml");
+  static const Scenario scenario = apprentice::testing::shipped_scenario("tidy-kitchen-35");
   return scenario;
 }
 
@@ -42,7 +32,7 @@ inline const World& world35() { return kitchen35().world; }
 
 // The paper's 30-object kitchen, the world of `apprentice teach`.
 inline const Scenario& kitchen30() {
-  static const Scenario scenario = load_or_abort("data/scenarios/tidy-kitchen.yaml");
+  static const Scenario scenario = apprentice::testing::shipped_scenario("tidy-kitchen");
   return scenario;
 }
 

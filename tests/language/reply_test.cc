@@ -1,8 +1,7 @@
 // read_reply beyond the kitchen's corpus: look-alikes told apart by
 // properties, a kind of place that names every place of it, names with
 // function words, phrasal verbs, the reasons and examples of unusable
-// replies, and that the reader is total. The office world below is built
-// here, with properties set in code, until scenario files carry them.
+// replies, and that the reader is total, in an office world of its own.
 #include <algorithm>
 #include <string>
 
@@ -27,13 +26,13 @@ location: office
 places:
   - {category: desk, kind: surface}
   - {category: counter, kind: surface}
-  - {category: drawer, kind: receptacle, door: closed}
-  - {category: drawer, kind: receptacle, door: closed}
+  - {category: drawer, kind: receptacle, door: closed, properties: [top]}
+  - {category: drawer, kind: receptacle, door: closed, properties: [bottom]}
   - {category: bookshelf, kind: receptacle}
   - {category: walk-in-pantry, kind: receptacle, door: closed}
-  - {category: bag, kind: receptacle}
-  - {category: bag, kind: receptacle}
-  - {category: bag, kind: receptacle}
+  - {category: bag, kind: receptacle, properties: [blue]}
+  - {category: bag, kind: receptacle, properties: [red]}
+  - {category: bag, kind: receptacle, properties: [green]}
   - {category: garbage, kind: receptacle}
   - {category: toy-box, kind: receptacle}
 objects:
@@ -64,18 +63,7 @@ const World& office() {
       ADD_FAILURE() << loaded.error().describe();
       std::abort();
     }
-    World w = loaded->world;
-    auto universe = std::make_shared<Universe>();
-    for (ObjectInfo info : w.universe->objects()) {
-      if (info.id == "drawer1") info.properties = {"top"};
-      if (info.id == "drawer2") info.properties = {"bottom"};
-      if (info.id == "bag1") info.properties = {"blue"};
-      if (info.id == "bag2") info.properties = {"red"};
-      if (info.id == "bag3") info.properties = {"green"};
-      universe->add(std::move(info));
-    }
-    w.universe = universe;
-    return w;
+    return loaded->world;
   }();
   return world;
 }
@@ -130,6 +118,11 @@ TEST(ReplyProperties, StillAmbiguousAsksWhich) {
   EXPECT_EQ(read(office(), which, "drawer1"), "chosen drawer1");
   // A property nothing here has is not a guess.
   EXPECT_EQ(read(office(), which, "the left one"), "unusable");
+  // The reply read again with the answer.
+  ReplyContext again = asking(Asked::kGoal, in(office(), "stapler1"));
+  again.settled = {{ambiguous->phrase, in(office(), "drawer2")}};
+  EXPECT_EQ(read(office(), again, "in the drawer"), "goal (in stapler1 drawer2)");
+  EXPECT_EQ(read(office(), again, "the goal is that the stapler is in the drawer"), "goal (in stapler1 drawer2)");
   // "left" is no drawer's property: the question again, not either drawer.
   EXPECT_EQ(office_goal("stapler1", "put it in the left drawer"), "ambiguous left drawer: drawer1 drawer2");
 }
