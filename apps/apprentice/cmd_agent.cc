@@ -6,8 +6,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "agent/explanation.h"
 #include "experiment/experiment.h"
 #include "instructor/terminal_instructor.h"
+#include "language/narration.h"
 #include "llm/factory.h"
 #include "util/json.h"
 #include "util/log.h"
@@ -170,6 +172,33 @@ CommandResult run_experiment(const ExperimentOptions& options, const std::string
   return Outcome::kSuccess;
 }
 
+namespace {
+
+// The end of a teaching session, in English: how much of the scenario's
+// intent holds (where it has one), which assertions do not, and where the
+// knowledge is, or that nothing was kept.
+void print_teach_summary(const Scenario& scenario, const State& state, bool finished, int instructions,
+                         const KnowledgeStore* store, std::ostream& out) {
+  std::vector<Literal> assertions = scenario.goal_assertions();
+  int achieved = count_achieved_assertions(scenario, state);
+  std::string instructions_phrase = language::count_phrase(instructions, "instruction");
+  out << (finished ? "The task is learned" : "Stopped");
+  if (assertions.empty()) out << ", after " << instructions_phrase << ".\n";
+  else
+    out << ": " << achieved << " of " << language::count_phrase(static_cast<long long>(assertions.size()), "goal assertion")
+        << (achieved == 1 ? " holds" : " hold") << ", after " << instructions_phrase << ".\n";
+  World now = scenario.world;
+  now.state = state;
+  for (const Literal& l : assertions)
+    if (!state.satisfies(l)) out << "Not done: " << language::expected_fact(now, l) << ".\n";
+  if (store) out << "What you taught me is kept in " << store->path().string() << ".\n";
+  else
+    out << "Nothing was saved. To keep what you teach, give a knowledge store: teach --scenario " << scenario.source.string()
+        << " --knowledge FILE (for example kitchen.sqlite).\n";
+}
+
+}  // namespace
+
 CommandResult run_teach(const TeachOptions& options, const std::string& program, std::FILE* in, std::ostream& out) {
   (void)program;
   auto scenario = load_scenario(options.scenario);
@@ -205,21 +234,27 @@ CommandResult run_teach(const TeachOptions& options, const std::string& program,
   TaskLearningAgent agent(agent_options, std::move(knowledge), Understanding(), store ? &*store : nullptr,
                           advisor.get());
   Simulator simulator(scenario->world);
-  TerminalInstructor instructor(in, out);
+  TerminalInstructor instructor(in, out, TerminalOptions{options.quiet, true});
   Dialogue dialogue(instructor);
-  out << "Teaching in " << scenario->name << " (" << condition->name
-      << "). Type 'status' to see the world, Ctrl-D to stop.\n";
+  if (!options.quiet)
+    out << "Teaching in " << scenario->name << " (" << condition->name
+        << "). Answer in your own words; type help at any question. Ctrl-D or quit stops and keeps what you "
+           "taught.\n";
   auto report = agent.learn(simulator, dialogue);
   if (!report && report.error().code != ErrorCode::kCancelled) return tl::unexpected(report.error());
-  out << (report ? "The task is learned." : "Stopped.");
-  // Without an intent the teacher is the only authority: no completion.
+  if (instructor.interrupted()) {
+    out << "Interrupted. "
+        << (store ? "What you taught me is kept in " + store->path().string() + "."
+                  : std::string("Nothing was saved (no --knowledge)."))
+        << "\n";
+    out.flush();
+    return Outcome::kInterrupted;
+  }
+  print_teach_summary(*scenario, simulator.state(), report.has_value(), dialogue.counts().instructions,
+                      store ? &*store : nullptr, out);
   int achieved = count_achieved_assertions(*scenario, simulator.state());
   int total = static_cast<int>(scenario->goal_assertions().size());
-  if (scenario->has_intent) out << " " << achieved << " of " << total << " goal assertions hold;";
-  out << " " << dialogue.counts().instructions << " instructions.";
-  if (store) out << " Knowledge is in " << store->path().string() << ".";
-  out << "\n";
-  if (!scenario->has_intent) return report ? Outcome::kSuccess : Outcome::kGoalNotReached;
+  if (!scenario->has_intent || total == 0) return report ? Outcome::kSuccess : Outcome::kGoalNotReached;
   return achieved == total ? Outcome::kSuccess : Outcome::kGoalNotReached;
 }
 
@@ -254,9 +289,10 @@ CommandResult run_run(const RunOptions& options, std::ostream& out) {
     out << dump_json(j, 2) << "\n";
   } else {
     out << "Performed with learned knowledge alone: ";
-    if (measured) out << achieved << " of " << total << " goal assertions (" << completion << "%), ";
-    out << report->actions_executed << " actions, 0 instructions, " << report->search_nodes
-        << " search nodes, 0 LLM calls.\n";
+    if (measured)
+      out << achieved << " of " << language::count_phrase(total, "goal assertion") << " (" << completion << "%), ";
+    out << language::count_phrase(report->actions_executed, "action") << ", 0 instructions, "
+        << language::count_phrase(static_cast<long long>(report->search_nodes), "search node") << ", 0 LLM calls.\n";
     if (report->help_needed.empty()) out << "No help was needed.\n";
     for (const std::string& help : report->help_needed) out << "Would need help: " << help << "\n";
   }
@@ -288,17 +324,33 @@ CommandResult run_knowledge(const KnowledgeOptions& options, const std::string& 
     out << dump_json(nlohmann::json{{"tasks", tasks}, {"goals", goals}, {"rules", rules}}, 2) << "\n";
     return Outcome::kSuccess;
   }
-  for (const TaskKnowledge& t : knowledge->tasks) {
-    out << "Task " << t.name << ":\n";
-    for (const LearnedSubtask& s : t.subtasks)
-      out << "  while an object is " << s.relation << " the " << s.place_category << ", " << s.verb << " it\n";
+  if (options.pddl) {
+    for (const TaskKnowledge& t : knowledge->tasks) {
+      out << "Task " << t.name << ":\n";
+      for (const LearnedSubtask& s : t.subtasks)
+        out << "  while an object is " << s.relation << " the " << s.place_category << ", " << s.verb << " it\n";
+    }
+    out << "\n" << knowledge->goals.size() << " goals:\n";
+    for (const GoalKnowledge& g : knowledge->goals.all())
+      out << format_goal_knowledge(g) << "  (learned on " << g.provenance.object << " from " << g.provenance.source << ")\n\n";
+    out << knowledge->rules.size() << " rules:\n";
+    for (const Rule& r : knowledge->rules.rules())
+      out << format_rule(*domain, r) << "  (learned on " << r.provenance.object << " from " << r.provenance.source << ")\n\n";
+    return Outcome::kSuccess;
   }
-  out << "\n" << knowledge->goals.size() << " goals:\n";
+  if (knowledge->tasks.empty() && knowledge->goals.size() == 0 && knowledge->rules.size() == 0) {
+    out << "Nothing has been learned yet.\n";
+    return Outcome::kSuccess;
+  }
+  out << language::capitalize(language::count_phrase(static_cast<long long>(knowledge->tasks.size()), "task")) << ":\n";
+  for (const TaskKnowledge& t : knowledge->tasks) out << "  " << explain_task(t) << "\n";
+  out << "\n" << language::capitalize(language::count_phrase(static_cast<long long>(knowledge->goals.size()), "goal")) << ":\n";
   for (const GoalKnowledge& g : knowledge->goals.all())
-    out << format_goal_knowledge(g) << "  (learned on " << g.provenance.object << " from " << g.provenance.source << ")\n\n";
-  out << knowledge->rules.size() << " rules:\n";
+    out << "  " << explain_goal(g) << "\n    (" << explain_provenance(g.provenance) << ")\n";
+  out << "\n" << language::capitalize(language::count_phrase(static_cast<long long>(knowledge->rules.size()), "rule")) << ":\n";
+  int number = 0;
   for (const Rule& r : knowledge->rules.rules())
-    out << format_rule(*domain, r) << "  (learned on " << r.provenance.object << " from " << r.provenance.source << ")\n\n";
+    out << "  " << ++number << ". " << explain_rule(*domain, r) << "\n     (" << explain_provenance(r.provenance) << ")\n";
   return Outcome::kSuccess;
 }
 

@@ -37,6 +37,7 @@ struct TeachOptions {
   std::string knowledge;  // empty: nothing kept
   std::string condition = "inst+search4";
   std::string generalization = "full";
+  bool quiet = false;  // only the questions and the summary
   LlmFlags llm;
 };
 CommandResult run_teach(const TeachOptions& options, const std::string& program, std::FILE* in, std::ostream& out);
@@ -53,6 +54,7 @@ struct KnowledgeOptions {
   std::string knowledge;
   std::string domain;  // empty: the shipped kitchen domain
   bool json = false;
+  bool pddl = false;  // goals and rules in PDDL terms, not English
 };
 CommandResult run_knowledge(const KnowledgeOptions& options, const std::string& program, std::ostream& out);
 

@@ -38,6 +38,7 @@ int finish(const CommandResult& result) {
     std::cerr << "apprentice: " << result.error().describe() << "\n";
     return exit_code_for(result.error());
   }
+  if (*result == Outcome::kInterrupted) return 130;
   return *result == Outcome::kSuccess ? 0 : 1;
 }
 
@@ -139,6 +140,7 @@ int run(int argc, char** argv) {
       ->capture_default_str();
   teach_cmd->add_option("--generalization", teach.generalization, "Rule generalization: full or paper")
       ->capture_default_str();
+  teach_cmd->add_flag("--quiet", teach.quiet, "Print only the agent's questions and the summary");
   add_llm_flags(teach_cmd, teach.llm);
   teach_cmd->callback([&] { result = run_teach(teach, program, stdin, std::cout); });
 
@@ -151,10 +153,11 @@ int run(int argc, char** argv) {
   run_cmd->callback([&] { result = run_run(run_options, std::cout); });
 
   KnowledgeOptions knowledge;
-  auto* knowledge_cmd = app.add_subcommand("knowledge", "Print learned goals and rules, with where each came from");
+  auto* knowledge_cmd = app.add_subcommand("knowledge", "Print what was learned (tasks, goals, rules) in English, with where each came from");
   knowledge_cmd->add_option("--knowledge", knowledge.knowledge, "Knowledge store (SQLite)")->required();
   knowledge_cmd->add_option("--domain", knowledge.domain, "PDDL domain the rules use (default: the kitchen)");
   knowledge_cmd->add_flag("--json", knowledge.json, "Machine-readable output");
+  knowledge_cmd->add_flag("--pddl", knowledge.pddl, "Goals and rules in PDDL terms instead of English");
   knowledge_cmd->callback([&] { result = run_knowledge(knowledge, program, std::cout); });
 
   try {

@@ -34,9 +34,14 @@ struct AgentOptions {
   Generalization generalization = Generalization::kFull;
   // Consult learned policy rules before search and before asking.
   bool use_rules = true;
-  // Give up on an object after this many actions (a bad goal or bad advice).
+  // Give up on an object after this many actions (a bad goal or bad
+  // advice). With a person teaching, the agent asks the person instead of
+  // giving up, and only what the person says is done.
   int max_actions_per_object = 30;
-  // Re-ask at most this many times after a reply the agent cannot use.
+  // Re-ask an instructor that is not a person (Instructor::is_person) at
+  // most this many times after a reply the agent cannot use; the question
+  // then goes unanswered and the report says so. A person is asked again
+  // until they answer or end the session.
   int max_retries = 3;
 };
 
@@ -70,9 +75,11 @@ class TaskLearningAgent {
   TaskLearningAgent(AgentOptions options, Knowledge knowledge, Understanding understanding,
                     KnowledgeStore* store, LlmAdvisor* llm);
 
-  // Learns and performs the task the instructor teaches (Algorithm 1).
-  // Errors: kCancelled when the instructor leaves (what was learned is
-  // kept); kIo/kDataLoss if the store cannot be written.
+  // Learns and performs the task the instructor teaches (Algorithm 1),
+  // saying what it understood and what it did, and answering the
+  // teacher's commands (help, status, undo, forget, quit). Errors:
+  // kCancelled when the instructor leaves (end of input or "quit"; what was
+  // learned is kept); kIo/kDataLoss if the store cannot be written.
   Result<AgentReport> learn(Simulator& simulator, Dialogue& dialogue);
 
   // Performs a task it has learned, with learned knowledge alone: no

@@ -1,5 +1,7 @@
 #include "knowledge/goal_memory.h"
 
+#include <algorithm>
+
 namespace apprentice {
 
 Result<GoalKnowledge> generalize_goal(const World& world, const GoalKey& key, ObjectId object,
@@ -68,6 +70,13 @@ void GoalMemory::add(GoalKnowledge knowledge) {
     }
   }
   goals_.push_back(std::move(knowledge));
+}
+
+bool GoalMemory::remove(const GoalKey& key) {
+  auto it = std::find_if(goals_.begin(), goals_.end(), [&](const GoalKnowledge& g) { return g.key == key; });
+  if (it == goals_.end()) return false;
+  goals_.erase(it);
+  return true;
 }
 
 const GoalKnowledge* GoalMemory::find(const GoalKey& key) const {

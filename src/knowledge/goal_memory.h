@@ -66,6 +66,8 @@ class GoalMemory {
   // Replaces any goal already known for the same key.
   void add(GoalKnowledge knowledge);
   const GoalKnowledge* find(const GoalKey& key) const;
+  // Forgets the goal known for `key`; returns whether there was one.
+  bool remove(const GoalKey& key);
   const std::vector<GoalKnowledge>& all() const { return goals_; }
   std::size_t size() const { return goals_.size(); }
 

@@ -473,6 +473,38 @@ Status KnowledgeStore::save_task(const TaskKnowledge& task) {
   }
 }
 
+namespace {
+
+// Runs one DELETE with text parameters in its own transaction.
+Status delete_rows(SQLite::Database& db, const std::filesystem::path& path, const char* sql,
+                   const std::vector<std::string>& parameters) {
+  try {
+    SQLite::Transaction transaction(db);
+    SQLite::Statement remove(db, sql);
+    for (std::size_t i = 0; i < parameters.size(); ++i) remove.bind(static_cast<int>(i + 1), parameters[i]);
+    remove.exec();
+    transaction.commit();
+    return {};
+  } catch (const std::exception& e) {
+    return tl::unexpected(sqlite_error(path, e));
+  }
+}
+
+}  // namespace
+
+Status KnowledgeStore::remove_goal(const GoalKey& key) {
+  return delete_rows(*db_, path_, "DELETE FROM goals WHERE task = ? AND subtask = ? AND category = ? AND place = ?",
+                     {key.task, key.subtask, key.category, key.place});
+}
+
+Status KnowledgeStore::remove_rule(const Domain& domain, const Rule& rule) {
+  return delete_rows(*db_, path_, "DELETE FROM rules WHERE signature = ?", {rule_signature(domain, rule)});
+}
+
+Status KnowledgeStore::remove_task(const std::string& name) {
+  return delete_rows(*db_, path_, "DELETE FROM tasks WHERE name = ?", {name});
+}
+
 Result<Knowledge> KnowledgeStore::load(const Domain& domain) const {
   Knowledge knowledge;
   // Which entry is being read, for the message if it is damaged.

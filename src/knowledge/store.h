@@ -84,6 +84,12 @@ class KnowledgeStore {
   // Replaces the structure stored under the same task name.
   Status save_task(const TaskKnowledge& task);
 
+  // Forgetting, for the teacher's "undo" and "forget": each is durable once
+  // it returns, and removing what is not stored is not an error.
+  Status remove_goal(const GoalKey& key);
+  Status remove_rule(const Domain& domain, const Rule& rule);
+  Status remove_task(const std::string& name);
+
   // Reads everything back. Goals and rules name predicates and actions,
   // which must exist in `domain` with the arity stored (kFailedPrecondition
   // otherwise); an entry that is not what this version writes (a task

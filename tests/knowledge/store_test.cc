@@ -387,11 +387,17 @@ class StoreCli : public Store {
 };
 
 TEST_F(StoreCli, KnowledgePrintsWhatWasLearned) {
-  Invocation r = run_cli(dir_.path(), {"knowledge", "--knowledge", path_.string()});
+  Invocation r = run_cli(dir_.path(), {"knowledge", "--knowledge", path_.string(), "--pddl"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_THAT(r.out, HasSubstr("2 goals:"));
   EXPECT_THAT(r.out, HasSubstr("8 rules:"));
   EXPECT_THAT(r.out, HasSubstr("propose action open(?r) (4 steps to the goal)"));
+  // In English by default.
+  Invocation english = run_cli(dir_.path(), {"knowledge", "--knowledge", path_.string()});
+  ASSERT_EQ(english.exit_code, 0) << english.err;
+  EXPECT_THAT(english.out, HasSubstr("2 goals:"));
+  EXPECT_THAT(english.out, HasSubstr("8 rules:"));
+  EXPECT_THAT(english.out, HasSubstr(": open the receptacle (4 steps from the goal)."));
 }
 
 TEST_F(StoreCli, RefusedStoreExitsTwoNamingBothVersions) {
