@@ -119,7 +119,9 @@ json goal_literals_json(const GoalKnowledge& g) {
   for (const GoalTemplateLiteral& t : g.literals) {
     json args = json::array();
     for (const GoalTemplateArgument& a : t.arguments)
-      args.push_back(a.object_of_interest ? json{{"interest", true}} : json{{"category", a.category}});
+      args.push_back(a.object_of_interest ? json{{"interest", true}}
+                     : a.properties.empty() ? json{{"category", a.category}}
+                                            : json{{"category", a.category}, {"properties", a.properties}});
     out.push_back(json{{"predicate", t.predicate}, {"positive", t.positive}, {"args", args}});
   }
   return out;
@@ -130,8 +132,11 @@ std::vector<GoalTemplateLiteral> goal_literals_from_json(const json& j) {
   for (const json& t : j) {
     GoalTemplateLiteral literal{t.at("predicate").get<std::string>(), t.at("positive").get<bool>(), {}};
     for (const json& a : t.at("args")) {
-      if (a.contains("interest")) literal.arguments.push_back(GoalTemplateArgument{true, ""});
-      else literal.arguments.push_back(GoalTemplateArgument{false, a.at("category").get<std::string>()});
+      if (a.contains("interest")) literal.arguments.push_back(GoalTemplateArgument{true, "", {}});
+      else
+        literal.arguments.push_back(GoalTemplateArgument{
+            false, a.at("category").get<std::string>(),
+            a.contains("properties") ? a.at("properties").get<std::vector<std::string>>() : std::vector<std::string>{}});
     }
     out.push_back(std::move(literal));
   }
