@@ -179,7 +179,9 @@ json goal_literals_json(const GoalKnowledge& g) {
   for (const GoalTemplateLiteral& t : g.literals) {
     json args = json::array();
     for (const GoalTemplateArgument& a : t.arguments)
-      args.push_back(a.object_of_interest ? json{{"interest", true}} : json{{"category", a.category}});
+      args.push_back(a.object_of_interest ? json{{"interest", true}}
+                     : a.properties.empty() ? json{{"category", a.category}}
+                                            : json{{"category", a.category}, {"properties", a.properties}});
     out.push_back(json{{"predicate", t.predicate}, {"positive", t.positive}, {"args", args}});
   }
   return out;
@@ -202,9 +204,15 @@ Result<std::vector<GoalTemplateLiteral>> goal_literals_from_json(const Domain& d
     for (const json& a : args) {
       if (a.contains("interest")) {
         if (!flag_at(a, "interest")) throw BadEntry("a goal argument is neither the object nor a category");
-        literal.arguments.push_back(GoalTemplateArgument{true, ""});
+        literal.arguments.push_back(GoalTemplateArgument{true, "", {}});
       } else {
-        literal.arguments.push_back(GoalTemplateArgument{false, text_at(a, "category")});
+        std::vector<std::string> properties;
+        if (a.contains("properties"))
+          for (const json& p : list_at(a, "properties")) {
+            if (!p.is_string()) throw BadEntry("a goal argument's property is not a word");
+            properties.push_back(p.get<std::string>());
+          }
+        literal.arguments.push_back(GoalTemplateArgument{false, text_at(a, "category"), std::move(properties)});
       }
     }
     out.push_back(std::move(literal));

@@ -40,6 +40,9 @@ class Lexicon {
   static Lexicon open_default();
 
   bool has_wordnet() const { return wordnet_.has_value(); }
+  // The database itself, for callers that walk WordNet's hierarchy (the
+  // agent's analogies across worlds); null without WordNet.
+  const WordNet* wordnet() const { return wordnet_ ? &*wordnet_ : nullptr; }
 
   // Morphology: the phrase's noun base forms, by its last word
   // ("plastic bottles" -> {"plastic bottle"}); {} if none differ.

@@ -92,6 +92,21 @@ TEST_F(Store, RoundTripOfTasksGoalsAndRules) {
   expect_filled(*loaded);
 }
 
+// A goal naming one of two look-alike places keeps the properties that
+// tell it apart (the top drawer) through the store.
+TEST_F(Store, APlacesPropertiesSurviveTheStore) {
+  KnowledgeStore store = open_or_die(path_);
+  GoalKnowledge goal = plate_goal();
+  goal.key.category = "hammer";
+  goal.literals[0].arguments[1] = GoalTemplateArgument{false, "drawer", {"top"}};
+  ASSERT_TRUE(store.save_goal(goal));
+  auto loaded = store.load(domain_);
+  ASSERT_TRUE(loaded.has_value()) << loaded.error().describe();
+  ASSERT_EQ(loaded->goals.size(), 1u);
+  EXPECT_EQ(loaded->goals.all()[0], goal);
+  EXPECT_EQ(loaded->goals.all()[0].literals[0].arguments[1].properties, std::vector<std::string>{"top"});
+}
+
 TEST_F(Store, ANewStoreIsEmpty) {
   KnowledgeStore store = open_or_die(path_);
   auto loaded = store.load(domain_);
