@@ -5,6 +5,7 @@
 
 #include "agent/session.h"
 #include "language/generation.h"
+#include "search/greedy_best_first.h"
 #include "search/iterative_deepening.h"
 #include "util/log.h"
 #include "util/text.h"
@@ -58,10 +59,13 @@ Result<bool> TaskLearningAgent::Session::achieve(const Current& current, ObjectI
         ++report_.rule_actions;
       }
     }
-    if (!next && learning_ && condition.search_depth > 0 && searched_in != world().state) {
+    if (!next && learning_ && (condition.search_depth > 0 || condition.unbounded_search) &&
+        searched_in != world().state) {
       SearchOptions options;
       options.max_depth = condition.search_depth;
-      PlanResult result = find_plan(*world().domain, *world().universe, world().state, goal, options);
+      PlanResult result = condition.unbounded_search
+                              ? find_greedy_plan(*world().domain, *world().universe, world().state, goal, options)
+                              : find_plan(*world().domain, *world().universe, world().state, goal, options);
       ++report_.searches;
       report_.search_nodes += result.statistics.nodes_expanded;
       searched_in = world().state;
