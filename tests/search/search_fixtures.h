@@ -1,6 +1,6 @@
-// Shared helpers for the search tests: the kitchen domain, generated small
+// Helpers for the search tests: the kitchen domain, generated small
 // kitchens, and an independent breadth-first search that serves as the
-// reference for optimality.
+// reference for optimality. Paths and scenarios come from tests/common.
 #pragma once
 
 #include <cstdlib>
@@ -16,6 +16,8 @@
 
 #include <gtest/gtest.h>
 
+#include "common/paths.h"
+#include "common/scenarios.h"
 #include "search/iterative_deepening.h"
 #include "world/action.h"
 #include "world/pddl.h"
@@ -25,20 +27,7 @@
 
 namespace apprentice::testing {
 
-inline std::filesystem::path source_path(std::string_view relative) {
-  return std::filesystem::path(APPRENTICE_SOURCE_DIR) / relative;
-}
-
-inline Scenario load_or_die(const std::filesystem::path& path) {
-  auto scenario = load_scenario(path);
-  if (!scenario) {
-    ADD_FAILURE() << scenario.error().describe();
-    std::abort();
-  }
-  return std::move(*scenario);
-}
-
-inline Scenario tidy_kitchen() { return load_or_die(source_path("data/scenarios/tidy-kitchen.yaml")); }
+inline Scenario tidy_kitchen() { return shipped_scenario("tidy-kitchen"); }
 
 // A domain file of data/domains, read once.
 inline std::shared_ptr<const Domain> shipped_domain(const std::string& relative) {
