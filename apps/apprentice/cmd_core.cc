@@ -11,6 +11,7 @@
 
 #include "search/greedy_best_first.h"
 #include "search/iterative_deepening.h"
+#include "util/json.h"
 #include "world/pddl.h"
 #include "world/scenario.h"
 
@@ -59,11 +60,10 @@ CommandResult run_world(const WorldOptions& options, std::ostream& out) {
         places.push_back(j);
       }
     }
-    out << nlohmann::json{{"scenario", scenario->name}, {"location", world.location},
-                          {"hand", world.state.holds(Fact(v.handempty, std::initializer_list<ObjectId>{})) ? "empty" : "full"},
-                          {"places", places}, {"objects", items}}
-                 .dump(2)
-        << "\n";
+    const nlohmann::json document{{"scenario", scenario->name}, {"location", world.location},
+                                  {"hand", world.state.holds(Fact(v.handempty, std::initializer_list<ObjectId>{})) ? "empty" : "full"},
+                                  {"places", places}, {"objects", items}};
+    out << dump_json(document, 2) << "\n";
     return Outcome::kSuccess;
   }
   out << "Scenario " << scenario->name << ": the robot is in the " << world.location << ".\n";
@@ -126,7 +126,7 @@ CommandResult run_plan(const PlanOptions& options, std::ostream& out, std::ostre
     } else {
       j["depth_limit"] = s.depth_limit_reached;
     }
-    out << j.dump(2) << "\n";
+    out << dump_json(j, 2) << "\n";
   } else {
     for (const Action& a : result.plan) out << format_action(*world.domain, *world.universe, a) << "\n";
     out << ";; status " << to_string(result.status) << ", " << result.plan.size() << " steps, ";
