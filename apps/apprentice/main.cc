@@ -6,6 +6,8 @@
 //   3  local storage failed or holds unreadable data
 //   4  a needed service (the LLM server) is unavailable or timed out
 //   130 interrupted
+#include <unistd.h>
+
 #include <cstdio>
 #include <iostream>
 
@@ -61,19 +63,29 @@ int run(int argc, char** argv) {
   world_cmd->callback([&] { result = run_world(world, std::cout); });
 
   PlanOptions plan;
-  auto* plan_cmd = app.add_subcommand("plan", "Plan with iterative-deepening search from a scenario's state to a goal");
+  auto* plan_cmd = app.add_subcommand(
+      "plan", "Plan from a scenario's state to a goal: greedy best-first search, or iterative deepening with --depth");
   plan_cmd->add_option("--scenario", plan.scenario, "Scenario file (YAML)")->required();
-  plan_cmd->add_option("--goal", plan.goal, "Goal, e.g. '(and (in ketchup1 fridge1) (closed fridge1))'")->required();
-  plan_cmd->add_option("--depth", plan.depth, "Depth limit")->capture_default_str()->check(CLI::Range(0, 64));
-  plan_cmd->add_option("--max-nodes", plan.max_nodes, "Stop after expanding this many nodes")->check(CLI::PositiveNumber);
+  plan_cmd->add_option("--goal", plan.goal,
+                       "Goal, e.g. '(and (in ketchup1 fridge1) (closed fridge1))', or 'intent' for the whole task")
+      ->required();
+  plan_cmd->add_option("--depth", plan.depth, "Iterative deepening to this depth (a shortest plan)")
+      ->check(CLI::Range(0, 64));
+  plan_cmd->add_option("--node-limit,--max-nodes", plan.node_limit, "Stop after expanding this many nodes")
+      ->check(CLI::PositiveNumber);
+  plan_cmd->add_option("--time-limit", plan.time_limit_s, "Stop after this many seconds")
+      ->check(CLI::PositiveNumber);
   plan_cmd->add_flag("--no-pruning", plan.no_pruning, "Ground every object, not only those relevant to the goal");
   plan_cmd->add_flag("--json", plan.json, "Machine-readable output");
-  plan_cmd->callback([&] { result = run_plan(plan, std::cout); });
+  plan_cmd->callback([&] {
+    plan.progress = isatty(fileno(stderr)) != 0;
+    result = run_plan(plan, std::cout, std::cerr);
+  });
 
   ExportPddlOptions export_pddl;
   auto* export_cmd = app.add_subcommand("export-pddl", "Write the PDDL domain and a problem for a scenario and goal");
   export_cmd->add_option("--scenario", export_pddl.scenario, "Scenario file (YAML)")->required();
-  export_cmd->add_option("--goal", export_pddl.goal, "Goal, as for plan")->required();
+  export_cmd->add_option("--goal", export_pddl.goal, "Goal, as for plan ('intent' for the whole task)")->required();
   export_cmd->add_option("--out", export_pddl.out_dir, "Directory to write domain.pddl and problem.pddl into")->required();
   export_cmd->callback([&] { result = run_export_pddl(export_pddl, std::cout); });
 

@@ -6,6 +6,7 @@
 #include "agent/session.h"
 #include "language/generation.h"
 #include "language/narration.h"
+#include "search/greedy_best_first.h"
 #include "search/iterative_deepening.h"
 #include "util/log.h"
 #include "util/text.h"
@@ -93,10 +94,14 @@ TaskLearningAgent::Session::Flow<std::optional<Action>> TaskLearningAgent::Sessi
       return std::optional<Action>(proposal->action);
     }
   }
-  if (learning_ && condition.search_depth > 0 && attempt.searched_in != world().state) {
+  if (learning_ && (condition.search_depth > 0 || condition.unbounded_search) &&
+      attempt.searched_in != world().state) {
     SearchOptions options;
     options.max_depth = condition.search_depth;
-    PlanResult result = find_plan(*world().domain, *world().universe, world().state, work.goal, options);
+    PlanResult result =
+        condition.unbounded_search
+            ? find_greedy_plan(*world().domain, *world().universe, world().state, work.goal, options)
+            : find_plan(*world().domain, *world().universe, world().state, work.goal, options);
     ++report_.searches;
     report_.search_nodes += result.statistics.nodes_expanded;
     attempt.searched_in = world().state;

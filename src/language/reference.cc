@@ -46,13 +46,16 @@ std::optional<Candidates> by_name(const std::string& phrase, Role role, const Wo
   std::string key = category_key(phrase);
   if (auto objects = with_categories(universe, {key}, std::nullopt); !objects.empty())
     return Candidates{objects, method, reason.empty() ? "'" + phrase + "' is the category " + key : reason};
-  // The domain's own kinds ("receptacle", "surface", "item") name every
-  // object of that type.
-  if (auto type = domain.find_type(key); type && *type != kRootType) {
+  // The domain's own types ("item", "place") and the kinds of place
+  // ("receptacle", "surface", whose types are receptacle-place and
+  // surface-place) name every object of that type.
+  std::string type_key = key;
+  if (auto kind = parse_object_kind(key); kind && *kind != ObjectKind::kItem) type_key = type_name(*kind);
+  if (auto type = domain.find_type(type_key); type && *type != kRootType) {
     std::vector<ObjectId> objects;
     for (ObjectId id = 0; id < universe.size(); ++id)
       if (domain.is_subtype(universe.info(id).type, *type)) objects.push_back(id);
-    if (!objects.empty()) return Candidates{objects, method, "'" + phrase + "' is the type " + key};
+    if (!objects.empty()) return Candidates{objects, method, "'" + phrase + "' is the type " + type_key};
   }
   if (key.find('-') != std::string::npos || key.empty()) return std::nullopt;
   std::set<std::string> heads;

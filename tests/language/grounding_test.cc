@@ -36,6 +36,18 @@ TEST(Grounding, TheObjectOfInterestSettlesWhichOfSeveral) {
   EXPECT_EQ(meaning("Pick up the can."), "failure ungrounded-object can");
 }
 
+TEST(Grounding, TheKindsOfPlaceNameEveryPlaceOfThatKind) {
+  // The types are receptacle-place and surface-place; the words stay.
+  EXPECT_EQ(meaning("Open the receptacle.", id("fridge1")), "action (open fridge1)");
+  EXPECT_EQ(meaning("Open the receptacle."), "failure ungrounded-object receptacle");
+  EXPECT_EQ(meaning("Put the object on the surface.", id("ketchup1")), "failure ungrounded-object surface");
+  ReferenceContext context{world35(), grounder().lexicon(), id("counter1")};
+  Resolution r = resolve(NounPhrase{"the", {"surface"}}, Role::kPlace, context);
+  ASSERT_TRUE(std::holds_alternative<Reference>(r));
+  EXPECT_EQ(std::get<Reference>(r).object, id("counter1"));
+  EXPECT_EQ(std::get<Reference>(r).reason, "'surface' is the type surface-place");
+}
+
 TEST(Grounding, PickUpDependsOnWhereTheItemIs) {
   EXPECT_EQ(meaning("Pick up the paring-knife."), "action (pick-up-from paring-knife1 dish-rack1)");
   EXPECT_EQ(meaning("Pick up the corkscrew."), "action (pick-up corkscrew1 counter1)");
