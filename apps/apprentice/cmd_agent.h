@@ -27,6 +27,8 @@ struct ExperimentOptions {
   std::string knowledge_out;
   std::string generalization = "full";
   bool no_rules = false;
+  std::string plot;    // --plot FILE.svg|FILE.png: draw the results
+  bool quiet = false;  // no progress line
   LlmFlags llm;
 };
 CommandResult run_experiment(const ExperimentOptions& options, const std::string& program, std::ostream& out);
@@ -36,6 +38,7 @@ struct TeachOptions {
   std::string knowledge;  // empty: nothing kept
   std::string condition = "inst+search4";
   std::string generalization = "full";
+  bool quiet = false;  // no progress line
   LlmFlags llm;
 };
 CommandResult run_teach(const TeachOptions& options, const std::string& program, std::FILE* in, std::ostream& out);
