@@ -34,6 +34,8 @@ struct Knowledge {
   const TaskKnowledge* find_task(const std::string& name) const;
 };
 
+// Owns its SQLite connection; move-only. Use one KnowledgeStore per
+// thread.
 class KnowledgeStore {
  public:
   // Opens the store, creating an empty one if the file does not exist.
