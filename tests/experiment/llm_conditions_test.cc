@@ -116,7 +116,7 @@ TEST_F(SixConditionsCli, TheIssuesCommandRunsAllSix) {
   // As the issue has it, from the checkout, with the corpus beside it.
   SKIP_WITHOUT_CORPUS();
   const auto relative = std::filesystem::path("..") / "shared" / "data" / "stars-tidy-kitchen" / "goal_responses.jsonl";
-  if (!std::filesystem::exists(testing::source_path("") / relative)) GTEST_SKIP() << "../shared is elsewhere";
+  APPRENTICE_REQUIRE_SHARED(testing::source_path("") / relative);
   testing::Invocation run = testing::run_cli(
       {"experiment", "--scenario", "data/scenarios/tidy-kitchen-35.yaml", "--llm", "corpus:" + relative.string()},
       dir_);

@@ -34,8 +34,9 @@ std::vector<std::string> script_lines() {
 class InstructorScript : public ::testing::Test {
  protected:
   void SetUp() override {
+    APPRENTICE_REQUIRE_SHARED(shared_path("data/stars-tidy-kitchen/instructor_script.txt"));
     lines_ = script_lines();
-    if (lines_.empty()) GTEST_SKIP() << "shared data absent: instructor_script.txt";
+    ASSERT_FALSE(lines_.empty()) << "instructor_script.txt is empty";
   }
   std::vector<std::string> lines_;
 };

@@ -9,6 +9,8 @@
 #include "llm/factory.h"
 #include "llm/retrieval.h"
 
+#include "common/paths.h"
+
 namespace apprentice::llm {
 namespace {
 
@@ -134,7 +136,7 @@ TEST(CorpusClientTest, BadLinesNameTheLine) {
 }
 
 TEST(CorpusClientTest, RealStarsCorpus) {
-  if (!std::filesystem::exists(kStars)) GTEST_SKIP() << "shared data absent: " << kStars;
+  APPRENTICE_REQUIRE_SHARED(kStars);
   auto pooled = open_corpus(kStars);
   ASSERT_NE(pooled, nullptr);
   auto plate = pooled->ranked("ceramic-plate", "clear", "table");

@@ -9,6 +9,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "common/scratch.h"
+
 #include "world_fixtures.h"
 
 namespace apprentice {
@@ -309,19 +311,7 @@ TEST(ScenarioErrors, RelativeDomainResolvesAgainstTheScenarioDirectory) {
   EXPECT_THAT(bad.error().message, HasSubstr("/tmp/elsewhere/inline.yaml:2:"));
 }
 
-class ScenarioWithBadDomain : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = std::filesystem::path(::testing::TempDir()) / "apprentice_world_tests";
-    std::filesystem::create_directories(dir_);
-  }
-  std::filesystem::path write(const std::string& name, const std::string& text) {
-    std::filesystem::path path = dir_ / name;
-    std::ofstream(path) << text;
-    return path;
-  }
-  std::filesystem::path dir_;
-};
+class ScenarioWithBadDomain : public testing::ScratchTest {};
 
 TEST_F(ScenarioWithBadDomain, PddlSyntaxErrorNamesBothFiles) {
   std::filesystem::path domain = write("broken.pddl", "(define (domain kitchen)\n  (:requirements :fluents))\n");
