@@ -12,6 +12,7 @@
 #include "llm/factory.h"
 #include "plot.h"
 #include "progress.h"
+#include "util/json.h"
 #include "util/log.h"
 #include "world/pddl.h"
 
@@ -52,6 +53,13 @@ Status write_file(const std::filesystem::path& path, const std::string& text) {
   return {};
 }
 
+// The knowledge in a store, read once; the store is left as it was.
+Result<Knowledge> load_knowledge_copy(const std::filesystem::path& path, const Domain& domain) {
+  auto store = KnowledgeStore::open(path, StoreAccess::kReadOnly);
+  if (!store) return tl::unexpected(store.error());
+  return store->load(domain);
+}
+
 }  // namespace
 
 // Printed under the table: what its columns mean where that is not plain.
@@ -71,9 +79,15 @@ CommandResult run_experiment(const ExperimentOptions& options, const std::string
   (void)program;
   auto scenario = load_scenario(options.scenario);
   if (!scenario) return tl::unexpected(scenario.error());
+  if (auto s = check_runnable(*scenario); !s) return tl::unexpected(s.error());
   auto generalization = parse_generalization(options.generalization);
   if (!generalization) return tl::unexpected(generalization.error());
   ExperimentRequest request;
+  if (!options.knowledge_in.empty()) {
+    auto knowledge = load_knowledge_copy(options.knowledge_in, *scenario->world.domain);
+    if (!knowledge) return tl::unexpected(knowledge.error());
+    request.options.knowledge_in = std::move(*knowledge);
+  }
   request.conditions = options.conditions;
   request.llm_spec = llm::resolve_llm_spec(options.llm.spec);
   request.llm_options = llm_options(options.llm);
@@ -101,17 +115,23 @@ CommandResult run_experiment(const ExperimentOptions& options, const std::string
   if (options.json) {
     out << json << "\n";
   } else {
-    out << "Scenario " << scenario->name << " (" << scenario->goal_assertions().size() << " goal assertions)";
+    DialogueCounts floor = instruction_floor(*scenario);
+    out << "Scenario " << scenario->name << ": " << scenario->objects_to_tidy().size() << " objects to tidy, "
+        << scenario->goal_assertions().size() << " goal assertions; the floor (task structure and one goal per goal "
+        << "type) is " << floor.instructions << " instructions, " << floor.words << " words";
+    if (request.options.knowledge_in)
+      out << "; every condition starts from the knowledge in " << options.knowledge_in << " ("
+          << request.options.knowledge_in->goals.size() << " goals, " << request.options.knowledge_in->rules.size() << " rules)";
     for (const ConditionResult& r : results)
       if (!r.llm_description.empty()) {
         out << "; LLM answers from " << r.llm_description;
         break;
       }
-    out << "\n" << format_results_table(results) << "\n" << kTableLegend;
+    out << "\n" << format_results_table(results, scenario->reference == "table3") << "\n" << kTableLegend;
     if (!run->skipped.empty()) out << skipped_hint(run->skipped);
   }
   if (!options.plot.empty()) {
-    if (auto status = plot_results(json, options.plot, true); !status) return tl::unexpected(status.error());
+    if (auto status = plot_results(json, options.plot, scenario->reference == "table3"); !status) return tl::unexpected(status.error());
     if (!options.json && !options.quiet) out << "The figure is in " << options.plot << ".\n";
   }
   return Outcome::kSuccess;
@@ -161,22 +181,23 @@ CommandResult run_teach(const TeachOptions& options, const std::string& program,
   out << "Teaching in " << scenario->name << " (" << condition->name
       << "). Type 'status' to see the world, Ctrl-D to stop.\n";
   auto report = agent.learn(simulator, dialogue);
+  if (!report && report.error().code != ErrorCode::kCancelled) return tl::unexpected(report.error());
+  out << (report ? "The task is learned." : "Stopped.");
+  // Without an intent the teacher is the only authority: no completion.
   int achieved = count_achieved_assertions(*scenario, simulator.state());
   int total = static_cast<int>(scenario->goal_assertions().size());
-  if (!report && report.error().code != ErrorCode::kCancelled) return tl::unexpected(report.error());
-  out << (report ? "The task is learned." : "Stopped.") << " " << achieved << " of " << total
-      << " goal assertions hold; " << dialogue.counts().instructions << " instructions.";
+  if (scenario->has_intent) out << " " << achieved << " of " << total << " goal assertions hold;";
+  out << " " << dialogue.counts().instructions << " instructions.";
   if (store) out << " Knowledge is in " << store->path().string() << ".";
   out << "\n";
+  if (!scenario->has_intent) return report ? Outcome::kSuccess : Outcome::kGoalNotReached;
   return achieved == total ? Outcome::kSuccess : Outcome::kGoalNotReached;
 }
 
 CommandResult run_run(const RunOptions& options, std::ostream& out) {
   auto scenario = load_scenario(options.scenario);
   if (!scenario) return tl::unexpected(scenario.error());
-  if (!std::filesystem::exists(options.knowledge))
-    return make_error(ErrorCode::kNotFound, options.knowledge + ": no such knowledge store");
-  auto store = KnowledgeStore::open(options.knowledge);
+  auto store = KnowledgeStore::open(options.knowledge, StoreAccess::kReadOnly);
   if (!store) return tl::unexpected(store.error());
   auto knowledge = store->load(*scenario->world.domain);
   if (!knowledge) return tl::unexpected(knowledge.error());
@@ -189,21 +210,28 @@ CommandResult run_run(const RunOptions& options, std::ostream& out) {
   int achieved = count_achieved_assertions(*scenario, simulator.state());
   int total = static_cast<int>(scenario->goal_assertions().size());
   double completion = total == 0 ? 100.0 : 100.0 * achieved / total;
+  // Without an intent nothing says what the task should achieve: no completion.
+  const bool measured = scenario->has_intent;
   if (options.json) {
-    out << nlohmann::json{{"completion_rate", completion}, {"assertions_achieved", achieved},
-                          {"assertions_total", total}, {"instructions", 0}, {"search_nodes", report->search_nodes},
-                          {"llm_calls", 0}, {"actions", report->actions_executed},
-                          {"help_needed", report->help_needed}}
-                 .dump(2)
-        << "\n";
+    nlohmann::json j{{"instructions", 0}, {"search_nodes", report->search_nodes}, {"llm_calls", 0},
+                     {"actions", report->actions_executed}, {"help_needed", report->help_needed}};
+    if (measured) {
+      j["completion_rate"] = completion;
+      j["assertions_achieved"] = achieved;
+      j["assertions_total"] = total;
+      j["objects_done"] = count_objects_done(*scenario, simulator.state());
+      j["objects_total"] = scenario->objects_to_tidy().size();
+    }
+    out << dump_json(j, 2) << "\n";
   } else {
-    out << "Performed with learned knowledge alone: " << achieved << " of " << total << " goal assertions ("
-        << completion << "%), " << report->actions_executed << " actions, 0 instructions, "
-        << report->search_nodes << " search nodes, 0 LLM calls.\n";
+    out << "Performed with learned knowledge alone: ";
+    if (measured) out << achieved << " of " << total << " goal assertions (" << completion << "%), ";
+    out << report->actions_executed << " actions, 0 instructions, " << report->search_nodes
+        << " search nodes, 0 LLM calls.\n";
     if (report->help_needed.empty()) out << "No help was needed.\n";
     for (const std::string& help : report->help_needed) out << "Would need help: " << help << "\n";
   }
-  return achieved == total && report->help_needed.empty() ? Outcome::kSuccess : Outcome::kGoalNotReached;
+  return (!measured || achieved == total) && report->help_needed.empty() ? Outcome::kSuccess : Outcome::kGoalNotReached;
 }
 
 CommandResult run_knowledge(const KnowledgeOptions& options, const std::string& program, std::ostream& out) {
@@ -212,9 +240,7 @@ CommandResult run_knowledge(const KnowledgeOptions& options, const std::string& 
       options.domain.empty() ? data_dir() / "domains" / "kitchen.pddl" : std::filesystem::path(options.domain);
   auto domain = read_domain_file(domain_path);
   if (!domain) return tl::unexpected(domain.error());
-  if (!std::filesystem::exists(options.knowledge))
-    return make_error(ErrorCode::kNotFound, options.knowledge + ": no such knowledge store");
-  auto store = KnowledgeStore::open(options.knowledge);
+  auto store = KnowledgeStore::open(options.knowledge, StoreAccess::kReadOnly);
   if (!store) return tl::unexpected(store.error());
   auto knowledge = store->load(*domain);
   if (!knowledge) return tl::unexpected(knowledge.error());
@@ -230,7 +256,7 @@ CommandResult run_knowledge(const KnowledgeOptions& options, const std::string& 
       goals.push_back({{"text", format_goal_knowledge(g)}, {"object", g.provenance.object}, {"source", g.provenance.source}});
     for (const Rule& r : knowledge->rules.rules())
       rules.push_back({{"signature", rule_signature(*domain, r)}, {"object", r.provenance.object}, {"source", r.provenance.source}});
-    out << nlohmann::json{{"tasks", tasks}, {"goals", goals}, {"rules", rules}}.dump(2) << "\n";
+    out << dump_json(nlohmann::json{{"tasks", tasks}, {"goals", goals}, {"rules", rules}}, 2) << "\n";
     return Outcome::kSuccess;
   }
   for (const TaskKnowledge& t : knowledge->tasks) {

@@ -4,6 +4,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "util/json.h"
+
 #include "util/log.h"
 
 namespace apprentice {
@@ -81,6 +83,8 @@ std::string results_json(const std::vector<ConditionResult>& results) {
                                  {"completion_rate", r.completion_rate},
                                  {"assertions_achieved", r.assertions_achieved},
                                  {"assertions_total", r.assertions_total},
+                                 {"objects_done", r.objects_done},
+                                 {"objects_total", r.objects_total},
                                  {"instructions", r.counts.instructions},
                                  {"words", r.counts.words},
                                  {"yes_no", r.counts.yes_no},
@@ -89,7 +93,7 @@ std::string results_json(const std::vector<ConditionResult>& results) {
                                  {"llm_tokens", r.llm_tokens},
                                  {"search_nodes", r.search_nodes},
                                  {"wall_ms", r.wall_ms}});
-  return all.dump(2);
+  return dump_json(all, 2);
 }
 
 }  // namespace apprentice

@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <set>
 
 #include <nlohmann/json.hpp>
 
+#include "util/file.h"
 #include "util/text.h"
 
 namespace apprentice::llm {
@@ -35,13 +35,12 @@ std::vector<TokenLogprob> word_tokens(std::string_view text, double logprob) {
 
 Result<std::unique_ptr<CorpusClient>> CorpusClient::open(const std::filesystem::path& path,
                                                          std::string condition) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return make_error(ErrorCode::kNotFound, "cannot open the goal corpus " + path.string());
+  auto file = read_input_lines(path);  // within the input limits (util/file.h)
+  if (!file) return tl::unexpected(prefix_error(file.error(), "the goal corpus"));
   std::vector<Line> lines;
   std::set<std::string> conditions;
-  std::string text;
   size_t number = 0;
-  while (std::getline(in, text)) {
+  for (const std::string& text : *file) {
     ++number;
     if (trim(text).empty()) continue;
     const std::string where = path.string() + ":" + std::to_string(number);

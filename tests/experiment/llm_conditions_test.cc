@@ -121,7 +121,8 @@ TEST_F(SixConditionsCli, TheIssuesCommandRunsAllSix) {
       {"experiment", "--scenario", "data/scenarios/tidy-kitchen-35.yaml", "--llm", "corpus:" + relative.string()},
       dir_);
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  EXPECT_THAT(run.out, HasSubstr("Scenario tidy-kitchen-35 (40 goal assertions); LLM answers from corpus"));
+  EXPECT_THAT(run.out, HasSubstr("Scenario tidy-kitchen-35: 35 objects to tidy, 40 goal assertions;"));
+  EXPECT_THAT(run.out, HasSubstr("; LLM answers from corpus"));
   for (const std::string& name : paper_condition_names())
     EXPECT_THAT(run.out, HasSubstr("\n" + name + std::string(19 - name.size(), ' ') + "ours ")) << name;
 }
