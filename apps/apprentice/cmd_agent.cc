@@ -8,9 +8,12 @@
 
 #include "agent/explanation.h"
 #include "experiment/experiment.h"
+#include "experiment/runner.h"
 #include "instructor/terminal_instructor.h"
 #include "language/narration.h"
 #include "llm/factory.h"
+#include "plot.h"
+#include "progress.h"
 #include "util/json.h"
 #include "util/log.h"
 #include "world/pddl.h"
@@ -36,57 +39,12 @@ std::filesystem::path data_dir() {
   return APPRENTICE_DATA_DIR;
 }
 
-Result<Generalization> parse_generalization(const std::string& text) {
-  if (text == "full") return Generalization::kFull;
-  if (text == "paper") return Generalization::kPaper;
-  return make_error(ErrorCode::kInvalidInput, "--generalization must be full or paper, not " + text);
-}
-
-// With several conditions, each keeps its own cassette: record:FILE,SPEC and
-// replay:FILE use FILE's name with ".<condition>" before its extension, so
-// that every condition replays exactly what it recorded.
-std::string per_condition_spec(const std::string& spec, const std::string& condition) {
-  for (const char* scheme : {"record:", "replay:"}) {
-    std::string prefix = scheme;
-    if (spec.rfind(prefix, 0) != 0) continue;
-    std::string rest = spec.substr(prefix.size());
-    std::size_t comma = prefix == "record:" ? rest.find(',') : std::string::npos;
-    std::filesystem::path file = rest.substr(0, comma);
-    std::string tail = comma == std::string::npos ? "" : rest.substr(comma);
-    std::filesystem::path renamed =
-        file.parent_path() / (file.stem().string() + "." + condition + file.extension().string());
-    return prefix + renamed.string() + tail;
-  }
-  return spec;
-}
-
-std::optional<LlmFactory> llm_factory(const LlmFlags& flags, const std::string& condition = "") {
-  auto spec = llm::resolve_llm_spec(flags.spec);
-  if (!spec) return std::nullopt;
-  if (!condition.empty()) spec = per_condition_spec(*spec, condition);
+llm::LlmOptions llm_options(const LlmFlags& flags) {
   llm::LlmOptions options;
   options.model = flags.model;
   options.api_key = flags.api_key;
   if (flags.timeout_ms) options.request_timeout = std::chrono::milliseconds(*flags.timeout_ms);
-  std::string s = *spec;
-  return LlmFactory([s, options]() { return llm::make_llm_client(s, options); });
-}
-
-nlohmann::json result_json(const ConditionResult& r) {
-  return nlohmann::json{{"condition", r.condition},
-                        {"completion_rate", r.completion_rate},
-                        {"assertions_achieved", r.assertions_achieved},
-                        {"assertions_total", r.assertions_total},
-                        {"objects_done", r.objects_done},
-                        {"objects_total", r.objects_total},
-                        {"instructions", r.counts.instructions},
-                        {"words", r.counts.words},
-                        {"yes_no", r.counts.yes_no},
-                        {"relevance", r.relevance ? nlohmann::json(*r.relevance) : nlohmann::json(nullptr)},
-                        {"llm_calls", r.llm_calls},
-                        {"llm_tokens", r.llm_tokens},
-                        {"search_nodes", r.search_nodes},
-                        {"wall_ms", r.wall_ms}};
+  return options;
 }
 
 Status write_file(const std::filesystem::path& path, const std::string& text) {
@@ -106,6 +64,19 @@ Result<Knowledge> load_knowledge_copy(const std::filesystem::path& path, const D
 
 }  // namespace
 
+// Printed under the table: what its columns mean where that is not plain.
+const char* const kTableLegend =
+    "Relevant%: yes answers over yes/no questions; without an instructor (search4+llm), the share of the LLM's\n"
+    "goals adopted that were the intended ones. --: the condition asks the LLM nothing, as in the paper.\n";
+
+std::string skipped_hint(const std::vector<std::string>& skipped) {
+  std::string names;
+  for (const std::string& name : skipped) names += (names.empty() ? "" : ", ") + name;
+  return "Skipped for want of an LLM: " + names +
+         ".\nTo run them, pass --llm SPEC or set APPRENTICE_LLM: openai:http://127.0.0.1:8080/v1 for any "
+         "OpenAI-compatible\nserver, or corpus:FILE for recorded responses (see docs/llm.md).\n";
+}
+
 CommandResult run_experiment(const ExperimentOptions& options, const std::string& program, std::ostream& out) {
   (void)program;
   auto scenario = load_scenario(options.scenario);
@@ -113,61 +84,57 @@ CommandResult run_experiment(const ExperimentOptions& options, const std::string
   if (auto s = check_runnable(*scenario); !s) return tl::unexpected(s.error());
   auto generalization = parse_generalization(options.generalization);
   if (!generalization) return tl::unexpected(generalization.error());
-  apprentice::ExperimentOptions experiment;
+  ExperimentRequest request;
   if (!options.knowledge_in.empty()) {
     auto knowledge = load_knowledge_copy(options.knowledge_in, *scenario->world.domain);
     if (!knowledge) return tl::unexpected(knowledge.error());
-    experiment.knowledge_in = std::move(*knowledge);
+    request.options.knowledge_in = std::move(*knowledge);
   }
-  experiment.generalization = *generalization;
-  experiment.use_rules = !options.no_rules;
-  experiment.prompts_dir = data_dir() / "prompts";
-  if (auto factory = llm_factory(options.llm)) experiment.llm = *factory;
-  if (!options.knowledge_out.empty()) experiment.knowledge_out = options.knowledge_out;
-  std::vector<std::string> names = options.conditions;
-  if (names.empty()) {
-    for (const std::string& name : paper_condition_names()) {
-      auto condition = parse_condition(name);
-      if (condition && (!condition->llm || experiment.llm)) names.push_back(name);
-    }
-  }
-  std::vector<ConditionResult> results;
-  for (const std::string& name : names) {
-    auto condition = parse_condition(name);
-    if (!condition) return tl::unexpected(condition.error());
-    if (names.size() > 1) {
-      if (auto factory = llm_factory(options.llm, name)) experiment.llm = *factory;
-    }
-    spdlog::info("running condition {}", name);
-    auto result = run_condition(*scenario, *condition, experiment);
-    if (!result) return tl::unexpected(prefix_error(result.error(), "condition " + name));
-    if (!options.transcript_dir.empty()) {
+  request.conditions = options.conditions;
+  request.llm_spec = llm::resolve_llm_spec(options.llm.spec);
+  request.llm_options = llm_options(options.llm);
+  request.options.generalization = *generalization;
+  request.options.use_rules = !options.no_rules;
+  request.options.prompts_dir = data_dir() / "prompts";
+  if (!options.knowledge_out.empty()) request.options.knowledge_out = options.knowledge_out;
+  if (!options.transcript_dir.empty()) {
+    request.on_result = [&](const ConditionResult& result) -> Status {
       std::error_code ec;
       std::filesystem::create_directories(options.transcript_dir, ec);
       if (ec) return make_error(ErrorCode::kIo, options.transcript_dir + ": " + ec.message());
-      auto status = write_file(std::filesystem::path(options.transcript_dir) / (name + ".txt"), result->transcript);
-      if (!status) return tl::unexpected(status.error());
-    }
-    results.push_back(std::move(*result));
+      return write_file(std::filesystem::path(options.transcript_dir) / (result.condition + ".txt"), result.transcript);
+    };
   }
+  Result<ExperimentResults> run;
+  {
+    TerminalProgress progress(stderr, !options.json && !options.quiet, TerminalProgress::Mode::kWholeRun);
+    if (progress.active()) request.observer = &progress;
+    run = run_experiment(*scenario, request);
+  }
+  if (!run) return tl::unexpected(run.error());
+  const std::vector<ConditionResult>& results = run->results;
+  std::string json = results_json(results);
   if (options.json) {
-    nlohmann::json all = nlohmann::json::array();
-    for (const ConditionResult& r : results) all.push_back(result_json(r));
-    out << dump_json(all, 2) << "\n";
+    out << json << "\n";
   } else {
     DialogueCounts floor = instruction_floor(*scenario);
     out << "Scenario " << scenario->name << ": " << scenario->objects_to_tidy().size() << " objects to tidy, "
         << scenario->goal_assertions().size() << " goal assertions; the floor (task structure and one goal per goal "
         << "type) is " << floor.instructions << " instructions, " << floor.words << " words";
-    if (experiment.knowledge_in)
+    if (request.options.knowledge_in)
       out << "; every condition starts from the knowledge in " << options.knowledge_in << " ("
-          << experiment.knowledge_in->goals.size() << " goals, " << experiment.knowledge_in->rules.size() << " rules)";
+          << request.options.knowledge_in->goals.size() << " goals, " << request.options.knowledge_in->rules.size() << " rules)";
     for (const ConditionResult& r : results)
       if (!r.llm_description.empty()) {
         out << "; LLM answers from " << r.llm_description;
         break;
       }
-    out << "\n" << format_results_table(results, scenario->reference == "table3");
+    out << "\n" << format_results_table(results, scenario->reference == "table3") << "\n" << kTableLegend;
+    if (!run->skipped.empty()) out << skipped_hint(run->skipped);
+  }
+  if (!options.plot.empty()) {
+    if (auto status = plot_results(json, options.plot, scenario->reference == "table3"); !status) return tl::unexpected(status.error());
+    if (!options.json && !options.quiet) out << "The figure is in " << options.plot << ".\n";
   }
   return Outcome::kSuccess;
 }
@@ -218,15 +185,19 @@ CommandResult run_teach(const TeachOptions& options, const std::string& program,
     knowledge = std::move(*loaded);
     store.emplace(std::move(*opened));
   }
+  // While the LLM is asked, a progress line on a terminal's stderr.
+  TerminalProgress progress(stderr, !options.quiet, TerminalProgress::Mode::kLlmQueries);
   std::unique_ptr<LlmAdvisor> advisor;
   if (condition->llm) {
-    auto factory = llm_factory(options.llm);
-    if (!factory) return make_error(ErrorCode::kInvalidInput, "condition " + condition->name + " needs --llm SPEC");
-    auto client = (*factory)();
+    auto spec = llm::resolve_llm_spec(options.llm.spec);
+    if (!spec) return make_error(ErrorCode::kInvalidInput, "condition " + condition->name + " needs --llm SPEC");
+    auto client = llm::make_llm_client(*spec, llm_options(options.llm));
     if (!client) return tl::unexpected(client.error());
     auto templates = llm::PromptTemplates::load(data_dir() / "prompts");
     if (!templates) return tl::unexpected(templates.error());
-    advisor = std::make_unique<LlmAdvisor>(std::move(*client), std::move(*templates));
+    std::unique_ptr<llm::LlmClient> observed = std::move(*client);
+    if (progress.active()) observed = observe_llm(std::move(observed), progress);
+    advisor = std::make_unique<LlmAdvisor>(std::move(observed), std::move(*templates));
   }
   AgentOptions agent_options;
   agent_options.condition = *condition;

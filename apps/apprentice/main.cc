@@ -133,7 +133,9 @@ int run(int argc, char** argv) {
   experiment_cmd->add_option("--conditions", experiment.conditions,
                              "Comma-separated conditions, e.g. instruction,inst+search4 (default: all that can run)")
       ->delimiter(',');
-  experiment_cmd->add_flag("--json", experiment.json, "One JSON object per condition");
+  experiment_cmd->add_flag("--json", experiment.json, "Print a JSON array with one object per condition");
+  experiment_cmd->add_option("--plot", experiment.plot, "Draw the results into FILE.svg or FILE.png (needs python3-matplotlib)");
+  experiment_cmd->add_flag("-q,--quiet", experiment.quiet, "No progress line on a terminal");
   experiment_cmd->add_option("--transcript", experiment.transcript_dir, "Write each condition's dialogue to DIR/<condition>.txt");
   experiment_cmd->add_option("--knowledge-out", experiment.knowledge_out, "Keep each condition's knowledge in DIR/<condition>.sqlite");
   experiment_cmd->add_option("--knowledge-in", experiment.knowledge_in,
@@ -152,7 +154,7 @@ int run(int argc, char** argv) {
       ->capture_default_str();
   teach_cmd->add_option("--generalization", teach.generalization, "Rule generalization: full or paper")
       ->capture_default_str();
-  teach_cmd->add_flag("--quiet", teach.quiet, "Print only the agent's questions and the summary");
+  teach_cmd->add_flag("-q,--quiet", teach.quiet, "Print only the agent's questions and the summary");
   add_llm_flags(teach_cmd, teach.llm);
   teach_cmd->callback([&] { result = run_teach(teach, program, stdin, std::cout); });
 

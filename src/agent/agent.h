@@ -68,10 +68,14 @@ struct AgentReport {
   bool task_finished = false;  // the instructor said the task was done
 };
 
+// Ownership: the agent owns its options, knowledge and understanding (by
+// value). `store` and `llm` are borrowed and must outlive the agent; the
+// simulator and dialogue are lent for one call. Not thread-safe: one
+// thread uses an agent at a time (separate agents may run in parallel).
 class TaskLearningAgent {
  public:
   // `store` may be null (nothing persisted); `llm` may be null unless the
-  // condition uses the LLM.
+  // condition uses the LLM (checked: a bug aborts).
   TaskLearningAgent(AgentOptions options, Knowledge knowledge, Understanding understanding,
                     KnowledgeStore* store, LlmAdvisor* llm);
 
@@ -84,6 +88,8 @@ class TaskLearningAgent {
 
   // Performs a task it has learned, with learned knowledge alone: no
   // instructor, search or LLM. Reports where it would have needed help.
+  // Errors: kNotFound when no such task was learned (with an empty name:
+  // unless exactly one was).
   Result<AgentReport> perform(Simulator& simulator, const std::string& task_name);
 
   const Knowledge& knowledge() const { return knowledge_; }

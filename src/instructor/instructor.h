@@ -52,11 +52,16 @@ enum class Voice {
   kResponse,   // an answer to what the person typed: help, status, why a reply cannot be used
 };
 
+// Implement it to teach the agent from your own program: a person, a
+// script, another model. The agent lends `question` and `world` for the
+// call only; keep copies, not references. Calls come from the thread that
+// runs the agent, one at a time. Return errors as values, never throw.
 class Instructor {
  public:
   virtual ~Instructor() = default;
   // The instructor's reply to a question about the current `world`.
-  // kCancelled when the instructor has gone (end of input).
+  // kCancelled when the instructor has gone (end of input): the agent stops
+  // and keeps what it learned; any other error stops it too.
   virtual Result<std::string> answer(const Question& question, const World& world) = 0;
   // Something the agent says that needs no reply ("So the ketchup goes in
   // the fridge, and the fridge ends closed."), if the instructor wants to

@@ -59,6 +59,8 @@ struct Knowledge {
   const TaskKnowledge* find_task(const std::string& name) const;
 };
 
+// Owns its SQLite connection; move-only. Use one KnowledgeStore per
+// thread.
 class KnowledgeStore {
  public:
   // Opens the store at `path` for `access`. Errors name the file:
