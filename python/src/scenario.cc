@@ -10,8 +10,9 @@ namespace {
 
 // A subtask as Python sees it: the verb and the place's id.
 struct SubtaskView {
-  std::string verb;   // "clear"
-  std::string place;  // "table1"
+  std::string verb;                 // "clear"
+  std::string place;                // "table1": the first of `places`
+  std::vector<std::string> places;  // every place it empties ("bag1", "bag2" for `place: bag`)
 };
 
 struct TaskView {
@@ -84,6 +85,7 @@ void bind_scenario(py::module_& m) {
   py::class_<SubtaskView>(m, "Subtask", "A subtask of the task: a verb and the place it empties.")
       .def_readonly("verb", &SubtaskView::verb)
       .def_readonly("place", &SubtaskView::place)
+      .def_readonly("places", &SubtaskView::places)
       .def("__repr__", [](const SubtaskView& s) { return "Subtask('" + s.verb + "', place='" + s.place + "')"; });
 
   py::class_<TaskView>(m, "Task", "The task the instructor teaches: its name and subtasks, in order.")
@@ -124,8 +126,12 @@ void bind_scenario(py::module_& m) {
           "task",
           [](const ScenarioHandle& h) {
             TaskView task{h.scenario->task.name, {}};
-            for (const Subtask& s : h.scenario->task.subtasks)
-              task.subtasks.push_back(SubtaskView{s.verb, h.scenario->world.universe->name(s.place)});
+            for (const Subtask& s : h.scenario->task.subtasks) {
+              SubtaskView view{s.verb, "", {}};
+              for (ObjectId place : s.places) view.places.push_back(h.scenario->world.universe->name(place));
+              if (!view.places.empty()) view.place = view.places.front();
+              task.subtasks.push_back(std::move(view));
+            }
             return task;
           },
           "The task the instructor will teach (the agent learns it from the instructor's words).")
