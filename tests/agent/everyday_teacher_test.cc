@@ -77,7 +77,7 @@ class EverydayTeacher {
       ADD_FAILURE() << "the teacher wants nothing for the " << thing << " " << place_words;
       return "";
     }
-    std::string r = language::spoken_category(w.universe->info(wanted->receptacle).category);
+    std::string r = language::spoken_category(w.universe->info(wanted->place).category);
     int form = next_form_++;
     if (wanted->closed) {
       switch (form % 4) {
