@@ -1,5 +1,6 @@
 #include "cmd_agent.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -10,6 +11,7 @@
 #include "instructor/terminal_instructor.h"
 #include "llm/factory.h"
 #include "util/log.h"
+#include "util/text.h"
 #include "world/pddl.h"
 
 #ifndef APPRENTICE_DATA_DIR
@@ -39,38 +41,47 @@ Result<Generalization> parse_generalization(const std::string& text) {
   return make_error(ErrorCode::kInvalidInput, "--generalization must be full or paper, not " + text);
 }
 
-// With several conditions, each keeps its own cassette: record:FILE,SPEC and
-// replay:FILE use FILE's name with ".<condition>" before its extension, so
-// that every condition replays exactly what it recorded.
-std::string per_condition_spec(const std::string& spec, const std::string& condition) {
-  for (const char* scheme : {"record:", "replay:"}) {
-    std::string prefix = scheme;
-    if (spec.rfind(prefix, 0) != 0) continue;
-    std::string rest = spec.substr(prefix.size());
-    std::size_t comma = prefix == "record:" ? rest.find(',') : std::string::npos;
-    std::filesystem::path file = rest.substr(0, comma);
-    std::string tail = comma == std::string::npos ? "" : rest.substr(comma);
-    std::filesystem::path renamed =
-        file.parent_path() / (file.stem().string() + "." + condition + file.extension().string());
-    return prefix + renamed.string() + tail;
-  }
-  return spec;
+llm::LlmOptions llm_options(const LlmFlags& flags) {
+  llm::LlmOptions options;
+  options.model = flags.model;
+  options.api_key = flags.api_key;
+  if (flags.timeout_ms) options.request_timeout = std::chrono::milliseconds(*flags.timeout_ms);
+  if (flags.connect_timeout_ms) options.connect_timeout = std::chrono::milliseconds(*flags.connect_timeout_ms);
+  return options;
 }
 
 std::optional<LlmFactory> llm_factory(const LlmFlags& flags, const std::string& condition = "") {
   auto spec = llm::resolve_llm_spec(flags.spec);
   if (!spec) return std::nullopt;
-  if (!condition.empty()) spec = per_condition_spec(*spec, condition);
-  llm::LlmOptions options;
-  options.model = flags.model;
-  options.api_key = flags.api_key;
-  if (flags.timeout_ms) options.request_timeout = std::chrono::milliseconds(*flags.timeout_ms);
+  // With several conditions each keeps its own cassette (llm/factory.h).
+  if (!condition.empty()) spec = llm::spec_for_condition(*spec, condition);
+  llm::LlmOptions options = llm_options(flags);
   std::string s = *spec;
   return LlmFactory([s, options]() { return llm::make_llm_client(s, options); });
 }
 
+// Before a run that needs the LLM: whether its server can be reached at
+// all, so that a dead server costs seconds, not a run's worth of timeouts.
+// Returns whether to go on with the LLM; an error (exit 4) when it cannot
+// be reached and the LLM is not optional.
+Result<bool> check_llm(const LlmFlags& flags) {
+  auto spec = llm::resolve_llm_spec(flags.spec);
+  if (!spec) return true;
+  auto reachable = llm::check_llm_connection(*spec, llm_options(flags));
+  if (reachable) return true;
+  if (!flags.optional) {
+    Error error = reachable.error();
+    error.message += " (--llm-optional goes on without it)";
+    return tl::unexpected(std::move(error));
+  }
+  spdlog::warn("{}; going on without the LLM (--llm-optional)", reachable.error().message);
+  return false;
+}
+
 nlohmann::json result_json(const ConditionResult& r) {
   return nlohmann::json{{"condition", r.condition},
+                        {"llm_failures", r.llm_failures},
+                        {"llm_ensemble", r.llm_ensemble},
                         {"completion_rate", r.completion_rate},
                         {"assertions_achieved", r.assertions_achieved},
                         {"assertions_total", r.assertions_total},
@@ -106,12 +117,28 @@ CommandResult run_experiment(const ExperimentOptions& options, const std::string
   experiment.prompts_dir = data_dir() / "prompts";
   if (auto factory = llm_factory(options.llm)) experiment.llm = *factory;
   if (!options.knowledge_out.empty()) experiment.knowledge_out = options.knowledge_out;
+  auto repair = parse_goal_repair(options.llm.goal_repair);
+  if (!repair) return tl::unexpected(repair.error());
+  experiment.goal_repair = *repair;
+  experiment.offer_ungrounded = options.llm.offer_ungrounded;
+  experiment.goal_responses = options.llm.goal_responses;
   std::vector<std::string> names = options.conditions;
   if (names.empty()) {
     for (const std::string& name : paper_condition_names()) {
       auto condition = parse_condition(name);
       if (condition && (!condition->llm || experiment.llm)) names.push_back(name);
     }
+  }
+  std::vector<Condition> conditions;
+  for (const std::string& name : names) {
+    auto condition = parse_condition(name);
+    if (!condition) return tl::unexpected(condition.error());
+    conditions.push_back(*condition);
+  }
+  if (experiment.llm && std::any_of(conditions.begin(), conditions.end(), [](const Condition& c) { return c.llm; })) {
+    auto reachable = check_llm(options.llm);
+    if (!reachable) return tl::unexpected(reachable.error());
+    experiment.llm_disabled = !*reachable;
   }
   std::vector<ConditionResult> results;
   for (const std::string& name : names) {
@@ -145,6 +172,13 @@ CommandResult run_experiment(const ExperimentOptions& options, const std::string
       }
     out << "\n" << format_results_table(results);
   }
+  std::vector<std::string> degraded;
+  for (const ConditionResult& r : results)
+    if (r.degraded()) degraded.push_back(r.condition);
+  if (!degraded.empty() && !options.llm.optional)
+    return make_error(ErrorCode::kUnavailable, "the LLM failed in " + join(degraded, ", ") +
+                                                   ": those figures are degraded (marked '*'; --llm-optional "
+                                                   "accepts a run without it)");
   return Outcome::kSuccess;
 }
 
@@ -175,11 +209,20 @@ CommandResult run_teach(const TeachOptions& options, const std::string& program,
     if (!client) return tl::unexpected(client.error());
     auto templates = llm::PromptTemplates::load(data_dir() / "prompts");
     if (!templates) return tl::unexpected(templates.error());
-    advisor = std::make_unique<LlmAdvisor>(std::move(*client), std::move(*templates));
+    auto reachable = check_llm(options.llm);
+    if (!reachable) return tl::unexpected(reachable.error());
+    LlmAdvisorOptions advice;
+    advice.disabled = !*reachable;
+    advice.goal_responses = options.llm.goal_responses;
+    advisor = std::make_unique<LlmAdvisor>(std::move(*client), std::move(*templates), advice);
   }
+  auto repair = parse_goal_repair(options.llm.goal_repair);
+  if (!repair) return tl::unexpected(repair.error());
   AgentOptions agent_options;
   agent_options.condition = *condition;
   agent_options.generalization = *generalization;
+  agent_options.goal_repair = *repair;
+  agent_options.offer_ungrounded = options.llm.offer_ungrounded;
   TaskLearningAgent agent(agent_options, std::move(knowledge), Understanding(), store ? &*store : nullptr,
                           advisor.get());
   Simulator simulator(scenario->world);

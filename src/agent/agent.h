@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "agent/condition.h"
+#include "agent/goal_repair.h"
 #include "agent/llm_advisor.h"
 #include "agent/understanding.h"
 #include "instructor/dialogue.h"
@@ -38,6 +39,16 @@ struct AgentOptions {
   int max_actions_per_object = 30;
   // Re-ask at most this many times after a reply the agent cannot use.
   int max_retries = 3;
+  // LLM goals: which analysis and repair steps run (agent/goal_repair.h).
+  GoalRepairOptions goal_repair;
+  // LLM goals: re-prompts with the rejected answers per object (when
+  // goal_repair.reprompt), before the instructor is asked.
+  int max_reprompts = 1;
+  // The paper's behaviour: offer LLM responses the agent cannot ground, and
+  // without an instructor take the most probable one even so. Otherwise
+  // only usable ones are offered, and without an instructor the best usable
+  // one is taken.
+  bool offer_ungrounded = false;
 };
 
 // How one object went.

@@ -2,6 +2,7 @@
 // consulted before search and before asking, and rule learning once the
 // goal holds.
 #include <deque>
+#include <map>
 
 #include "agent/session.h"
 #include "language/generation.h"
@@ -113,6 +114,9 @@ Result<bool> TaskLearningAgent::Session::achieve(const Current& current, ObjectI
   return true;
 }
 
+// The LLM's next steps, chosen by Algorithm 5 (llm::finalize_choice): the
+// most probable step that grounds and can be done now, confirmed by the
+// instructor where there is one.
 Result<std::optional<Action>> TaskLearningAgent::Session::action_from_llm(const Current& current, ObjectId object,
                                                                           const Goal& goal) {
   LlmAdvisor& llm = *agent_.llm_;
@@ -124,23 +128,39 @@ Result<std::optional<Action>> TaskLearningAgent::Session::action_from_llm(const 
   if (llm.last_failure() && candidates.empty())
     dialogue_->say("I could not reach the language model (" + llm.last_failure()->message + ")" +
                    (instructed ? ", so I will ask." : "."));
+  std::map<std::string, Action> usable;  // by the candidate's text
   for (const llm::Candidate& candidate : candidates) {
     ActionMeaning meaning = agent_.understanding_.action(world(), candidate.text, object);
-    if (!meaning.action || !is_applicable(*world().domain, world().state, *meaning.action)) {
-      spdlog::info("LLM action {} is not usable here: {}", apprentice::quoted(candidate.text),
-                   meaning.action ? "not applicable" : meaning.failure);
+    if (meaning.action && is_applicable(*world().domain, world().state, *meaning.action)) {
+      usable.emplace(candidate.text, *meaning.action);
       continue;
     }
-    if (instructed) {
-      std::string question = language::say_action_question(world(), object, candidate.text);
-      auto reply = ask(QuestionKind::kConfirmAction, question, object, goal, meaning.action);
-      if (!reply) return tl::unexpected(reply.error());
-      if (!read_yes_no(*reply).value_or(false)) continue;
-    }
-    advice_ = apprentice::quoted(candidate.text) + (instructed ? " (confirmed)" : "");
-    return meaning.action;
+    spdlog::info("LLM action {} is not usable here: {}", apprentice::quoted(candidate.text),
+                 meaning.action ? "not applicable" : meaning.failure);
   }
-  return std::optional<Action>();
+  llm::CallbackConfirmer confirmer([&](llm::QueryKind, const llm::Candidate& c) -> Result<bool> {
+    auto action = usable.find(c.text);
+    std::optional<Action> proposed;
+    if (action != usable.end()) proposed = action->second;
+    auto reply = ask(QuestionKind::kConfirmAction, language::say_action_question(world(), object, c.text), object, goal,
+                     proposed);
+    if (!reply) return tl::unexpected(reply.error());
+    return read_yes_no(*reply).value_or(false);
+  });
+  llm::ChoiceOptions choosing;
+  choosing.offer_ungrounded = agent_.options_.offer_ungrounded;
+  choosing.ask_description = false;  // action_from_instructor asks next
+  choosing.unattended =
+      agent_.options_.offer_ungrounded ? llm::UnattendedPolicy::kFirst : llm::UnattendedPolicy::kFirstGrounded;
+  auto choice = llm::finalize_choice(candidates, llm::QueryKind::kAction,
+                                     [&](const llm::Candidate& c) { return usable.contains(c.text); },
+                                     instructed ? &confirmer : nullptr, choosing);
+  if (!choice) return tl::unexpected(choice.error());
+  if (!choice->candidate) return std::optional<Action>();
+  auto action = usable.find(choice->candidate->text);
+  if (action == usable.end()) return std::optional<Action>();  // unattended, the paper's way: unusable
+  advice_ = apprentice::quoted(choice->candidate->text) + (instructed ? " (confirmed)" : "");
+  return action->second;
 }
 
 Result<std::optional<Action>> TaskLearningAgent::Session::action_from_instructor(const Current& current,

@@ -30,11 +30,18 @@ struct ConditionResult {
   std::optional<double> relevance;
   int llm_calls = 0;
   long llm_tokens = 0;
+  // LLM queries that failed (server down, hung, garbled); a row with any is
+  // degraded: its figures are not what the LLM would have given.
+  int llm_failures = 0;
+  bool llm_stopped = false;   // the LLM was not asked after repeated failures, or at all
+  bool llm_ensemble = false;  // the answers pooled several sources (corpus pool=all)
   std::uint64_t search_nodes = 0;
   double wall_ms = 0;
   AgentReport report;
   std::string transcript;
   std::string llm_description;  // where LLM answers came from, if any
+
+  bool degraded() const { return llm_failures > 0 || llm_stopped; }
 };
 
 // Makes a fresh LLM client for one condition.
@@ -47,6 +54,15 @@ struct ExperimentOptions {
   std::filesystem::path prompts_dir;
   // When set, each condition's knowledge is kept in DIR/<condition>.sqlite.
   std::optional<std::filesystem::path> knowledge_out;
+  // LLM goals: analysis and repair steps, re-prompts, and the paper's way
+  // of offering responses that do not ground (see AgentOptions).
+  GoalRepairOptions goal_repair;
+  int max_reprompts = 1;
+  bool offer_ungrounded = false;
+  // The LLM server could not be reached and the run goes on without it:
+  // LLM conditions run with the LLM switched off (and are marked degraded).
+  bool llm_disabled = false;
+  int goal_responses = 5;  // unique LLM goal statements per query (LlmAdvisorOptions)
 };
 
 Result<ConditionResult> run_condition(const Scenario& scenario, const Condition& condition,
@@ -66,7 +82,9 @@ struct PaperRow {
 };
 std::optional<PaperRow> paper_row(std::string_view condition);
 
-// The table as text, each condition beside the paper's figures.
+// The table as text, each condition beside the paper's figures. A row whose
+// LLM answers pooled several sources is labelled "ensemble" and is not set
+// beside the paper's; a degraded row is marked '*' and explained below.
 std::string format_results_table(const std::vector<ConditionResult>& results);
 
 }  // namespace apprentice
