@@ -54,7 +54,7 @@ const GeneratedWorld& world_with(int extra) {
   const TypeId item_type = *base.domain->find_type("item");
   for (int i = 0; i < extra; ++i) {
     ObjectId id = world->universe.add(
-        ObjectInfo{"clutter" + std::to_string(i + 1), "clutter", ObjectKind::kItem, item_type});
+        ObjectInfo{"clutter" + std::to_string(i + 1), "clutter", ObjectKind::kItem, item_type, {}});
     ObjectId place = places[static_cast<std::size_t>(i) % places.size()];
     const bool on_surface = world->universe.info(place).kind == ObjectKind::kSurface;
     facts.push_back(Fact(v.grabbable, {id}));

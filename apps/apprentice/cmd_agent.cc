@@ -85,6 +85,8 @@ nlohmann::json result_json(const ConditionResult& r) {
                         {"completion_rate", r.completion_rate},
                         {"assertions_achieved", r.assertions_achieved},
                         {"assertions_total", r.assertions_total},
+                        {"objects_done", r.objects_done},
+                        {"objects_total", r.objects_total},
                         {"instructions", r.counts.instructions},
                         {"words", r.counts.words},
                         {"yes_no", r.counts.yes_no},
@@ -103,15 +105,29 @@ Status write_file(const std::filesystem::path& path, const std::string& text) {
   return {};
 }
 
+// The knowledge in a store, read once; the store is left as it was.
+Result<Knowledge> load_knowledge_copy(const std::filesystem::path& path, const Domain& domain) {
+  if (!std::filesystem::exists(path)) return make_error(ErrorCode::kNotFound, path.string() + ": no such knowledge store");
+  auto store = KnowledgeStore::open(path);
+  if (!store) return tl::unexpected(store.error());
+  return store->load(domain);
+}
+
 }  // namespace
 
 CommandResult run_experiment(const ExperimentOptions& options, const std::string& program, std::ostream& out) {
   (void)program;
   auto scenario = load_scenario(options.scenario);
   if (!scenario) return tl::unexpected(scenario.error());
+  if (auto s = check_runnable(*scenario); !s) return tl::unexpected(s.error());
   auto generalization = parse_generalization(options.generalization);
   if (!generalization) return tl::unexpected(generalization.error());
   apprentice::ExperimentOptions experiment;
+  if (!options.knowledge_in.empty()) {
+    auto knowledge = load_knowledge_copy(options.knowledge_in, *scenario->world.domain);
+    if (!knowledge) return tl::unexpected(knowledge.error());
+    experiment.knowledge_in = std::move(*knowledge);
+  }
   experiment.generalization = *generalization;
   experiment.use_rules = !options.no_rules;
   experiment.prompts_dir = data_dir() / "prompts";
@@ -164,13 +180,19 @@ CommandResult run_experiment(const ExperimentOptions& options, const std::string
     for (const ConditionResult& r : results) all.push_back(result_json(r));
     out << all.dump(2) << "\n";
   } else {
-    out << "Scenario " << scenario->name << " (" << scenario->goal_assertions().size() << " goal assertions)";
+    DialogueCounts floor = instruction_floor(*scenario);
+    out << "Scenario " << scenario->name << ": " << scenario->objects_to_tidy().size() << " objects to tidy, "
+        << scenario->goal_assertions().size() << " goal assertions; the floor (task structure and one goal per goal "
+        << "type) is " << floor.instructions << " instructions, " << floor.words << " words";
+    if (experiment.knowledge_in)
+      out << "; every condition starts from the knowledge in " << options.knowledge_in << " ("
+          << experiment.knowledge_in->goals.size() << " goals, " << experiment.knowledge_in->rules.size() << " rules)";
     for (const ConditionResult& r : results)
       if (!r.llm_description.empty()) {
         out << "; LLM answers from " << r.llm_description;
         break;
       }
-    out << "\n" << format_results_table(results);
+    out << "\n" << format_results_table(results, scenario->reference == "table3");
   }
   std::vector<std::string> degraded;
   for (const ConditionResult& r : results)
@@ -231,13 +253,16 @@ CommandResult run_teach(const TeachOptions& options, const std::string& program,
   out << "Teaching in " << scenario->name << " (" << condition->name
       << "). Type 'status' to see the world, Ctrl-D to stop.\n";
   auto report = agent.learn(simulator, dialogue);
+  if (!report && report.error().code != ErrorCode::kCancelled) return tl::unexpected(report.error());
+  out << (report ? "The task is learned." : "Stopped.");
+  // Without an intent the teacher is the only authority: no completion.
   int achieved = count_achieved_assertions(*scenario, simulator.state());
   int total = static_cast<int>(scenario->goal_assertions().size());
-  if (!report && report.error().code != ErrorCode::kCancelled) return tl::unexpected(report.error());
-  out << (report ? "The task is learned." : "Stopped.") << " " << achieved << " of " << total
-      << " goal assertions hold; " << dialogue.counts().instructions << " instructions.";
+  if (scenario->has_intent) out << " " << achieved << " of " << total << " goal assertions hold;";
+  out << " " << dialogue.counts().instructions << " instructions.";
   if (store) out << " Knowledge is in " << store->path().string() << ".";
   out << "\n";
+  if (!scenario->has_intent) return report ? Outcome::kSuccess : Outcome::kGoalNotReached;
   return achieved == total ? Outcome::kSuccess : Outcome::kGoalNotReached;
 }
 
@@ -259,21 +284,28 @@ CommandResult run_run(const RunOptions& options, std::ostream& out) {
   int achieved = count_achieved_assertions(*scenario, simulator.state());
   int total = static_cast<int>(scenario->goal_assertions().size());
   double completion = total == 0 ? 100.0 : 100.0 * achieved / total;
+  // Without an intent nothing says what the task should achieve: no completion.
+  const bool measured = scenario->has_intent;
   if (options.json) {
-    out << nlohmann::json{{"completion_rate", completion}, {"assertions_achieved", achieved},
-                          {"assertions_total", total}, {"instructions", 0}, {"search_nodes", report->search_nodes},
-                          {"llm_calls", 0}, {"actions", report->actions_executed},
-                          {"help_needed", report->help_needed}}
-                 .dump(2)
-        << "\n";
+    nlohmann::json j{{"instructions", 0}, {"search_nodes", report->search_nodes}, {"llm_calls", 0},
+                     {"actions", report->actions_executed}, {"help_needed", report->help_needed}};
+    if (measured) {
+      j["completion_rate"] = completion;
+      j["assertions_achieved"] = achieved;
+      j["assertions_total"] = total;
+      j["objects_done"] = count_objects_done(*scenario, simulator.state());
+      j["objects_total"] = scenario->objects_to_tidy().size();
+    }
+    out << j.dump(2) << "\n";
   } else {
-    out << "Performed with learned knowledge alone: " << achieved << " of " << total << " goal assertions ("
-        << completion << "%), " << report->actions_executed << " actions, 0 instructions, "
-        << report->search_nodes << " search nodes, 0 LLM calls.\n";
+    out << "Performed with learned knowledge alone: ";
+    if (measured) out << achieved << " of " << total << " goal assertions (" << completion << "%), ";
+    out << report->actions_executed << " actions, 0 instructions, " << report->search_nodes
+        << " search nodes, 0 LLM calls.\n";
     if (report->help_needed.empty()) out << "No help was needed.\n";
     for (const std::string& help : report->help_needed) out << "Would need help: " << help << "\n";
   }
-  return achieved == total && report->help_needed.empty() ? Outcome::kSuccess : Outcome::kGoalNotReached;
+  return (!measured || achieved == total) && report->help_needed.empty() ? Outcome::kSuccess : Outcome::kGoalNotReached;
 }
 
 CommandResult run_knowledge(const KnowledgeOptions& options, const std::string& program, std::ostream& out) {

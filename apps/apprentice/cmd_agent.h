@@ -31,6 +31,7 @@ struct ExperimentOptions {
   bool json = false;
   std::string transcript_dir;
   std::string knowledge_out;
+  std::string knowledge_in;  // empty: every condition starts from nothing
   std::string generalization = "full";
   bool no_rules = false;
   LlmFlags llm;

@@ -130,6 +130,8 @@ int run(int argc, char** argv) {
   experiment_cmd->add_flag("--json", experiment.json, "One JSON object per condition");
   experiment_cmd->add_option("--transcript", experiment.transcript_dir, "Write each condition's dialogue to DIR/<condition>.txt");
   experiment_cmd->add_option("--knowledge-out", experiment.knowledge_out, "Keep each condition's knowledge in DIR/<condition>.sqlite");
+  experiment_cmd->add_option("--knowledge-in", experiment.knowledge_in,
+                             "Start every condition from a copy of this knowledge store (never modified)");
   experiment_cmd->add_option("--generalization", experiment.generalization, "Rule generalization: full or paper")
       ->capture_default_str();
   experiment_cmd->add_flag("--no-rules", experiment.no_rules, "Do not use learned policy rules");

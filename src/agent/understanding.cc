@@ -76,6 +76,8 @@ std::optional<ObjectId> Understanding::place(const World& world, const language:
   return std::nullopt;
 }
 
+const language::Lexicon& Understanding::lexicon() const { return impl_->grounder.lexicon(); }
+
 bool Understanding::is_known_action_word(std::string_view word) const {
   std::string w = to_lower(trim(word));
   return w == "open" || w == "close" || w == "pick" || w == "put";

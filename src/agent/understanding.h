@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 
+#include "language/lexicon.h"
 #include "language/logical_form.h"
 #include "util/result.h"
 #include "world/action.h"
@@ -50,6 +51,8 @@ class Understanding {
                                 language::Relation relation);
   // Whether the agent knows `word` as the first word of an action ("Open").
   bool is_known_action_word(std::string_view word) const;
+  // The WordNet lexicon the grounder uses (also for transfer across worlds).
+  const language::Lexicon& lexicon() const;
 
  private:
   struct Impl;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <set>
 
 #include "instructor/simulated_instructor.h"
 
@@ -15,7 +16,68 @@ int count_achieved_assertions(const Scenario& scenario, const State& state) {
   return achieved;
 }
 
+int count_objects_done(const Scenario& scenario, const State& state) {
+  int done = 0;
+  for (ObjectId o : scenario.objects_to_tidy()) {
+    auto goal = scenario.intended_goal(scenario.subtask_of(o)->verb, o);
+    if (goal && goal->satisfied_by(state)) ++done;
+  }
+  return done;
+}
+
+Status check_runnable(const Scenario& scenario) {
+  if (!scenario.has_intent || scenario.task.subtasks.empty())
+    return make_error(ErrorCode::kInvalidInput,
+                      scenario.source.string() + ": the experiment needs a scenario with a task and an intent (where "
+                      "each kind of object should end up), for the simulated instructor to teach and for measuring "
+                      "completion; this one has no " + std::string(scenario.task.subtasks.empty() ? "task" : "intent") +
+                      " (see docs/scenarios.md)");
+  return {};
+}
+
+DialogueCounts instruction_floor(const Scenario& scenario) {
+  // Asks a fresh simulated instructor what the agent asks when search
+  // leaves it nothing else to ask, in the same order.
+  SimulatedInstructor instructor(scenario);
+  Dialogue dialogue(instructor);
+  const World& world = scenario.world;
+  auto ask = [&](QuestionKind kind, const std::string& subtask, std::optional<ObjectId> object) {
+    Question question;
+    question.kind = kind;
+    question.task = scenario.task.name;
+    question.subtask = subtask;
+    question.object = object;
+    (void)dialogue.ask(question, world);
+  };
+  ask(QuestionKind::kTaskName, "", std::nullopt);
+  const std::vector<ObjectId> objects = scenario.objects_to_tidy();
+  for (const Subtask& subtask : scenario.task.subtasks) {
+    ask(QuestionKind::kTaskStep, "", std::nullopt);  // the loop
+    ask(QuestionKind::kTaskStep, "", std::nullopt);  // the subtask
+    std::set<std::string> described;
+    for (ObjectId o : objects)
+      if (scenario.subtask_of(o) == &subtask && described.insert(world.universe->info(o).category).second)
+        ask(QuestionKind::kSubtaskStep, subtask.verb, o);  // its goal
+    ask(QuestionKind::kSubtaskStep, subtask.verb, std::nullopt);  // "You are done."
+    ask(QuestionKind::kTaskStep, "", std::nullopt);               // "Repeat."
+  }
+  ask(QuestionKind::kTaskStep, "", std::nullopt);  // "You are done."
+  return dialogue.counts();
+}
+
 namespace {
+
+// Copies knowledge into a store, so that a condition's store holds what it
+// started from as well as what it learns.
+Status save_knowledge(KnowledgeStore& store, const Domain& domain, const Knowledge& knowledge) {
+  for (const TaskKnowledge& task : knowledge.tasks)
+    if (auto s = store.save_task(task); !s) return s;
+  for (const GoalKnowledge& goal : knowledge.goals.all())
+    if (auto s = store.save_goal(goal); !s) return s;
+  for (const Rule& rule : knowledge.rules.rules())
+    if (auto s = store.save_rule(domain, rule); !s) return s;
+  return {};
+}
 
 // Without an instructor nobody answers yes or no, so relevance is the share
 // of adopted LLM goals the instructor would have accepted: those that are
@@ -38,7 +100,9 @@ std::optional<double> silent_relevance(const Scenario& scenario, const std::vect
 
 Result<ConditionResult> run_condition(const Scenario& scenario, const Condition& condition,
                                       const ExperimentOptions& options) {
+  if (auto s = check_runnable(scenario); !s) return tl::unexpected(s.error());
   auto started = std::chrono::steady_clock::now();
+  Knowledge knowledge = options.knowledge_in.value_or(Knowledge{});
   std::optional<KnowledgeStore> store;
   if (options.knowledge_out) {
     std::error_code ec;
@@ -49,6 +113,7 @@ Result<ConditionResult> run_condition(const Scenario& scenario, const Condition&
     auto opened = KnowledgeStore::open(path);
     if (!opened) return tl::unexpected(opened.error());
     store.emplace(std::move(*opened));
+    if (auto s = save_knowledge(*store, *scenario.world.domain, knowledge); !s) return tl::unexpected(s.error());
   }
   std::unique_ptr<LlmAdvisor> advisor;
   if (condition.llm) {
@@ -71,7 +136,7 @@ Result<ConditionResult> run_condition(const Scenario& scenario, const Condition&
   agent_options.goal_repair = options.goal_repair;
   agent_options.max_reprompts = options.max_reprompts;
   agent_options.offer_ungrounded = options.offer_ungrounded;
-  TaskLearningAgent agent(agent_options, Knowledge{}, Understanding(), store ? &*store : nullptr, advisor.get());
+  TaskLearningAgent agent(agent_options, std::move(knowledge), Understanding(), store ? &*store : nullptr, advisor.get());
   Simulator simulator(scenario.world);
   SimulatedInstructor instructor(scenario);
   Dialogue dialogue(instructor);
@@ -83,6 +148,8 @@ Result<ConditionResult> run_condition(const Scenario& scenario, const Condition&
   result.assertions_total = static_cast<int>(scenario.goal_assertions().size());
   result.assertions_achieved = count_achieved_assertions(scenario, simulator.state());
   result.completion_rate = result.assertions_total == 0 ? 100.0 : 100.0 * result.assertions_achieved / result.assertions_total;
+  result.objects_total = static_cast<int>(scenario.objects_to_tidy().size());
+  result.objects_done = count_objects_done(scenario, simulator.state());
   result.counts = dialogue.counts();
   if (condition.llm && condition.instruction && result.counts.yes_no > 0)
     result.relevance = 100.0 * result.counts.yes / result.counts.yes_no;
@@ -134,32 +201,35 @@ std::string row_text(const char* format, auto... args) {
 
 }  // namespace
 
-std::string format_results_table(const std::vector<ConditionResult>& results) {
+std::string format_results_table(const std::vector<ConditionResult>& results, bool beside_paper) {
   // The label column fits "ensemble" only when a row needs it, so that other
   // tables keep their layout.
   const bool any_ensemble =
       std::any_of(results.begin(), results.end(), [](const ConditionResult& r) { return r.llm_ensemble; });
   const int label = any_ensemble ? 8 : 6;
-  std::string out = row_text("%-18s %-*s %11s %9s %8s %7s %7s %12s %9s %9s\n", "Condition", label, "", "Completion%",
-                             "Relevant%", "#Instr.", "#Words", "#Yes/No", "Search nodes", "LLM calls", "Wall ms");
+  std::string out = row_text("%-18s %-*s %11s %9s %9s %8s %7s %7s %12s %9s %9s\n", "Condition", label, "",
+                             "Completion%", "Objects", "Relevant%", "#Instr.", "#Words", "#Yes/No", "Search nodes",
+                             "LLM calls", "Wall ms");
   std::string notes;
   for (const ConditionResult& r : results) {
     const std::string name = r.condition + (r.degraded() ? "*" : "");
-    out += row_text("%-18s %-*s %11s %9s %8d %7d %7d %12llu %9d %9.1f\n", name.c_str(), label,
-                    r.llm_ensemble ? "ensemble" : "ours", percent(r.completion_rate).c_str(),
+    std::string objects = std::to_string(r.objects_done) + "/" + std::to_string(r.objects_total);
+    out += row_text("%-18s %-*s %11s %9s %9s %8d %7d %7d %12llu %9d %9.1f\n", name.c_str(), label,
+                    r.llm_ensemble ? "ensemble" : "ours", percent(r.completion_rate).c_str(), objects.c_str(),
                     percent(r.relevance).c_str(), r.counts.instructions, r.counts.words, r.counts.yes_no,
                     static_cast<unsigned long long>(r.search_nodes), r.llm_calls, r.wall_ms);
-    // An ensemble of runs is not what the paper's agent had: not set beside it.
-    if (auto paper = paper_row(r.condition); paper && !r.llm_ensemble)
-      out += row_text("%-18s %-*s %11s %9s %8d %7d %7d %12s %9s %9s\n", "", label, "paper",
-                      percent(paper->completion).c_str(), percent(paper->relevance).c_str(), paper->instructions,
-                      paper->words, paper->yes_no, "", "", "");
     if (r.degraded())
       notes += "* " + r.condition + ": degraded, the LLM " +
                (r.llm_failures > 0 ? "failed " + std::to_string(r.llm_failures) + " quer" +
                                          (r.llm_failures == 1 ? "y" : "ies")
                                    : std::string("could not be reached")) +
                (r.llm_stopped ? " and was not asked again" : "") + "\n";
+    // An ensemble of runs is not what the paper's agent had: not set beside it.
+    if (!beside_paper || r.llm_ensemble) continue;
+    if (auto paper = paper_row(r.condition))
+      out += row_text("%-18s %-*s %11s %9s %9s %8d %7d %7d %12s %9s %9s\n", "", label, "paper",
+                      percent(paper->completion).c_str(), "", percent(paper->relevance).c_str(), paper->instructions,
+                      paper->words, paper->yes_no, "", "", "");
   }
   return out + notes;
 }

@@ -1,6 +1,6 @@
-// The paper's experiment: each condition runs from empty knowledge with the
-// simulated instructor on a fresh copy of the scenario, and is measured as
-// in Table 3.
+// The paper's experiment: each condition runs from empty knowledge (or from
+// a copy of given knowledge) with the simulated instructor on a fresh copy
+// of the scenario, and is measured as in Table 3.
 #pragma once
 
 #include <filesystem>
@@ -20,9 +20,17 @@ namespace apprentice {
 
 struct ConditionResult {
   std::string condition;
+  // The paper's completion: the intent's goal assertions that hold at the
+  // end, over all of them. It counts assertions that already held at the
+  // start (the doors of the tidy kitchen start closed and must end closed),
+  // so a run that moves nothing scores above zero.
   int assertions_achieved = 0;
   int assertions_total = 0;
   double completion_rate = 0;  // percent
+  // Objects whose whole intended goal holds at the end, over the objects
+  // the intent is about (Scenario::objects_to_tidy).
+  int objects_done = 0;
+  int objects_total = 0;
   DialogueCounts counts;
   // Yes answers over yes/no questions, in percent. Without an instructor:
   // the share of adopted LLM goals that are the intended ones. Unset when
@@ -52,8 +60,11 @@ struct ExperimentOptions {
   bool use_rules = true;
   LlmFactory llm;  // required for LLM conditions
   std::filesystem::path prompts_dir;
-  // When set, each condition's knowledge is kept in DIR/<condition>.sqlite.
+  // When set, each condition's knowledge is kept in DIR/<condition>.sqlite:
+  // what it started from and what it learned.
   std::optional<std::filesystem::path> knowledge_out;
+  // What every condition starts from (a copy each); empty knowledge if unset.
+  std::optional<Knowledge> knowledge_in;
   // LLM goals: analysis and repair steps, re-prompts, and the paper's way
   // of offering responses that do not ground (see AgentOptions).
   GoalRepairOptions goal_repair;
@@ -65,11 +76,23 @@ struct ExperimentOptions {
   int goal_responses = 5;  // unique LLM goal statements per query (LlmAdvisorOptions)
 };
 
+// The scenario can be run by the simulated instructor: it has a task and an
+// intent. kInvalidInput saying what is missing otherwise.
+Status check_runnable(const Scenario& scenario);
+
 Result<ConditionResult> run_condition(const Scenario& scenario, const Condition& condition,
                                       const ExperimentOptions& options);
 
 // The goal assertions of the scenario's intent that hold in `state`.
 int count_achieved_assertions(const Scenario& scenario, const State& state);
+// The objects to tidy whose whole intended goal holds in `state`.
+int count_objects_done(const Scenario& scenario, const State& state);
+
+// The least any condition with an instructor can hear on this scenario:
+// the task structure, and one goal description per goal type (subtask and
+// kind of object), in the simulated instructor's words. inst+search4 needs
+// no more when search finds every plan.
+DialogueCounts instruction_floor(const Scenario& scenario);
 
 // The paper's Table 3 row for a condition, if it has one.
 struct PaperRow {
@@ -82,9 +105,11 @@ struct PaperRow {
 };
 std::optional<PaperRow> paper_row(std::string_view condition);
 
-// The table as text, each condition beside the paper's figures. A row whose
-// LLM answers pooled several sources is labelled "ensemble" and is not set
-// beside the paper's; a degraded row is marked '*' and explained below.
-std::string format_results_table(const std::vector<ConditionResult>& results);
+// The table as text; with `beside_paper` (only for the paper's kitchen,
+// Scenario::reference "table3") each condition's row is followed by the
+// paper's Table 3 row for it. A row whose LLM answers pooled several
+// sources is labelled "ensemble" and is never set beside the paper's; a
+// degraded row is marked '*' and explained below the table.
+std::string format_results_table(const std::vector<ConditionResult>& results, bool beside_paper);
 
 }  // namespace apprentice

@@ -47,10 +47,10 @@ std::string SimulatedInstructor::next_task_step() {
     switch (phase_) {
       case Phase::kAnnounceLoop:
         phase_ = Phase::kAnnounceSubtask;
-        return language::say_repeat_while(world, subtask.place);
+        return language::say_repeat_while(world, subtask.places);
       case Phase::kAnnounceSubtask:
         phase_ = Phase::kRepeat;
-        return language::say_subtask(subtask.verb, world, subtask.place);
+        return language::say_subtask(subtask.verb, world, subtask.places);
       case Phase::kRepeat:
         phase_ = Phase::kNextSubtask;
         return "Repeat.";
@@ -63,12 +63,9 @@ std::string SimulatedInstructor::next_task_step() {
 }
 
 std::optional<Goal> SimulatedInstructor::wanted_goal(const Question& question, const World& world) const {
+  (void)world;  // the scenario's objects are the world's
   if (!question.object) return std::nullopt;
-  const IntentEntry* entry = scenario_.find_intent(question.subtask, world.universe->info(*question.object).category);
-  if (entry == nullptr) return std::nullopt;
-  std::vector<Literal> literals{Literal{Fact(world.vocabulary.in, {*question.object, entry->receptacle}), true}};
-  if (entry->closed) literals.push_back(Literal{Fact(world.vocabulary.closed, {entry->receptacle}), true});
-  return Goal(std::move(literals));
+  return scenario_.intended_goal(question.subtask, *question.object);
 }
 
 std::string SimulatedInstructor::goal_or_done(const Question& question, const World& world) const {

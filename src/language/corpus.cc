@@ -74,7 +74,7 @@ std::optional<ObjectId> object_for_line(const Scenario& scenario, const CorpusLi
   std::optional<ObjectId> place = place_named(universe, line.start_location);
   if (!place && !line.subtask.empty())
     for (const Subtask& s : scenario.task.subtasks)
-      if (s.verb == line.subtask) place = s.place;
+      if (s.verb == line.subtask) place = s.places.front();
   if (place) {
     for (ObjectId id : candidates) {
       if (world.state.holds(Fact(world.vocabulary.on, {id, *place})) ||

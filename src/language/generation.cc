@@ -72,6 +72,7 @@ std::string noun_for(const World& world, ObjectId object) {
   const ObjectInfo& info = world.universe->info(object);
   std::string name = info.category;
   if (info.kind != ObjectKind::kItem) std::replace(name.begin(), name.end(), '-', ' ');
+  for (auto word = info.properties.rbegin(); word != info.properties.rend(); ++word) name = *word + " " + name;
   return "the " + name;
 }
 
@@ -87,16 +88,35 @@ std::string location_phrase(const World& world, ObjectId object) {
 
 std::string say_task_name(std::string_view name) { return capitalized(std::string(bare(name))) + "."; }
 
+namespace {
+
+// "on the table", "in the dish rack"; over several places of a category,
+// any of them: "in a bag".
+std::string at_places(const World& world, std::span<const ObjectId> places) {
+  const ObjectInfo& first = world.universe->info(places.front());
+  std::string where = first.kind == ObjectKind::kSurface ? "on " : "in ";
+  if (places.size() == 1) return where + noun_for(world, places.front());
+  std::string name = first.category;
+  std::replace(name.begin(), name.end(), '-', ' ');
+  return where + std::string(article_for(name)) + " " + name;
+}
+
+}  // namespace
+
 std::string say_repeat_while(const World& world, ObjectId place) {
-  bool surface = world.universe->info(place).kind == ObjectKind::kSurface;
-  return "Repeat the following tasks while an object is " + std::string(surface ? "on " : "in ") +
-         noun_for(world, place) + ".";
+  return say_repeat_while(world, std::span<const ObjectId>(&place, 1));
+}
+
+std::string say_repeat_while(const World& world, std::span<const ObjectId> places) {
+  return "Repeat the following tasks while an object is " + at_places(world, places) + ".";
 }
 
 std::string say_subtask(std::string_view verb, const World& world, ObjectId place) {
-  bool surface = world.universe->info(place).kind == ObjectKind::kSurface;
-  return capitalized(std::string(verb)) + " an object that is " + (surface ? "on " : "in ") +
-         noun_for(world, place) + ".";
+  return say_subtask(verb, world, std::span<const ObjectId>(&place, 1));
+}
+
+std::string say_subtask(std::string_view verb, const World& world, std::span<const ObjectId> places) {
+  return capitalized(std::string(verb)) + " an object that is " + at_places(world, places) + ".";
 }
 
 std::string say_done() { return "You are done."; }

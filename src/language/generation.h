@@ -17,7 +17,8 @@ namespace apprentice::language {
 
 // "an" before a vowel, else "a": "an apple-juice", "a ketchup".
 std::string_view article_for(std::string_view word);
-// "the ketchup", "the recycling bin".
+// "the ketchup", "the recycling bin"; an object with properties is named
+// by them too: "the top drawer", "the blue bag".
 std::string noun_for(const World& world, ObjectId object);
 // "on the table" / "in the dish rack": where the object is now; "" if it is
 // on or in nothing (held).
@@ -29,8 +30,13 @@ std::string say_task_name(std::string_view name);
 // "Repeat the following tasks while an object is on the table." ("in" for
 // a receptacle: "... is in the dish rack.")
 std::string say_repeat_while(const World& world, ObjectId place);
+// The same over several places of one category: "... while an object is
+// in a bag." (one place: as above).
+std::string say_repeat_while(const World& world, std::span<const ObjectId> places);
 // "Clear an object that is on the table."
 std::string say_subtask(std::string_view verb, const World& world, ObjectId place);
+// "Unload an object that is in a bag." over several places of a category.
+std::string say_subtask(std::string_view verb, const World& world, std::span<const ObjectId> places);
 std::string say_done();    // "You are done."
 std::string say_repeat();  // "Repeat."
 // "yes." / "no." (the script's answers).

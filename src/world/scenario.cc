@@ -10,6 +10,10 @@
 
 namespace apprentice {
 
+bool Subtask::covers(ObjectId place) const {
+  return std::find(places.begin(), places.end(), place) != places.end();
+}
+
 const IntentEntry* Scenario::find_intent(std::string_view subtask, std::string_view category) const {
   for (const IntentEntry& e : intent)
     if (e.subtask == subtask && e.category == category) return &e;
@@ -19,26 +23,33 @@ const IntentEntry* Scenario::find_intent(std::string_view subtask, std::string_v
 std::optional<Goal> Scenario::intended_goal(std::string_view subtask, ObjectId object) const {
   const IntentEntry* entry = find_intent(subtask, world.universe->info(object).category);
   if (entry == nullptr) return std::nullopt;
-  std::vector<Literal> literals{Literal{Fact(world.vocabulary.in, {object, entry->receptacle}), true}};
-  if (entry->closed) literals.push_back(Literal{Fact(world.vocabulary.closed, {entry->receptacle}), true});
+  bool surface = world.universe->info(entry->place).kind == ObjectKind::kSurface;
+  std::vector<Literal> literals{Literal{Fact(surface ? world.vocabulary.on : world.vocabulary.in, {object, entry->place}), true}};
+  if (entry->closed) literals.push_back(Literal{Fact(world.vocabulary.closed, {entry->place}), true});
   return Goal(std::move(literals));
 }
 
 const Subtask* Scenario::subtask_of(ObjectId object) const {
   const Vocabulary& v = world.vocabulary;
   for (const Subtask& s : task.subtasks) {
-    if (world.state.holds(Fact(v.on, {object, s.place})) || world.state.holds(Fact(v.in, {object, s.place})))
-      return &s;
+    for (ObjectId place : s.places)
+      if (world.state.holds(Fact(v.on, {object, place})) || world.state.holds(Fact(v.in, {object, place})))
+        return &s;
   }
   return nullptr;
 }
 
+std::vector<ObjectId> Scenario::objects_to_tidy() const {
+  std::vector<ObjectId> out;
+  for (ObjectId o : world.universe->of_kind(ObjectKind::kItem))
+    if (subtask_of(o) != nullptr) out.push_back(o);
+  return out;
+}
+
 std::vector<Literal> Scenario::goal_assertions() const {
   std::vector<Literal> out;
-  for (ObjectId o : world.universe->of_kind(ObjectKind::kItem)) {
-    const Subtask* s = subtask_of(o);
-    if (s == nullptr) continue;
-    auto goal = intended_goal(s->verb, o);
+  for (ObjectId o : objects_to_tidy()) {
+    auto goal = intended_goal(subtask_of(o)->verb, o);
     if (goal) out.insert(out.end(), goal->literals.begin(), goal->literals.end());
   }
   std::sort(out.begin(), out.end());
@@ -48,6 +59,30 @@ std::vector<Literal> Scenario::goal_assertions() const {
 
 namespace {
 
+// yaml-cpp keeps every entry of a mapping but answers a lookup with the
+// first, so a key given twice would silently lose its second value. Every
+// mapping of the tree is checked before anything is read.
+std::optional<std::pair<YAML::Mark, std::string>> find_duplicate_key(const YAML::Node& node) {
+  if (node.IsSequence()) {
+    for (const YAML::Node& child : node)
+      if (auto found = find_duplicate_key(child)) return found;
+  } else if (node.IsMap()) {
+    std::map<std::string, YAML::Mark> seen;
+    for (const auto& entry : node) {
+      std::string key = entry.first.IsScalar() ? entry.first.Scalar() : "";
+      if (entry.first.IsScalar()) {
+        auto [where, fresh] = seen.emplace(key, entry.first.Mark());
+        if (!fresh)
+          return std::pair{entry.first.Mark(), "the key '" + key + "' is given twice in one mapping (first at line " +
+                                                   std::to_string(where->second.line + 1) + ", column " +
+                                                   std::to_string(where->second.column + 1) + ")"};
+      }
+      if (auto found = find_duplicate_key(entry.second)) return found;
+    }
+  }
+  return std::nullopt;
+}
+
 // Builds a scenario from a YAML tree. yaml-cpp reports problems by
 // throwing; every call into it happens inside parse_scenario's try block.
 class ScenarioBuilder {
@@ -56,14 +91,28 @@ class ScenarioBuilder {
 
   Result<Scenario> build(const YAML::Node& root) {
     if (!root.IsMap()) return fail(root, "expected a mapping with name, domain, places, objects, task and intent");
-    if (auto s = check_keys(root, {"name", "domain", "location", "places", "objects", "task", "intent"}); !s)
+    if (auto duplicate = find_duplicate_key(root)) return fail_at(duplicate->first, duplicate->second);
+    if (auto s = check_keys(root, {"name", "domain", "location", "reference", "places", "objects", "task", "intent"}); !s)
       return tl::unexpected(s.error());
     Scenario scenario;
     scenario.source = source_;
     auto name = required_string(root, "name");
     if (!name) return tl::unexpected(name.error());
     scenario.name = *name;
-    scenario.world.location = root["location"] ? root["location"].as<std::string>() : "kitchen";
+    if (root["location"]) {
+      auto location = required_string(root, "location");
+      if (!location) return tl::unexpected(location.error());
+      scenario.world.location = *location;
+    } else {
+      scenario.world.location = "kitchen";
+    }
+    if (root["reference"]) {
+      auto reference = required_string(root, "reference");
+      if (!reference) return tl::unexpected(reference.error());
+      if (*reference != "table3")
+        return fail(root["reference"], "expected reference: table3 (the paper's kitchen), not '" + *reference + "'");
+      scenario.reference = *reference;
+    }
     if (auto s = load_domain(root, scenario); !s) return tl::unexpected(s.error());
     if (auto s = read_places(root, scenario); !s) return tl::unexpected(s.error());
     if (auto s = read_objects(root, scenario); !s) return tl::unexpected(s.error());
@@ -105,12 +154,17 @@ class ScenarioBuilder {
     return node.Scalar();
   }
 
+  static bool is_name(std::string_view text) {
+    return !text.empty() && std::all_of(text.begin(), text.end(), [](char c) {
+      return std::islower(static_cast<unsigned char>(c)) || std::isdigit(static_cast<unsigned char>(c)) || c == '-';
+    });
+  }
+
   Result<std::string> required_name(const YAML::Node& map, const char* key) const {
     auto text = required_string(map, key);
     if (!text) return text;
-    for (char c : *text)
-      if (!(std::islower(static_cast<unsigned char>(c)) || std::isdigit(static_cast<unsigned char>(c)) || c == '-'))
-        return fail(map[key], std::string("expected a lower-case hyphenated name for '") + key + "', not '" + *text + "'");
+    if (!is_name(*text))
+      return fail(map[key], std::string("expected a lower-case hyphenated name for '") + key + "', not '" + *text + "'");
     return text;
   }
 
@@ -121,6 +175,22 @@ class ScenarioBuilder {
     if (!node.IsScalar() || !YAML::convert<bool>::decode(node, value))
       return fail(node, std::string("expected true or false for '") + key + "'");
     return value;
+  }
+
+  // `properties: [top, wooden]`: lower-case words, each once.
+  Result<std::vector<std::string>> optional_properties(const YAML::Node& map) const {
+    const YAML::Node node = map["properties"];
+    std::vector<std::string> words;
+    if (!node) return words;
+    if (!node.IsSequence()) return fail(node, "expected 'properties': a list of words such as [top] or [blue, small]");
+    for (const YAML::Node& word : node) {
+      if (!word.IsScalar() || !is_name(word.Scalar()))
+        return fail(word, "expected a property: a lower-case word such as top, blue or left");
+      if (std::find(words.begin(), words.end(), word.Scalar()) != words.end())
+        return fail(word, "the property '" + word.Scalar() + "' is given twice");
+      words.push_back(word.Scalar());
+    }
+    return words;
   }
 
   Status load_domain(const YAML::Node& root, Scenario& scenario) {
@@ -160,23 +230,40 @@ class ScenarioBuilder {
     return universe_.add(std::move(info));
   }
 
+  // Look-alike places (one category) that carry properties must differ in
+  // them: "the top drawer" has to name one drawer.
+  Status check_told_apart(const YAML::Node& at, ObjectId place) const {
+    const ObjectInfo& info = universe_.info(place);
+    for (ObjectId other : universe_.with_category(info.category)) {
+      if (other == place) continue;
+      const ObjectInfo& o = universe_.info(other);
+      if (o.properties == info.properties && !info.properties.empty())
+        return fail(at, info.id + " has the same properties as " + o.id + ", so no one could tell them apart");
+    }
+    return {};
+  }
+
   Status read_places(const YAML::Node& root, Scenario&) {
     const YAML::Node places = root["places"];
     if (!places || !places.IsSequence() || places.size() == 0)
       return fail(places ? places : root, "expected 'places': a list of surfaces and receptacles");
     for (const YAML::Node& p : places) {
       if (!p.IsMap()) return fail(p, "expected a place such as {category: fridge, kind: receptacle, door: closed}");
-      if (auto s = check_keys(p, {"category", "kind", "door"}); !s) return s;
+      if (auto s = check_keys(p, {"category", "kind", "door", "properties"}); !s) return s;
       auto category = required_name(p, "category");
       if (!category) return tl::unexpected(category.error());
       auto kind_text = required_string(p, "kind");
       if (!kind_text) return tl::unexpected(kind_text.error());
       auto kind = parse_object_kind(*kind_text);
       if (!kind || *kind == ObjectKind::kItem) return fail(p["kind"], "expected kind 'surface' or 'receptacle', not '" + *kind_text + "'");
+      auto properties = optional_properties(p);
+      if (!properties) return tl::unexpected(properties.error());
       auto added = add_object(p, ObjectInfo{"", *category, *kind,
-                                            types_[*kind == ObjectKind::kSurface ? "surface" : "receptacle"], {}});
+                                            types_[*kind == ObjectKind::kSurface ? "surface" : "receptacle"],
+                                            std::move(*properties)});
       if (!added) return tl::unexpected(added.error());
       ObjectId id = *added;
+      if (auto s = check_told_apart(p, id); !s) return s;
       facts_.push_back(Fact(*kind == ObjectKind::kSurface ? vocabulary_.surface : vocabulary_.receptacle, {id}));
       if (const YAML::Node door = p["door"]) {
         if (*kind != ObjectKind::kReceptacle) return fail(door, "only a receptacle can have a door");
@@ -199,12 +286,28 @@ class ScenarioBuilder {
     return *id;
   }
 
+  // A subtask's place: the id of one place, or a category of places
+  // meaning every place of it.
+  Result<std::vector<ObjectId>> places_named(const YAML::Node& map, const char* key) const {
+    auto name = required_string(map, key);
+    if (!name) return tl::unexpected(name.error());
+    if (auto id = universe_.find(*name); id && universe_.info(*id).kind != ObjectKind::kItem)
+      return std::vector<ObjectId>{*id};
+    std::vector<ObjectId> places;
+    for (ObjectId id : universe_.with_category(*name))
+      if (universe_.info(id).kind != ObjectKind::kItem) places.push_back(id);
+    if (places.empty())
+      return fail(map[key], "expected the id of a place, such as table1, or a category of places, such as bag; "
+                            "there is no place '" + *name + "'");
+    return places;
+  }
+
   Status read_objects(const YAML::Node& root, Scenario&) {
     const YAML::Node objects = root["objects"];
     if (!objects || !objects.IsSequence()) return fail(objects ? objects : root, "expected 'objects': a list");
     for (const YAML::Node& o : objects) {
       if (!o.IsMap()) return fail(o, "expected an object such as {category: ketchup, at: table1}");
-      if (auto s = check_keys(o, {"category", "at", "count"}); !s) return s;
+      if (auto s = check_keys(o, {"category", "at", "count", "properties"}); !s) return s;
       auto category = required_name(o, "category");
       if (!category) return tl::unexpected(category.error());
       auto place = place_named(o, "at");
@@ -212,9 +315,11 @@ class ScenarioBuilder {
       int count = 1;
       if (o["count"] && (!YAML::convert<int>::decode(o["count"], count) || count < 1 || count > 100000))
         return fail(o["count"], "expected a count between 1 and 100000");
+      auto properties = optional_properties(o);
+      if (!properties) return tl::unexpected(properties.error());
       bool on_surface = universe_.info(*place).kind == ObjectKind::kSurface;
       for (int i = 0; i < count; ++i) {
-        auto added = add_object(o, ObjectInfo{"", *category, ObjectKind::kItem, types_["item"], {}});
+        auto added = add_object(o, ObjectInfo{"", *category, ObjectKind::kItem, types_["item"], *properties});
         if (!added) return tl::unexpected(added.error());
         ObjectId id = *added;
         object_marks_[id] = o.Mark();
@@ -227,7 +332,8 @@ class ScenarioBuilder {
 
   Status read_task(const YAML::Node& root, Scenario& scenario) {
     const YAML::Node task = root["task"];
-    if (!task || !task.IsMap()) return fail(task ? task : root, "expected 'task': {name: ..., subtasks: [...]}");
+    if (!task) return {};  // a world for a person to teach in
+    if (!task.IsMap()) return fail(task, "expected 'task': {name: ..., subtasks: [...]}");
     if (auto s = check_keys(task, {"name", "subtasks"}); !s) return s;
     auto name = required_string(task, "name");
     if (!name) return tl::unexpected(name.error());
@@ -242,19 +348,43 @@ class ScenarioBuilder {
       if (!verb) return tl::unexpected(verb.error());
       for (const Subtask& other : scenario.task.subtasks)
         if (other.verb == *verb) return fail(s["verb"], "subtask '" + *verb + "' appears twice");
-      auto place = place_named(s, "place");
-      if (!place) return tl::unexpected(place.error());
-      scenario.task.subtasks.push_back(Subtask{*verb, *place});
+      auto places = places_named(s, "place");
+      if (!places) return tl::unexpected(places.error());
+      for (const Subtask& other : scenario.task.subtasks)
+        for (ObjectId place : *places)
+          if (other.covers(place))
+            return fail(s["place"], universe_.name(place) + " is already the place of subtask '" + other.verb + "'");
+      scenario.task.subtasks.push_back(Subtask{*verb, std::move(*places)});
     }
     return {};
   }
 
+  // Where an intent entry sends objects: `place:` (a surface or a
+  // receptacle) or, as before, `receptacle:`.
+  Result<ObjectId> destination(const YAML::Node& e) const {
+    if (e["place"] && e["receptacle"])
+      return fail(e["receptacle"], "give either 'place' or 'receptacle', not both");
+    if (e["receptacle"]) {
+      auto receptacle = place_named(e, "receptacle");
+      if (!receptacle) return receptacle;
+      if (universe_.info(*receptacle).kind != ObjectKind::kReceptacle)
+        return fail(e["receptacle"], "expected a receptacle; " + universe_.name(*receptacle) +
+                                         " is a surface (write place: " + universe_.name(*receptacle) + ")");
+      return receptacle;
+    }
+    if (!e["place"]) return fail(e, "missing key 'place' (where such objects go, such as fridge1 or shelf1)");
+    return place_named(e, "place");
+  }
+
   Status read_intent(const YAML::Node& root, Scenario& scenario) {
     const YAML::Node intent = root["intent"];
-    if (!intent || !intent.IsSequence()) return fail(intent ? intent : root, "expected 'intent': a list");
+    if (!intent) return {};  // the person teaching is the authority
+    if (!intent.IsSequence()) return fail(intent, "expected 'intent': a list");
+    if (!root["task"]) return fail(intent, "an intent needs a 'task' whose subtasks it names");
+    scenario.has_intent = true;
     for (const YAML::Node& e : intent) {
-      if (!e.IsMap()) return fail(e, "expected {subtask, category, receptacle, closed}");
-      if (auto s = check_keys(e, {"subtask", "category", "receptacle", "closed"}); !s) return s;
+      if (!e.IsMap()) return fail(e, "expected {subtask, category, place, closed}");
+      if (auto s = check_keys(e, {"subtask", "category", "place", "receptacle", "closed"}); !s) return s;
       IntentEntry entry;
       auto subtask = required_name(e, "subtask");
       if (!subtask) return tl::unexpected(subtask.error());
@@ -265,17 +395,15 @@ class ScenarioBuilder {
       if (!category) return tl::unexpected(category.error());
       if (scenario.find_intent(*subtask, *category))
         return fail(e, "intent for (" + *subtask + ", " + *category + ") is given twice");
-      auto receptacle = place_named(e, "receptacle");
-      if (!receptacle) return tl::unexpected(receptacle.error());
-      if (universe_.info(*receptacle).kind != ObjectKind::kReceptacle)
-        return fail(e["receptacle"], "expected a receptacle; " + universe_.name(*receptacle) + " is a surface");
+      auto place = destination(e);
+      if (!place) return tl::unexpected(place.error());
       auto closed = optional_bool(e, "closed", false);
       if (!closed) return tl::unexpected(closed.error());
-      if (*closed && std::find(facts_.begin(), facts_.end(), Fact(vocabulary_.openable, {*receptacle})) == facts_.end())
-        return fail(e["closed"], universe_.name(*receptacle) + " has no door, so it cannot end closed");
+      if (*closed && std::find(facts_.begin(), facts_.end(), Fact(vocabulary_.openable, {*place})) == facts_.end())
+        return fail(e["closed"], universe_.name(*place) + " has no door, so it cannot end closed");
       entry.subtask = *subtask;
       entry.category = *category;
-      entry.receptacle = *receptacle;
+      entry.place = *place;
       entry.closed = *closed;
       scenario.intent.push_back(std::move(entry));
     }
@@ -283,6 +411,7 @@ class ScenarioBuilder {
   }
 
   Status check_intent_complete(const Scenario& scenario) const {
+    if (!scenario.has_intent) return {};
     for (ObjectId o : scenario.world.universe->of_kind(ObjectKind::kItem)) {
       const Subtask* s = scenario.subtask_of(o);
       if (s == nullptr) continue;

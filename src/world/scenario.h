@@ -33,9 +33,15 @@ struct World {
 
 struct Subtask {
   std::string verb;  // "clear"
-  ObjectId place = 0;  // the surface or receptacle it empties: table1
+  // The surfaces or receptacles it empties, in id order: one place
+  // (`place: table1`), or every place of one category (`place: bag`: bag1,
+  // bag2, bag3). Never empty; several places always share a category.
+  std::vector<ObjectId> places;
+
+  bool covers(ObjectId place) const;
 };
 
+// Empty (no name, no subtasks) when the file has no `task`.
 struct TaskStructure {
   std::string name;  // "tidy kitchen"
   std::vector<Subtask> subtasks;
@@ -45,8 +51,9 @@ struct TaskStructure {
 struct IntentEntry {
   std::string subtask;   // "clear"
   std::string category;  // "ceramic-plate"
-  ObjectId receptacle = 0;
-  bool closed = false;   // the receptacle must end closed
+  // Where such objects go: a receptacle gives (in o p), a surface (on o p).
+  ObjectId place = 0;
+  bool closed = false;   // the place (a receptacle with a door) must end closed
 };
 
 struct Scenario {
@@ -54,14 +61,25 @@ struct Scenario {
   std::filesystem::path source;       // the YAML file
   std::filesystem::path domain_path;  // resolved relative to the YAML file
   World world;                        // world.state is the initial state
-  TaskStructure task;
+  TaskStructure task;                 // empty without `task`
   std::vector<IntentEntry> intent;
+  // Whether the file has an `intent` (possibly empty). Without one the
+  // person teaching is the only authority on the goals: there is nothing to
+  // measure completion against, and no simulated instructor.
+  bool has_intent = false;
+  // The published figures this scenario reproduces: "table3" for the
+  // paper's kitchen (Kirk et al., Table 3); empty for any other scenario.
+  std::string reference;
 
   const IntentEntry* find_intent(std::string_view subtask, std::string_view category) const;
-  // The instructor's goal for one object: (in o r), plus (closed r) if wanted.
+  // The instructor's goal for one object: (in o p) for a receptacle or
+  // (on o p) for a surface, plus (closed p) if wanted.
   std::optional<Goal> intended_goal(std::string_view subtask, ObjectId object) const;
-  // The subtask whose place the object starts at, if any.
+  // The subtask at one of whose places the object starts, if any.
   const Subtask* subtask_of(ObjectId object) const;
+  // The objects the intent is about: every item that starts at a subtask's
+  // place (each has an intent entry), in id order.
+  std::vector<ObjectId> objects_to_tidy() const;
   // All goal assertions the intent makes for this scenario's objects: one
   // placement per object to tidy plus one (closed r) per receptacle that
   // must end closed. Sorted, without duplicates.

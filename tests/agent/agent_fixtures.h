@@ -1,5 +1,6 @@
-// Shared helpers for the agent tests: scenarios, an instructor wrapper that
-// keeps every question, and one learning run with the simulated instructor.
+// Helpers for the agent tests: an instructor wrapper that keeps every
+// question, and one learning run with the simulated instructor. Paths and
+// scenario loading come from tests/common.
 #pragma once
 
 #include <filesystem>
@@ -10,31 +11,14 @@
 #include <gtest/gtest.h>
 
 #include "agent/agent.h"
+#include "common/paths.h"
+#include "common/scenarios.h"
 #include "instructor/simulated_instructor.h"
 #include "llm/factory.h"
 #include "world/scenario.h"
 #include "world/simulator.h"
 
 namespace apprentice::testing {
-
-inline std::filesystem::path source_path(std::string_view relative) {
-  return std::filesystem::path(APPRENTICE_SOURCE_DIR) / relative;
-}
-inline std::filesystem::path shared_path(std::string_view relative) {
-  return std::filesystem::path(APPRENTICE_SHARED_DIR) / relative;
-}
-inline std::filesystem::path corpus_path() {
-  return shared_path("data/stars-tidy-kitchen/goal_responses.jsonl");
-}
-
-inline Scenario load_or_die(const std::filesystem::path& path) {
-  auto scenario = load_scenario(path);
-  if (!scenario) {
-    ADD_FAILURE() << scenario.error().describe();
-    std::abort();
-  }
-  return std::move(*scenario);
-}
 
 // Passes questions on to `inner` and keeps them, with the world as it was.
 class RecordingInstructor final : public Instructor {

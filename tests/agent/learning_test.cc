@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "agent_fixtures.h"
+#include "common/scratch.h"
 #include "knowledge/store.h"
 #include "util/text.h"
 
@@ -144,8 +145,7 @@ TEST_F(Learning, NeverAsksTwiceForAGoalOfTheSameKind) {
 }
 
 TEST_F(Learning, NeverAsksTwiceForAGoalWithTheLlmEither) {
-  if (!std::filesystem::exists(testing::corpus_path()))
-    GTEST_SKIP() << "no " << testing::corpus_path() << " (../shared is not part of a clone)";
+  SKIP_WITHOUT_CORPUS();
   for (const char* condition : {"inst+llm", "inst+search2+llm", "inst+search4+llm", "search4+llm"}) {
     SCOPED_TRACE(condition);
     auto advisor = testing::corpus_advisor();
@@ -209,9 +209,8 @@ TEST_F(Learning, WhatIsLearnedPerformsTheTaskAloneInOneShot) {
 }
 
 TEST_F(Learning, EverythingLearnedIsStoredAsItIsLearned) {
-  auto dir = std::filesystem::path(::testing::TempDir()) / "apprentice_agent_store";
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
+  testing::ScratchDir scratch;
+  const std::filesystem::path& dir = scratch.path();
   {
     auto store = KnowledgeStore::open(dir / "k.sqlite");
     ASSERT_TRUE(store.has_value()) << store.error().describe();
@@ -245,9 +244,8 @@ class LeavingInstructor final : public Instructor {
 };
 
 TEST_F(Learning, AnInstructorWhoLeavesEndsTheRunAndKeepsWhatWasLearned) {
-  auto dir = std::filesystem::path(::testing::TempDir()) / "apprentice_agent_leaving";
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
+  testing::ScratchDir scratch;
+  const std::filesystem::path& dir = scratch.path();
   auto store = KnowledgeStore::open(dir / "k.sqlite");
   ASSERT_TRUE(store.has_value());
   AgentOptions options;

@@ -9,6 +9,7 @@
 
 #include "agent_fixtures.h"
 #include "knowledge/store.h"
+#include "common/scratch.h"
 #include "process.h"
 
 namespace apprentice {
@@ -35,16 +36,10 @@ std::vector<std::string> full_script() {
           "You are done."};
 }
 
-class Teach : public ::testing::Test {
+// Each test has a fresh directory of its own (testing::ScratchTest::dir_),
+// so that runs in parallel never share a store.
+class Teach : public testing::ScratchTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::path(::testing::TempDir()) / "apprentice_teach_tests" / info->name();
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   std::vector<std::string> teach_args(const std::string& condition = "inst+search4") const {
     return {APPRENTICE_BINARY, "teach", "--scenario", scenario_.string(), "--knowledge", knowledge().string(),
             "--condition", condition};
@@ -62,7 +57,6 @@ class Teach : public ::testing::Test {
   }
 
   fs::path scenario_ = testing::source_path("tests/agent/data/two-objects.yaml");
-  fs::path dir_;
 };
 
 TEST_F(Teach, LearnsTheTaskFromAScriptOnStdin) {

@@ -1,11 +1,7 @@
 // End-to-end tests of the apprentice binary: output and exit codes of the
 // world, plan and export-pddl subcommands (0 ok, 1 goal not reached, 2 bad
 // input), run as a user would run them.
-#include <sys/wait.h>
-
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -14,6 +10,9 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "common/paths.h"
+#include "common/process.h"
+#include "common/scratch.h"
 #include "search/iterative_deepening.h"
 #include "world/pddl.h"
 
@@ -28,24 +27,8 @@ namespace fs = std::filesystem;
 
 constexpr const char* kKetchupGoal = "(and (in ketchup1 fridge1) (closed fridge1))";
 
-std::string source(std::string_view relative) { return (fs::path(APPRENTICE_SOURCE_DIR) / relative).string(); }
+std::string source(std::string_view relative) { return testing::source_path(relative).string(); }
 std::string tidy_kitchen() { return source("data/scenarios/tidy-kitchen.yaml"); }
-
-std::string shell_quote(const std::string& arg) {
-  std::string out = "'";
-  for (char c : arg) {
-    if (c == '\'') out += "'\\''";
-    else out += c;
-  }
-  return out + "'";
-}
-
-std::string read_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 std::vector<std::string> lines_of(const std::string& text) {
   std::vector<std::string> out;
@@ -54,43 +37,11 @@ std::vector<std::string> lines_of(const std::string& text) {
   return out;
 }
 
-struct Invocation {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
+using testing::Invocation;
 
-class Cli : public ::testing::Test {
+class Cli : public testing::ScratchTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::path(::testing::TempDir()) / "apprentice_cli_tests" / (std::string(info->test_suite_name()) + "." + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  Invocation run(const std::vector<std::string>& args) const {
-    std::string command = shell_quote(APPRENTICE_BINARY);
-    for (const std::string& a : args) command += " " + shell_quote(a);
-    const fs::path out = dir_ / "stdout.txt";
-    const fs::path err = dir_ / "stderr.txt";
-    command += " >" + shell_quote(out.string()) + " 2>" + shell_quote(err.string()) + " </dev/null";
-    int status = std::system(command.c_str());
-    Invocation result;
-    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    result.out = read_file(out);
-    result.err = read_file(err);
-    return result;
-  }
-
-  fs::path write(const std::string& name, const std::string& text) const {
-    fs::path path = dir_ / name;
-    std::ofstream(path, std::ios::binary) << text;
-    return path;
-  }
-
-  fs::path dir_;
+  Invocation run(const std::vector<std::string>& args) const { return testing::run_cli(args, dir_, fs::path()); }
 };
 
 TEST_F(Cli, PlanFindsTheFourStepKetchupPlan) {
@@ -161,7 +112,7 @@ TEST_F(Cli, PlanIsDeterministic) {
 }
 
 TEST_F(Cli, BrokenScenarioExitsTwoWithFileAndLine) {
-  std::string text = read_file(tidy_kitchen());
+  std::string text = testing::read_text(tidy_kitchen());
   // Point the domain at the shipped file, then break the ketchup's place.
   text.replace(text.find("domain: ../domains/kitchen.pddl"), 31, "domain: " + source("data/domains/kitchen.pddl"));
   const std::string ketchup = "{category: ketchup, at: table1}";
@@ -204,7 +155,7 @@ TEST_F(Cli, MissingScenarioFileExitsTwo) {
 }
 
 TEST_F(Cli, MissingDomainFileExitsTwo) {
-  std::string text = read_file(tidy_kitchen());
+  std::string text = testing::read_text(tidy_kitchen());
   text.replace(text.find("domain: ../domains/kitchen.pddl"), 31, "domain: nowhere.pddl");
   fs::path path = write("nodomain.yaml", text);
   Invocation r = run({"world", "--scenario", path.string()});

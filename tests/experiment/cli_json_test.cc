@@ -19,8 +19,8 @@ using ::testing::StartsWith;
 
 const std::vector<std::string> kKeys = {"assertions_achieved", "assertions_total", "completion_rate", "condition",
                                         "instructions",        "llm_calls",        "llm_ensemble",    "llm_failures",
-                                        "llm_tokens",          "relevance",        "search_nodes",    "wall_ms",
-                                        "words",               "yes_no"};
+                                        "llm_tokens",          "objects_done",     "objects_total",   "relevance",
+                                        "search_nodes",        "wall_ms",          "words",           "yes_no"};
 
 std::vector<std::string> keys_of(const json& object) {
   std::vector<std::string> keys;
@@ -33,8 +33,8 @@ void expect_types(const json& r, bool llm) {
   EXPECT_TRUE(r["condition"].is_string());
   EXPECT_TRUE(r["completion_rate"].is_number());
   EXPECT_TRUE(r["llm_ensemble"].is_boolean());
-  for (const char* key : {"assertions_achieved", "assertions_total", "instructions", "words", "yes_no", "llm_calls",
-                          "llm_tokens", "llm_failures", "search_nodes"}) {
+  for (const char* key : {"assertions_achieved", "assertions_total", "objects_done", "objects_total", "instructions",
+                          "words", "yes_no", "llm_calls", "llm_tokens", "llm_failures", "search_nodes"}) {
     EXPECT_TRUE(r[key].is_number_integer()) << key << " is " << r[key].dump();
     EXPECT_GE(r[key].get<long>(), 0) << key;
   }
@@ -91,6 +91,8 @@ TEST_F(ExperimentCli, JsonHasOneObjectPerConditionWithTheDocumentedKeys) {
   EXPECT_EQ(all[1]["yes_no"], 0);
   EXPECT_EQ(all[1]["assertions_achieved"], 35);
   EXPECT_EQ(all[1]["assertions_total"], 35);
+  EXPECT_EQ(all[1]["objects_done"], 30);
+  EXPECT_EQ(all[1]["objects_total"], 30);
   EXPECT_EQ(all[0]["yes_no"], 0);
   EXPECT_EQ(all[0]["search_nodes"], 0);
   EXPECT_GT(all[1]["search_nodes"].get<long>(), 0);
@@ -136,8 +138,41 @@ TEST_F(ExperimentCli, EachConditionsTranscriptIsItsOwnFileAsThePaperPrintsDialog
   EXPECT_THAT(testing::read_text(dir / "instruction.txt"),
               HasSubstr("Agent: What do I do next for clear?\nInstructor: Open the dishwasher.\n"));
   // The human-readable table compares with the paper.
-  EXPECT_THAT(run.out, HasSubstr("inst+search4       ours         100.0        --       40     603       0"));
-  EXPECT_THAT(run.out, HasSubstr("                   paper        100.0        --       40     603       0"));
+  EXPECT_THAT(run.out, HasSubstr("inst+search4       ours         100.0     30/30        --       40     603       0"));
+  EXPECT_THAT(run.out, HasSubstr("                   paper        100.0                  --       40     603       0"));
+  EXPECT_THAT(run.out, HasSubstr("the floor (task structure and one goal per goal type) is 40 instructions, 603 words"));
+}
+
+TEST_F(ExperimentCli, ThePapersRowsAppearOnlyBesideThePapersKitchen) {
+  testing::Invocation run = testing::run_cli(
+      {"experiment", "--scenario", "data/scenarios/tidy-kitchen-35.yaml", "--conditions", "inst+search4"}, dir_);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_THAT(run.out, HasSubstr("inst+search4       ours         100.0     35/35"));
+  EXPECT_THAT(run.out, ::testing::Not(HasSubstr("paper")));
+}
+
+// A scenario without an intent: a world to look at, plan in and teach in,
+// but nothing the simulated instructor could teach or completion be
+// measured against.
+TEST_F(ExperimentCli, WithoutAnIntentTheExperimentSaysWhatIsMissing) {
+  std::string text = testing::read_text(source_path("data/scenarios/tidy-kitchen.yaml"));
+  text = text.substr(0, text.find("# What the instructor wants."));
+  text.replace(text.find("domain: ../domains/kitchen.pddl"), 31, "domain: " + source_path("data/domains/kitchen.pddl").string());
+  const auto path = dir_ / "no-intent.yaml";
+  std::ofstream(path) << text;
+  testing::Invocation run = testing::run_cli({"experiment", "--scenario", path.string()}, dir_);
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_THAT(run.err, HasSubstr("no-intent.yaml: the experiment needs a scenario with a task and an intent"));
+  EXPECT_THAT(run.err, HasSubstr("this one has no intent"));
+  EXPECT_EQ(run.out, "");
+  for (std::vector<std::string> args :
+       {std::vector<std::string>{"world", "--scenario", path.string()},
+        std::vector<std::string>{"plan", "--scenario", path.string(), "--goal", "(in ketchup1 fridge1)"},
+        std::vector<std::string>{"export-pddl", "--scenario", path.string(), "--goal", "(in ketchup1 fridge1)",
+                                 "--out", (dir_ / "pddl").string()}}) {
+    testing::Invocation ok = testing::run_cli(args, dir_);
+    EXPECT_EQ(ok.exit_code, 0) << args[0] << ": " << ok.err;
+  }
 }
 
 TEST_F(ExperimentCli, AnLlmConditionWithoutAnLlmIsAnError) {

@@ -1,42 +1,23 @@
-// Shared helpers for the experiment tests: scenarios, LLM backends built
-// from specs with small timeouts, and the apprentice binary run as a user
-// runs it.
+// Helpers for the experiment tests: LLM backends built from specs with
+// small timeouts, and one condition run. Paths, scenarios, running the
+// binary (run_cli) and ScratchTest come from tests/common.
 #pragma once
 
-#include <sys/wait.h>
-
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
-#include <vector>
 
 #include <gtest/gtest.h>
 
+#include "common/paths.h"
+#include "common/process.h"
+#include "common/scenarios.h"
+#include "common/scratch.h"
 #include "experiment/experiment.h"
 #include "llm/factory.h"
 
 namespace apprentice::testing {
 
 namespace fs = std::filesystem;
-
-inline fs::path source_path(std::string_view relative) { return fs::path(APPRENTICE_SOURCE_DIR) / relative; }
-inline fs::path shared_path(std::string_view relative) { return fs::path(APPRENTICE_SHARED_DIR) / relative; }
-inline fs::path corpus_path() { return shared_path("data/stars-tidy-kitchen/goal_responses.jsonl"); }
-inline bool have_corpus() { return fs::exists(corpus_path()); }
-#define SKIP_WITHOUT_CORPUS()                                                                   \
-  if (!::apprentice::testing::have_corpus())                                                    \
-  GTEST_SKIP() << "no " << ::apprentice::testing::corpus_path() << " (../shared is not part of a clone)"
-
-inline Scenario load_or_die(const fs::path& path) {
-  auto scenario = load_scenario(path);
-  if (!scenario) {
-    ADD_FAILURE() << scenario.error().describe();
-    std::abort();
-  }
-  return std::move(*scenario);
-}
 
 // Small enough that a failing server costs a test little time.
 inline llm::LlmOptions fast_failing_options() {
@@ -72,55 +53,5 @@ inline ConditionResult run(const Scenario& scenario, std::string_view condition_
   EXPECT_TRUE(result.has_value()) << condition_name << ": " << (result ? "" : result.error().describe());
   return result ? std::move(*result) : ConditionResult{};
 }
-
-inline std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-inline std::string shell_quote(const std::string& arg) {
-  std::string out = "'";
-  for (char c : arg) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
-
-struct Invocation {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-// Runs the apprentice binary with `args` in `cwd`, stdin from /dev/null.
-inline Invocation run_cli(const std::vector<std::string>& args, const fs::path& scratch,
-                          const fs::path& cwd = fs::path(APPRENTICE_SOURCE_DIR)) {
-  std::string command = "cd " + shell_quote(cwd.string()) + " && " + shell_quote(APPRENTICE_BINARY);
-  for (const std::string& a : args) command += " " + shell_quote(a);
-  const fs::path out = scratch / "stdout.txt", err = scratch / "stderr.txt";
-  command += " >" + shell_quote(out.string()) + " 2>" + shell_quote(err.string()) + " </dev/null";
-  int status = std::system(command.c_str());
-  Invocation result;
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  result.out = read_text(out);
-  result.err = read_text(err);
-  return result;
-}
-
-// A scratch directory per test, removed afterwards.
-class ScratchTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    std::string name = std::string(info->test_suite_name()) + "." + info->name();
-    for (char& c : name)
-      if (c == '/') c = '_';
-    dir_ = fs::path(::testing::TempDir()) / "apprentice_experiment_tests" / name;
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
-};
 
 }  // namespace apprentice::testing

@@ -116,12 +116,13 @@ TEST_F(SixConditionsCli, TheIssuesCommandRunsAllSix) {
   // As the issue has it, from the checkout, with the corpus beside it.
   SKIP_WITHOUT_CORPUS();
   const auto relative = std::filesystem::path("..") / "shared" / "data" / "stars-tidy-kitchen" / "goal_responses.jsonl";
-  if (!std::filesystem::exists(testing::source_path("") / relative)) GTEST_SKIP() << "../shared is elsewhere";
+  APPRENTICE_REQUIRE_SHARED(testing::source_path("") / relative);
   testing::Invocation run = testing::run_cli(
       {"experiment", "--scenario", "data/scenarios/tidy-kitchen-35.yaml", "--llm", "corpus:" + relative.string()},
       dir_);
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  EXPECT_THAT(run.out, HasSubstr("Scenario tidy-kitchen-35 (40 goal assertions); LLM answers from corpus"));
+  EXPECT_THAT(run.out, HasSubstr("Scenario tidy-kitchen-35: 35 objects to tidy, 40 goal assertions;"));
+  EXPECT_THAT(run.out, HasSubstr("; LLM answers from corpus"));
   for (const std::string& name : paper_condition_names())
     EXPECT_THAT(run.out, HasSubstr("\n" + name + std::string(19 - name.size(), ' ') + "ours ")) << name;
 }

@@ -1,5 +1,5 @@
-// Shared helpers for the instructor tests: shipped scenarios, objects by
-// name, and an instructor that replies from a list.
+// Helpers for the instructor tests: an instructor that replies from a list.
+// Paths, scenarios and objects by name come from tests/common.
 #pragma once
 
 #include <deque>
@@ -10,33 +10,11 @@
 
 #include <gtest/gtest.h>
 
+#include "common/paths.h"
+#include "common/world_helpers.h"
 #include "instructor/instructor.h"
-#include "world/scenario.h"
 
 namespace apprentice::testing {
-
-inline std::filesystem::path source_path(std::string_view relative) {
-  return std::filesystem::path(APPRENTICE_SOURCE_DIR) / relative;
-}
-
-inline std::filesystem::path shared_path(std::string_view relative) {
-  return std::filesystem::path(APPRENTICE_SHARED_DIR) / relative;
-}
-
-inline Scenario load_or_die(const std::filesystem::path& path) {
-  auto scenario = load_scenario(path);
-  if (!scenario) {
-    ADD_FAILURE() << scenario.error().describe();
-    std::abort();
-  }
-  return std::move(*scenario);
-}
-
-inline ObjectId object(const World& world, std::string_view id) {
-  auto found = world.universe->find(id);
-  EXPECT_TRUE(found.has_value()) << "no object " << id;
-  return found.value_or(0);
-}
 
 // Replies with the given lines in order, then kCancelled; keeps what it
 // was asked and told.

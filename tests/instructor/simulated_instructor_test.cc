@@ -159,7 +159,7 @@ Script read_script(const std::filesystem::path& path) {
 
 TEST_F(SimulatedInstructorTest, GoalDescriptionsAreTheScriptsLinesForAll35Objects) {
   const auto path = shared_path("data/stars-tidy-kitchen/instructor_script.txt");
-  if (!std::filesystem::exists(path)) GTEST_SKIP() << "no " << path << " (../shared is not part of a clone)";
+  APPRENTICE_REQUIRE_SHARED(path);
   Script script = read_script(path);
   ASSERT_EQ(script.goal_lines, 35);
   ASSERT_EQ(script.goals.size(), 35u);
@@ -169,7 +169,7 @@ TEST_F(SimulatedInstructorTest, GoalDescriptionsAreTheScriptsLinesForAll35Object
 
 TEST_F(SimulatedInstructorTest, TaskStructureLinesAreTheScriptsLines) {
   const auto path = shared_path("data/stars-tidy-kitchen/instructor_script.txt");
-  if (!std::filesystem::exists(path)) GTEST_SKIP() << "no " << path << " (../shared is not part of a clone)";
+  APPRENTICE_REQUIRE_SHARED(path);
   Script script = read_script(path);
   SimulatedInstructor instructor(kitchen35_);
   std::set<std::string> said{reply(instructor, about(QuestionKind::kTaskName, ""), kitchen35_.world)};

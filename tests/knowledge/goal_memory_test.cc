@@ -83,7 +83,7 @@ TEST_F(GoalMemoryTest, EveryIntendedGoalRoundTripsToEveryObjectOfItsCategory) {
     auto intended = scenario_.intended_goal(entry.subtask, first);
     ASSERT_TRUE(intended.has_value());
     const Subtask* subtask = scenario_.subtask_of(first);
-    GoalKey key{"tidy kitchen", entry.subtask, entry.category, world_.universe->info(subtask->place).category};
+    GoalKey key{"tidy kitchen", entry.subtask, entry.category, world_.universe->info(subtask->places.front()).category};
     auto k = generalize_goal(world_, key, first, *intended, {});
     ASSERT_TRUE(k.has_value()) << k.error().describe();
     for (const Scenario* s : {&scenario_, &similar}) {

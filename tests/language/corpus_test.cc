@@ -187,7 +187,8 @@ class StarsCorpus : public ::testing::Test {
     lines_ = nullptr;
   }
   void SetUp() override {
-    if (results_ == nullptr) GTEST_SKIP() << "shared data absent: " << shared_path(kCorpus.string());
+    APPRENTICE_REQUIRE_SHARED(shared_path(kCorpus.string()));
+    ASSERT_NE(results_, nullptr) << "the corpus did not load";
   }
 
   static std::vector<CorpusLine>* lines_;

@@ -1,5 +1,6 @@
-// Shared helpers for the language tests: the shipped 35-object kitchen, one
-// Grounder with WordNet for the whole binary, and the shared STARS data.
+// Helpers for the language tests: the shipped 35-object kitchen, one
+// Grounder with WordNet for the whole binary. Paths (the shared STARS data
+// too) and scenario loading come from tests/common.
 #pragma once
 
 #include <cstdlib>
@@ -11,30 +12,19 @@
 #include <gtest/gtest.h>
 #include <spdlog/spdlog.h>
 
+#include "common/paths.h"
+#include "common/scenarios.h"
 #include "language/grounding.h"
-#include "world/scenario.h"
 
 namespace apprentice::language::testing {
 
-inline std::filesystem::path source_path(std::string_view relative) {
-  return std::filesystem::path(APPRENTICE_SOURCE_DIR) / relative;
-}
-
-inline std::filesystem::path shared_path(std::string_view relative) {
-  return std::filesystem::path(APPRENTICE_SHARED_DIR) / relative;
-}
+using apprentice::testing::shared_path;
+using apprentice::testing::source_path;
 
 // The scenario, loaded once; a failure to load aborts the binary, since
 // every test below needs it.
 inline const Scenario& kitchen35() {
-  static const Scenario scenario = [] {
-    auto loaded = load_scenario(source_path("data/scenarios/tidy-kitchen-35.yaml"));
-    if (!loaded) {
-      ADD_FAILURE() << loaded.error().describe();
-      std::abort();
-    }
-    return std::move(*loaded);
-  }();
+  static const Scenario scenario = apprentice::testing::shipped_scenario("tidy-kitchen-35");
   return scenario;
 }
 

@@ -9,6 +9,9 @@
 #include "llm/factory.h"
 #include "llm/retrieval.h"
 
+#include "common/paths.h"
+#include "common/scratch.h"
+
 namespace apprentice::llm {
 namespace {
 
@@ -69,7 +72,8 @@ TEST(CorpusClientTest, OneConditionKeepsItsRankOrder) {
 // (the rank field), not in the order of the lines nor by how often they
 // recur; and they carry no invented probability.
 TEST(CorpusClientTest, AConditionIsInItsRankOrderWithoutProbabilities) {
-  const auto path = std::filesystem::temp_directory_path() / "apprentice_rank_corpus.jsonl";
+  ::apprentice::testing::ScratchDir scratch;
+  const auto path = scratch / "rank_corpus.jsonl";
   std::ofstream(path) << R"({"condition":"A","object":"mug","rank":2,"response":"the goal is that the mug is in the sink"}
 {"condition":"A","object":"mug","rank":0,"response":"the goal is that the mug is in the cupboard"}
 {"condition":"A","object":"mug","rank":1,"response":"the goal is that the mug is in the sink"}
@@ -80,7 +84,6 @@ TEST(CorpusClientTest, AConditionIsInItsRankOrderWithoutProbabilities) {
   auto a = open_corpus(path.string(), {"A"});
   auto ensemble = open_corpus(path.string(), kEnsemble);
   auto several = CorpusClient::open(path, {});  // no TBP, two conditions: must choose
-  std::filesystem::remove(path);
   ASSERT_NE(a, nullptr);
   auto answers = a->ranked("mug", "", "");
   ASSERT_EQ(answers.size(), 3u);
@@ -204,17 +207,17 @@ TEST(CorpusClientTest, BadLinesNameTheLine) {
 }
 
 TEST(CorpusClientTest, NumbersOutOfRangeAreBadLinesNotExceptions) {
-  const auto path = std::filesystem::temp_directory_path() / "apprentice_corpus_1e400.jsonl";
+  ::apprentice::testing::ScratchDir scratch;
+  const auto path = scratch / "corpus_1e400.jsonl";
   std::ofstream(path) << "{\"object\": \"mug\", \"response\": \"x\", \"rank\": 1e400}\n";
   auto corpus = CorpusClient::open(path);
-  std::filesystem::remove(path);
   ASSERT_FALSE(corpus.has_value());
   EXPECT_EQ(corpus.error().code, ErrorCode::kDataLoss);
   EXPECT_NE(corpus.error().message.find(":1:"), std::string::npos) << corpus.error().message;
 }
 
 TEST(CorpusClientTest, RealStarsCorpus) {
-  if (!std::filesystem::exists(kStars)) GTEST_SKIP() << "shared data absent: " << kStars;
+  APPRENTICE_REQUIRE_SHARED(kStars);
   auto pooled = open_corpus(kStars, kEnsemble);
   ASSERT_NE(pooled, nullptr);
   auto plate = pooled->ranked("ceramic-plate", "clear", "table");

@@ -7,6 +7,8 @@
 #include <sstream>
 #include <vector>
 
+#include "common/paths.h"
+
 namespace apprentice::llm {
 namespace {
 
@@ -109,8 +111,9 @@ TEST(PromptsTest, ActionPromptNumbersTheStepsSoFar) {
 }
 
 TEST(PromptsTest, MatchesEveryPromptPrintedInThePaper) {
+  APPRENTICE_REQUIRE_SHARED(kPaper);
   std::ifstream in(kPaper);
-  if (!in) GTEST_SKIP() << "the paper's source is not at " << kPaper << " (shared data absent)";
+  ASSERT_TRUE(in) << "cannot read " << kPaper;
   std::stringstream buffer;
   buffer << in.rdbuf();
   const std::string paper = buffer.str();

@@ -286,7 +286,7 @@ TEST(SearchScaling, IrrelevantObjectsDoNotChangeTheSearch) {
   for (ObjectId r : universe.of_kind(ObjectKind::kReceptacle)) places.push_back(r);
   for (int i = 0; i < 2000; ++i) {
     ObjectId id = universe.add(ObjectInfo{"extra" + std::to_string(i), "extra", ObjectKind::kItem,
-                                          *world.domain->find_type("item")});
+                                          *world.domain->find_type("item"), {}});
     ObjectId place = places[static_cast<std::size_t>(i) % places.size()];
     facts.push_back(Fact(world.vocabulary.grabbable, {id}));
     bool surface = universe.info(place).kind == ObjectKind::kSurface;

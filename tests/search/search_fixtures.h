@@ -1,6 +1,6 @@
-// Shared helpers for the search tests: the kitchen domain, generated small
+// Helpers for the search tests: the kitchen domain, generated small
 // kitchens, and an independent breadth-first search that serves as the
-// reference for optimality.
+// reference for optimality. Paths and scenarios come from tests/common.
 #pragma once
 
 #include <cstdlib>
@@ -15,6 +15,8 @@
 
 #include <gtest/gtest.h>
 
+#include "common/paths.h"
+#include "common/scenarios.h"
 #include "search/iterative_deepening.h"
 #include "world/action.h"
 #include "world/pddl.h"
@@ -24,20 +26,7 @@
 
 namespace apprentice::testing {
 
-inline std::filesystem::path source_path(std::string_view relative) {
-  return std::filesystem::path(APPRENTICE_SOURCE_DIR) / relative;
-}
-
-inline Scenario load_or_die(const std::filesystem::path& path) {
-  auto scenario = load_scenario(path);
-  if (!scenario) {
-    ADD_FAILURE() << scenario.error().describe();
-    std::abort();
-  }
-  return std::move(*scenario);
-}
-
-inline Scenario tidy_kitchen() { return load_or_die(source_path("data/scenarios/tidy-kitchen.yaml")); }
+inline Scenario tidy_kitchen() { return shipped_scenario("tidy-kitchen"); }
 
 // The kitchen domain, read once.
 inline std::shared_ptr<const Domain> kitchen_domain() {
@@ -131,7 +120,7 @@ inline Problem build_problem(const WorldSpec& spec) {
     std::string category = p.surface ? "shelf" : (p.door ? "cabinet" : "bin");
     ObjectKind kind = p.surface ? ObjectKind::kSurface : ObjectKind::kReceptacle;
     ObjectId id = universe.add(ObjectInfo{category + std::to_string(i), category, kind,
-                                          *domain->find_type(p.surface ? "surface" : "receptacle")});
+                                          *domain->find_type(p.surface ? "surface" : "receptacle"), {}});
     places.push_back(id);
     facts.push_back(Fact(p.surface ? v.surface : v.receptacle, {id}));
     if (!p.surface && p.door) {
@@ -142,7 +131,7 @@ inline Problem build_problem(const WorldSpec& spec) {
   bool hand_full = false;
   for (std::size_t i = 0; i < spec.item_at.size(); ++i) {
     ObjectId id = universe.add(ObjectInfo{"thing" + std::to_string(i), "thing", ObjectKind::kItem,
-                                          *domain->find_type("item")});
+                                          *domain->find_type("item"), {}});
     items.push_back(id);
     facts.push_back(Fact(v.grabbable, {id}));
     int at = spec.item_at[i];

@@ -209,10 +209,10 @@ TEST(PddlReader, EqualityDomainGroundsWithoutSelfMoves) {
   Universe universe;
   TypeId item = *domain->find_type("item");
   TypeId place = *domain->find_type("place");
-  ObjectId box = universe.add({"box1", "box", ObjectKind::kItem, item});
-  ObjectId a = universe.add({"hall1", "hall", ObjectKind::kSurface, place});
-  ObjectId b = universe.add({"room1", "room", ObjectKind::kSurface, place});
-  ObjectId c = universe.add({"yard1", "yard", ObjectKind::kSurface, place});
+  ObjectId box = universe.add({"box1", "box", ObjectKind::kItem, item, {}});
+  ObjectId a = universe.add({"hall1", "hall", ObjectKind::kSurface, place, {}});
+  ObjectId b = universe.add({"room1", "room", ObjectKind::kSurface, place, {}});
+  ObjectId c = universe.add({"yard1", "yard", ObjectKind::kSurface, place, {}});
   PredicateId at = *domain->find_predicate("at");
   PredicateId free = *domain->find_predicate("free");
   State state({Fact(at, {box, a}), Fact(free, {a}), Fact(free, {b}), Fact(free, {c})});
@@ -239,9 +239,9 @@ TEST(PddlReader, PositiveEqualityIsEnforcedToo) {
   auto domain = parse_domain(join_lines(lines), "d.pddl");
   ASSERT_TRUE(domain.has_value()) << domain.error().describe();
   Universe universe;
-  ObjectId box = universe.add({"box1", "box", ObjectKind::kItem, *domain->find_type("item")});
-  ObjectId a = universe.add({"hall1", "hall", ObjectKind::kSurface, *domain->find_type("place")});
-  ObjectId b = universe.add({"room1", "room", ObjectKind::kSurface, *domain->find_type("place")});
+  ObjectId box = universe.add({"box1", "box", ObjectKind::kItem, *domain->find_type("item"), {}});
+  ObjectId a = universe.add({"hall1", "hall", ObjectKind::kSurface, *domain->find_type("place"), {}});
+  ObjectId b = universe.add({"room1", "room", ObjectKind::kSurface, *domain->find_type("place"), {}});
   std::vector<ObjectId> all = {box, a, b};
   std::vector<Action> actions = ground_actions(*domain, universe, all, State());
   ASSERT_EQ(actions.size(), 2u);

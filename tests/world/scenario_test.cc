@@ -9,6 +9,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "common/scratch.h"
+
 #include "world_fixtures.h"
 
 namespace apprentice {
@@ -34,8 +36,8 @@ TEST(ShippedScenarios, TidyKitchenHasThePapersCounts) {
   ASSERT_EQ(s.task.subtasks.size(), 3u);
   EXPECT_EQ(s.task.name, "tidy kitchen");
   EXPECT_EQ(s.task.subtasks[0].verb, "clear");
-  EXPECT_EQ(s.task.subtasks[0].place, object(s.world, "table1"));
-  EXPECT_EQ(s.task.subtasks[2].place, object(s.world, "dish-rack1"));
+  EXPECT_EQ(s.task.subtasks[0].places, std::vector<ObjectId>{object(s.world, "table1")});
+  EXPECT_EQ(s.task.subtasks[2].places, std::vector<ObjectId>{object(s.world, "dish-rack1")});
 
   std::vector<std::string> doors;
   for (ObjectId r : u.of_kind(ObjectKind::kReceptacle)) {
@@ -87,8 +89,8 @@ TEST(ShippedScenarios, IntentGivesPerObjectGoals) {
   ASSERT_TRUE(paper.has_value());
   EXPECT_EQ(format_goal(*w.domain, *w.universe, *paper), "(in paper-plate1 garbage1)");
   // The same category means different things in different subtasks.
-  EXPECT_EQ(s.find_intent("store", "mug")->receptacle, object(w, "dishwasher1"));
-  EXPECT_EQ(s.find_intent("unload", "mug")->receptacle, object(w, "cupboard1"));
+  EXPECT_EQ(s.find_intent("store", "mug")->place, object(w, "dishwasher1"));
+  EXPECT_EQ(s.find_intent("unload", "mug")->place, object(w, "cupboard1"));
   auto mug2 = s.intended_goal(s.subtask_of(object(w, "mug2"))->verb, object(w, "mug2"));
   ASSERT_TRUE(mug2.has_value());
   EXPECT_EQ(format_goal(*w.domain, *w.universe, *mug2), "(and (in mug2 cupboard1) (closed cupboard1))");
@@ -261,6 +263,33 @@ std::vector<BrokenCase> broken_cases() {
        ErrorCode::kInvalidInput, 16},
       {"place_not_a_map", 5, "  - table", 5, "expected a place such as {category: fridge"},
       {"name_not_text", 1, "name: [a, b]", 1, "expected a text value for 'name'"},
+      // yaml-cpp keeps the first of two equal keys; we refuse the file.
+      {"duplicate_top_key", 3, "name: again", 3, "the key 'name' is given twice in one mapping (first at line 1, column 1)"},
+      {"duplicate_flow_key", 10, "  - {category: ketchup, at: table1, at: sink1}", 10,
+       "the key 'at' is given twice in one mapping (first at line 10, column 25)"},
+      {"duplicate_nested_key", 14, "  name: tidy\n  name: tidy up", 15, "the key 'name' is given twice"},
+      {"place_and_receptacle", 19, "  - {subtask: clear, category: cup, place: garbage1, receptacle: garbage1}", 19,
+       "give either 'place' or 'receptacle', not both"},
+      {"intent_without_place", 19, "  - {subtask: clear, category: cup}", 19, "missing key 'place'"},
+      {"intent_closed_surface", 19, "  - {subtask: clear, category: cup, place: table1, closed: true}", 19,
+       "table1 has no door, so it cannot end closed"},
+      {"properties_not_a_list", 8, "  - {category: garbage, kind: receptacle, properties: top}", 8,
+       "expected 'properties': a list of words"},
+      {"property_upper_case", 8, "  - {category: garbage, kind: receptacle, properties: [Top]}", 8,
+       "expected a property: a lower-case word"},
+      {"property_twice", 8, "  - {category: garbage, kind: receptacle, properties: [top, top]}", 8,
+       "the property 'top' is given twice"},
+      {"look_alikes_alike", 8,
+       "  - {category: garbage, kind: receptacle, properties: [green]}\n"
+       "  - {category: garbage, kind: receptacle, properties: [green]}",
+       9, "garbage2 has the same properties as garbage1, so no one could tell them apart"},
+      {"subtask_place_twice", 16, "    - {verb: clear, place: table1}\n    - {verb: wipe, place: table}", 17,
+       "table1 is already the place of subtask 'clear'"},
+      {"subtask_no_such_category", 16, "    - {verb: clear, place: shelf}", 16,
+       "or a category of places, such as bag; there is no place 'shelf'"},
+      {"intent_without_task", 13, "# no task", 15, "an intent needs a 'task' whose subtasks it names",
+       ErrorCode::kInvalidInput, 16},
+      {"bad_reference", 3, "reference: table4", 3, "expected reference: table3"},
   };
 }
 
@@ -280,6 +309,134 @@ TEST_P(ScenarioErrorTable, RefusesWithFileLineAndReason) {
 
 INSTANTIATE_TEST_SUITE_P(Table, ScenarioErrorTable, ::testing::ValuesIn(broken_cases()),
                          [](const ::testing::TestParamInfo<BrokenCase>& info) { return std::string(info.param.name); });
+
+// --- Surfaces as destinations, properties, subtasks over several places,
+// and a scenario without an intent.
+
+TEST(ScenarioFormat, ASurfaceIsADestinationGivingOn) {
+  std::vector<std::string> lines = base_scenario();
+  lines[4] = "  - {category: table, kind: surface}\n  - {category: shelf, kind: surface}";
+  lines[18] = "  - {subtask: clear, category: cup, place: shelf1}";
+  auto s = parse_scenario(join_lines(lines), kSource);
+  ASSERT_TRUE(s.has_value()) << s.error().describe();
+  const World& w = s->world;
+  EXPECT_EQ(s->find_intent("clear", "cup")->place, object(w, "shelf1"));
+  auto goal = s->intended_goal("clear", object(w, "cup2"));
+  ASSERT_TRUE(goal.has_value());
+  EXPECT_EQ(format_goal(*w.domain, *w.universe, *goal), "(on cup2 shelf1)");
+  // `receptacle:` is still read, and `place:` may name a receptacle too.
+  goal = s->intended_goal("clear", object(w, "ketchup1"));
+  ASSERT_TRUE(goal.has_value());
+  EXPECT_EQ(format_goal(*w.domain, *w.universe, *goal), "(and (in ketchup1 fridge1) (closed fridge1))");
+  lines[17] = "  - {subtask: clear, category: ketchup, place: fridge1, closed: true}";
+  auto again = parse_scenario(join_lines(lines), kSource);
+  ASSERT_TRUE(again.has_value()) << again.error().describe();
+  EXPECT_EQ(again->goal_assertions(), s->goal_assertions());
+  EXPECT_EQ(s->goal_assertions().size(), 4u);  // ketchup in, fridge closed, two cups on the shelf
+}
+
+TEST(ScenarioFormat, PropertiesTellLookAlikesApart) {
+  std::vector<std::string> lines = base_scenario();
+  lines[7] =
+      "  - {category: garbage, kind: receptacle}\n"
+      "  - {category: drawer, kind: receptacle, door: closed, properties: [top]}\n"
+      "  - {category: drawer, kind: receptacle, door: closed, properties: [bottom, wooden]}";
+  lines[9] = "  - {category: ketchup, at: table1, properties: [red]}";
+  auto s = parse_scenario(join_lines(lines), kSource);
+  ASSERT_TRUE(s.has_value()) << s.error().describe();
+  const Universe& u = *s->world.universe;
+  EXPECT_EQ(u.info(object(s->world, "drawer1")).properties, std::vector<std::string>{"top"});
+  EXPECT_EQ(u.info(object(s->world, "drawer2")).properties, (std::vector<std::string>{"bottom", "wooden"}));
+  EXPECT_EQ(u.info(object(s->world, "ketchup1")).properties, std::vector<std::string>{"red"});
+  EXPECT_TRUE(u.info(object(s->world, "garbage1")).properties.empty());
+  // Ids do not change: the properties are words, not names.
+  EXPECT_EQ(u.with_category("drawer").size(), 2u);
+}
+
+TEST(ScenarioFormat, ASubtaskPlaceMayNameEveryPlaceOfACategory) {
+  std::vector<std::string> lines = base_scenario();
+  lines[5] =
+      "  - {category: sink, kind: receptacle}\n"
+      "  - {category: bag, kind: receptacle, properties: [blue]}\n"
+      "  - {category: bag, kind: receptacle, properties: [green]}";
+  lines[11] = "  - {category: plate, at: bag1}\n  - {category: plate, at: bag2}";
+  lines[15] = "    - {verb: clear, place: table1}\n    - {verb: unload, place: bag}";
+  lines[18] = "  - {subtask: clear, category: cup, receptacle: garbage1}\n  - {subtask: unload, category: plate, place: sink1}";
+  auto s = parse_scenario(join_lines(lines), kSource);
+  ASSERT_TRUE(s.has_value()) << s.error().describe();
+  const World& w = s->world;
+  ASSERT_EQ(s->task.subtasks.size(), 2u);
+  EXPECT_EQ(s->task.subtasks[0].places, std::vector<ObjectId>{object(w, "table1")});
+  EXPECT_EQ(s->task.subtasks[1].places, (std::vector<ObjectId>{object(w, "bag1"), object(w, "bag2")}));
+  EXPECT_TRUE(s->task.subtasks[1].covers(object(w, "bag2")));
+  EXPECT_FALSE(s->task.subtasks[1].covers(object(w, "sink1")));
+  EXPECT_EQ(s->subtask_of(object(w, "plate2")), &s->task.subtasks[1]);
+  EXPECT_EQ(s->objects_to_tidy().size(), 5u);  // ketchup, two cups, two plates
+  // An id still names one place, even where its category has several.
+  lines[15] = "    - {verb: clear, place: table1}\n    - {verb: unload, place: bag2}";
+  lines[11] = "  - {category: plate, at: bag2}";
+  auto one = parse_scenario(join_lines(lines), kSource);
+  ASSERT_TRUE(one.has_value()) << one.error().describe();
+  EXPECT_EQ(one->task.subtasks[1].places, std::vector<ObjectId>{object(one->world, "bag2")});
+}
+
+TEST(ScenarioFormat, WithoutAnIntentTheWorldStillLoads) {
+  std::vector<std::string> lines = base_scenario();
+  lines.resize(16);  // no intent
+  auto s = parse_scenario(join_lines(lines), kSource);
+  ASSERT_TRUE(s.has_value()) << s.error().describe();
+  EXPECT_FALSE(s->has_intent);
+  EXPECT_TRUE(s->intent.empty());
+  EXPECT_TRUE(s->goal_assertions().empty());
+  EXPECT_EQ(s->task.subtasks.size(), 1u);
+  // Nor is a task needed for a world a person teaches in.
+  lines.resize(12);
+  auto bare = parse_scenario(join_lines(lines), kSource);
+  ASSERT_TRUE(bare.has_value()) << bare.error().describe();
+  EXPECT_FALSE(bare->has_intent);
+  EXPECT_TRUE(bare->task.subtasks.empty());
+  EXPECT_EQ(bare->world.universe->size(), 8u);
+  // An empty intent is an intent: the check that it covers every object runs.
+  lines = base_scenario();
+  lines.resize(17);
+  auto empty = parse_scenario(join_lines(lines), kSource);
+  ASSERT_FALSE(empty.has_value());
+  EXPECT_THAT(empty.error().message, HasSubstr("expected 'intent': a list"));
+  lines.back() = "intent: []";
+  empty = parse_scenario(join_lines(lines), kSource);
+  ASSERT_FALSE(empty.has_value());
+  EXPECT_THAT(empty.error().message, HasSubstr("the intent says nothing about ketchup"));
+}
+
+TEST(ScenarioFormat, TheReferenceKeyMarksThePapersKitchen) {
+  EXPECT_EQ(load_or_die(tidy_kitchen_path()).reference, "table3");
+  EXPECT_EQ(load_or_die(source_path("data/scenarios/tidy-kitchen-35.yaml")).reference, "");
+  auto s = parse_scenario(join_lines(base_scenario()), kSource);
+  ASSERT_TRUE(s.has_value());
+  EXPECT_EQ(s->reference, "");
+  EXPECT_TRUE(s->has_intent);
+}
+
+// The example of docs/scenarios.md is a scenario that loads, with the
+// meaning the document gives it.
+TEST(ScenarioFormat, TheDocumentedExampleLoads) {
+  std::ifstream doc(source_path("docs/scenarios.md"));
+  std::string text((std::istreambuf_iterator<char>(doc)), std::istreambuf_iterator<char>());
+  auto start = text.find("```yaml\n");
+  ASSERT_NE(start, std::string::npos);
+  start += 8;
+  std::string yaml = text.substr(start, text.find("```", start) - start);
+  auto s = parse_scenario(yaml, source_path("data/scenarios/example.yaml"));
+  ASSERT_TRUE(s.has_value()) << s.error().describe();
+  const World& w = s->world;
+  EXPECT_EQ(w.location, "garage");
+  EXPECT_EQ(w.universe->info(object(w, "drawer2")).properties, std::vector<std::string>{"bottom"});
+  EXPECT_EQ(s->task.subtasks[1].places, (std::vector<ObjectId>{object(w, "bin1"), object(w, "bin2")}));
+  auto goal = s->intended_goal("empty", object(w, "paint-can1"));
+  ASSERT_TRUE(goal.has_value());
+  EXPECT_EQ(format_goal(*w.domain, *w.universe, *goal), "(on paint-can1 shelf1)");
+  EXPECT_EQ(s->find_intent("empty", "rag")->place, object(w, "trash-can1"));
+}
 
 TEST(ScenarioErrors, NotAMappingOrEmpty) {
   for (const char* text : {"- a\n- b\n", "", "just text\n"}) {
@@ -309,19 +466,7 @@ TEST(ScenarioErrors, RelativeDomainResolvesAgainstTheScenarioDirectory) {
   EXPECT_THAT(bad.error().message, HasSubstr("/tmp/elsewhere/inline.yaml:2:"));
 }
 
-class ScenarioWithBadDomain : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = std::filesystem::path(::testing::TempDir()) / "apprentice_world_tests";
-    std::filesystem::create_directories(dir_);
-  }
-  std::filesystem::path write(const std::string& name, const std::string& text) {
-    std::filesystem::path path = dir_ / name;
-    std::ofstream(path) << text;
-    return path;
-  }
-  std::filesystem::path dir_;
-};
+class ScenarioWithBadDomain : public testing::ScratchTest {};
 
 TEST_F(ScenarioWithBadDomain, PddlSyntaxErrorNamesBothFiles) {
   std::filesystem::path domain = write("broken.pddl", "(define (domain kitchen)\n  (:requirements :fluents))\n");

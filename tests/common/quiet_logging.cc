@@ -1,6 +1,7 @@
 // The library logs what the agent does (groundings, LLM failures) through
-// spdlog; in these tests that is noise unless asked for: set
-// APPRENTICE_TEST_LOG=1 to see it on stderr.
+// spdlog; in the tests that is noise unless asked for: set
+// APPRENTICE_TEST_LOG=1 to see it on stderr. Linked into every test binary
+// (an object library, so that the registration is not dropped by the linker).
 #include <cstdlib>
 
 #include <gtest/gtest.h>
