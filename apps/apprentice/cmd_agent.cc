@@ -10,6 +10,7 @@
 #include "experiment/experiment.h"
 #include "instructor/terminal_instructor.h"
 #include "llm/factory.h"
+#include "util/json.h"
 #include "util/log.h"
 #include "util/text.h"
 #include "world/pddl.h"
@@ -107,8 +108,7 @@ Status write_file(const std::filesystem::path& path, const std::string& text) {
 
 // The knowledge in a store, read once; the store is left as it was.
 Result<Knowledge> load_knowledge_copy(const std::filesystem::path& path, const Domain& domain) {
-  if (!std::filesystem::exists(path)) return make_error(ErrorCode::kNotFound, path.string() + ": no such knowledge store");
-  auto store = KnowledgeStore::open(path);
+  auto store = KnowledgeStore::open(path, StoreAccess::kReadOnly);
   if (!store) return tl::unexpected(store.error());
   return store->load(domain);
 }
@@ -178,7 +178,7 @@ CommandResult run_experiment(const ExperimentOptions& options, const std::string
   if (options.json) {
     nlohmann::json all = nlohmann::json::array();
     for (const ConditionResult& r : results) all.push_back(result_json(r));
-    out << all.dump(2) << "\n";
+    out << dump_json(all, 2) << "\n";
   } else {
     DialogueCounts floor = instruction_floor(*scenario);
     out << "Scenario " << scenario->name << ": " << scenario->objects_to_tidy().size() << " objects to tidy, "
@@ -269,9 +269,7 @@ CommandResult run_teach(const TeachOptions& options, const std::string& program,
 CommandResult run_run(const RunOptions& options, std::ostream& out) {
   auto scenario = load_scenario(options.scenario);
   if (!scenario) return tl::unexpected(scenario.error());
-  if (!std::filesystem::exists(options.knowledge))
-    return make_error(ErrorCode::kNotFound, options.knowledge + ": no such knowledge store");
-  auto store = KnowledgeStore::open(options.knowledge);
+  auto store = KnowledgeStore::open(options.knowledge, StoreAccess::kReadOnly);
   if (!store) return tl::unexpected(store.error());
   auto knowledge = store->load(*scenario->world.domain);
   if (!knowledge) return tl::unexpected(knowledge.error());
@@ -296,7 +294,7 @@ CommandResult run_run(const RunOptions& options, std::ostream& out) {
       j["objects_done"] = count_objects_done(*scenario, simulator.state());
       j["objects_total"] = scenario->objects_to_tidy().size();
     }
-    out << j.dump(2) << "\n";
+    out << dump_json(j, 2) << "\n";
   } else {
     out << "Performed with learned knowledge alone: ";
     if (measured) out << achieved << " of " << total << " goal assertions (" << completion << "%), ";
@@ -314,9 +312,7 @@ CommandResult run_knowledge(const KnowledgeOptions& options, const std::string& 
       options.domain.empty() ? data_dir() / "domains" / "kitchen.pddl" : std::filesystem::path(options.domain);
   auto domain = read_domain_file(domain_path);
   if (!domain) return tl::unexpected(domain.error());
-  if (!std::filesystem::exists(options.knowledge))
-    return make_error(ErrorCode::kNotFound, options.knowledge + ": no such knowledge store");
-  auto store = KnowledgeStore::open(options.knowledge);
+  auto store = KnowledgeStore::open(options.knowledge, StoreAccess::kReadOnly);
   if (!store) return tl::unexpected(store.error());
   auto knowledge = store->load(*domain);
   if (!knowledge) return tl::unexpected(knowledge.error());
@@ -332,7 +328,7 @@ CommandResult run_knowledge(const KnowledgeOptions& options, const std::string& 
       goals.push_back({{"text", format_goal_knowledge(g)}, {"object", g.provenance.object}, {"source", g.provenance.source}});
     for (const Rule& r : knowledge->rules.rules())
       rules.push_back({{"signature", rule_signature(*domain, r)}, {"object", r.provenance.object}, {"source", r.provenance.source}});
-    out << nlohmann::json{{"tasks", tasks}, {"goals", goals}, {"rules", rules}}.dump(2) << "\n";
+    out << dump_json(nlohmann::json{{"tasks", tasks}, {"goals", goals}, {"rules", rules}}, 2) << "\n";
     return Outcome::kSuccess;
   }
   for (const TaskKnowledge& t : knowledge->tasks) {

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "search/iterative_deepening.h"
+#include "util/json.h"
 #include "world/pddl.h"
 #include "world/scenario.h"
 
@@ -48,11 +49,10 @@ CommandResult run_world(const WorldOptions& options, std::ostream& out) {
         places.push_back(j);
       }
     }
-    out << nlohmann::json{{"scenario", scenario->name}, {"location", world.location},
-                          {"hand", world.state.holds(Fact(v.handempty, std::initializer_list<ObjectId>{})) ? "empty" : "full"},
-                          {"places", places}, {"objects", items}}
-                 .dump(2)
-        << "\n";
+    const nlohmann::json document{{"scenario", scenario->name}, {"location", world.location},
+                                  {"hand", world.state.holds(Fact(v.handempty, std::initializer_list<ObjectId>{})) ? "empty" : "full"},
+                                  {"places", places}, {"objects", items}};
+    out << dump_json(document, 2) << "\n";
     return Outcome::kSuccess;
   }
   out << "Scenario " << scenario->name << ": the robot is in the " << world.location << ".\n";
@@ -84,12 +84,11 @@ CommandResult run_plan(const PlanOptions& options, std::ostream& out) {
   if (options.json) {
     nlohmann::json plan = nlohmann::json::array();
     for (const Action& a : result.plan) plan.push_back(format_action(*world.domain, *world.universe, a));
-    out << nlohmann::json{{"status", to_string(result.status)}, {"plan", plan},
-                          {"nodes_expanded", s.nodes_expanded}, {"nodes_generated", s.nodes_generated},
-                          {"depth_limit", s.depth_limit_reached}, {"relevant_objects", s.relevant_objects},
-                          {"ground_actions", s.ground_actions}, {"elapsed_ms", s.elapsed_ms}}
-                 .dump(2)
-        << "\n";
+    const nlohmann::json document{{"status", to_string(result.status)}, {"plan", plan},
+                                  {"nodes_expanded", s.nodes_expanded}, {"nodes_generated", s.nodes_generated},
+                                  {"depth_limit", s.depth_limit_reached}, {"relevant_objects", s.relevant_objects},
+                                  {"ground_actions", s.ground_actions}, {"elapsed_ms", s.elapsed_ms}};
+    out << dump_json(document, 2) << "\n";
   } else {
     for (const Action& a : result.plan) out << format_action(*world.domain, *world.universe, a) << "\n";
     out << ";; status " << to_string(result.status) << ", " << result.plan.size() << " steps, "

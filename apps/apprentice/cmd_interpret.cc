@@ -7,6 +7,7 @@
 #include "language/corpus.h"
 #include "language/generation.h"
 #include "language/grounding.h"
+#include "util/json.h"
 #include "world/scenario.h"
 
 namespace apprentice::cli {
@@ -62,7 +63,7 @@ void print_json(const World& world, std::string_view sentence, const Interpretat
                     {"method", std::string(language::to_string(r.method))},
                     {"reason", r.reason}});
   j["references"] = refs;
-  out << j.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << "\n";
+  out << dump_json(j) << "\n";
 }
 
 CommandResult run_corpus(const Scenario& scenario, const language::Grounder& grounder,

@@ -108,9 +108,10 @@ Result<ConditionResult> run_condition(const Scenario& scenario, const Condition&
     std::error_code ec;
     std::filesystem::create_directories(*options.knowledge_out, ec);
     if (ec) return make_error(ErrorCode::kIo, options.knowledge_out->string() + ": " + ec.message());
+    // Started over in place, never deleted: refused while another process
+    // has it open (KnowledgeStore, StoreAccess::kFresh).
     std::filesystem::path path = *options.knowledge_out / (condition.name + ".sqlite");
-    std::filesystem::remove(path, ec);
-    auto opened = KnowledgeStore::open(path);
+    auto opened = KnowledgeStore::open(path, StoreAccess::kFresh);
     if (!opened) return tl::unexpected(opened.error());
     store.emplace(std::move(*opened));
     if (auto s = save_knowledge(*store, *scenario.world.domain, knowledge); !s) return tl::unexpected(s.error());

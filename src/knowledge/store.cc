@@ -1,10 +1,21 @@
 #include "knowledge/store.h"
 
-#include <fstream>
+#include <fcntl.h>
+#include <sqlite3.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <stdexcept>
 #include <string_view>
 
 #include <nlohmann/json.hpp>
 #include <SQLiteCpp/SQLiteCpp.h>
+
+#include "util/json.h"
+#include "util/text.h"
 
 namespace apprentice {
 
@@ -13,14 +24,66 @@ namespace {
 using nlohmann::json;
 
 constexpr const char* kFormatName = "apprentice-knowledge";
+constexpr int kBusyTimeoutMs = 5000;
 
-constexpr const char* kUnreadable = " (the file is not a readable apprentice knowledge store)";
-
+// What an SQLite failure means to the user, by SQLite's result code.
 Error sqlite_error(const std::filesystem::path& path, const std::exception& e) {
-  std::string message = path.string() + ": " + e.what();
-  if (message.find("not a database") != std::string::npos || message.find("malformed") != std::string::npos)
-    return Error{ErrorCode::kDataLoss, message + kUnreadable};
-  return Error{ErrorCode::kIo, message};
+  const std::string where = path.string() + ": ";
+  const auto* sqlite = dynamic_cast<const SQLite::Exception*>(&e);
+  const int code = sqlite ? sqlite->getErrorCode() : SQLITE_ERROR;
+  switch (code) {
+    case SQLITE_NOTADB:
+      return Error{ErrorCode::kFailedPrecondition, where + "not an apprentice knowledge store (not an SQLite database)"};
+    case SQLITE_CORRUPT:
+      return Error{ErrorCode::kDataLoss, where + "the knowledge store is damaged (" + e.what() + ")"};
+    case SQLITE_BUSY:
+    case SQLITE_LOCKED:
+      return Error{ErrorCode::kIo, where + "the knowledge store is in use by another process and stayed locked for " +
+                                       std::to_string(kBusyTimeoutMs / 1000) + " s (" + e.what() + ")"};
+    case SQLITE_FULL: return Error{ErrorCode::kIo, where + "the disk is full (" + e.what() + ")"};
+    default: return Error{ErrorCode::kIo, where + e.what()};
+  }
+}
+
+tl::unexpected<Error> damaged(const std::filesystem::path& path, const std::string& what) {
+  return make_error(ErrorCode::kDataLoss, path.string() + ": the knowledge store is damaged: " + what);
+}
+
+tl::unexpected<Error> not_a_store(const std::filesystem::path& path, const std::string& why) {
+  return make_error(ErrorCode::kFailedPrecondition, path.string() + ": not an apprentice knowledge store (" + why + ")");
+}
+
+// Strict readers of stored JSON: a value of another type is never
+// converted (nlohmann would turn 1e300 into an int, and 0.5 into an
+// index). They throw BadEntry, which load() reports as a damaged entry;
+// nothing is thrown out of this file.
+struct BadEntry : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+const json& member(const json& j, const char* key) {
+  if (!j.is_object()) throw BadEntry(std::string("expected an object with '") + key + "'");
+  auto it = j.find(key);
+  if (it == j.end()) throw BadEntry(std::string("'") + key + "' is missing");
+  return *it;
+}
+std::string text_at(const json& j, const char* key) {
+  const json& v = member(j, key);
+  if (!v.is_string() || v.get_ref<const std::string&>().empty()) throw BadEntry(std::string("'") + key + "' is not a name");
+  return v.get<std::string>();
+}
+bool flag_at(const json& j, const char* key) {
+  const json& v = member(j, key);
+  if (!v.is_boolean()) throw BadEntry(std::string("'") + key + "' is not true or false");
+  return v.get<bool>();
+}
+std::size_t index_below(const json& v, std::size_t count, const char* what) {
+  if (!v.is_number_unsigned() || v.get<std::uint64_t>() >= count) throw BadEntry(std::string("a stored ") + what + " names an undeclared variable");
+  return static_cast<std::size_t>(v.get<std::uint64_t>());
+}
+const json& list_at(const json& j, const char* key) {
+  const json& v = member(j, key);
+  if (!v.is_array()) throw BadEntry(std::string("'") + key + "' is not a list");
+  return v;
 }
 
 json literal_json(const Domain& domain, const Rule& rule, const LiteralPattern& l) {
@@ -49,53 +112,50 @@ json rule_json(const Domain& domain, const Rule& rule) {
 
 Result<LiteralPattern> literal_from_json(const Domain& domain, const json& j, std::size_t variable_count) {
   LiteralPattern l;
-  auto predicate = domain.find_predicate(j.at("predicate").get<std::string>());
+  const std::string name = text_at(j, "predicate");
+  auto predicate = domain.find_predicate(name);
   if (!predicate)
     return make_error(ErrorCode::kFailedPrecondition,
-                      "a stored rule uses predicate " + j.at("predicate").get<std::string>() +
-                          ", which domain " + domain.name + " lacks");
+                      "a stored rule uses predicate " + name + ", which domain " + domain.name + " lacks");
   l.atom.predicate = *predicate;
-  l.positive = j.at("positive").get<bool>();
-  const json& args = j.at("args");
+  l.positive = flag_at(j, "positive");
+  const json& args = list_at(j, "args");
   if (args.size() != domain.predicates[*predicate].parameter_types.size())
     return make_error(ErrorCode::kDataLoss, "a stored rule has the wrong arity for " + domain.predicates[*predicate].name);
-  for (const json& a : args) {
-    auto v = a.get<std::size_t>();
-    if (v >= variable_count) return make_error(ErrorCode::kDataLoss, "a stored rule names an undeclared variable");
-    l.atom.args[l.atom.arity++] = static_cast<VariableId>(v);
-  }
+  for (const json& a : args) l.atom.args[l.atom.arity++] = static_cast<VariableId>(index_below(a, variable_count, "rule"));
   return l;
 }
 
 Result<Rule> rule_from_json(const Domain& domain, const json& j) {
   Rule rule;
-  for (const json& v : j.at("variables")) {
-    RuleVariable variable{v.at("name").get<std::string>(), std::nullopt, v.at("interest").get<bool>()};
-    if (v.contains("category")) variable.category = v.at("category").get<std::string>();
+  const json& variables = list_at(j, "variables");
+  if (variables.size() > kMaxRuleVariables) return make_error(ErrorCode::kDataLoss, "a stored rule has too many variables");
+  for (const json& v : variables) {
+    RuleVariable variable{text_at(v, "name"), std::nullopt, flag_at(v, "interest")};
+    if (v.contains("category")) variable.category = text_at(v, "category");
     rule.variables.push_back(std::move(variable));
   }
-  if (rule.variables.size() > kMaxRuleVariables) return make_error(ErrorCode::kDataLoss, "a stored rule has too many variables");
   for (const char* part : {"goal", "conditions"}) {
-    for (const json& l : j.at(part)) {
+    for (const json& l : list_at(j, part)) {
       auto literal = literal_from_json(domain, l, rule.variables.size());
       if (!literal) return tl::unexpected(literal.error());
       (std::string(part) == "goal" ? rule.goal : rule.conditions).push_back(*literal);
     }
   }
-  auto action = domain.find_action(j.at("action").get<std::string>());
+  const std::string action_name = text_at(j, "action");
+  auto action = domain.find_action(action_name);
   if (!action)
-    return make_error(ErrorCode::kFailedPrecondition, "a stored rule uses action " + j.at("action").get<std::string>() +
-                                                          ", which domain " + domain.name + " lacks");
+    return make_error(ErrorCode::kFailedPrecondition,
+                      "a stored rule uses action " + action_name + ", which domain " + domain.name + " lacks");
   rule.action = *action;
-  for (const json& a : j.at("action_args")) {
-    auto v = a.get<std::size_t>();
-    if (v >= rule.variables.size()) return make_error(ErrorCode::kDataLoss, "a stored rule names an undeclared variable");
-    rule.action_args.push_back(static_cast<VariableId>(v));
-  }
+  for (const json& a : list_at(j, "action_args"))
+    rule.action_args.push_back(static_cast<VariableId>(index_below(a, rule.variables.size(), "rule")));
   if (rule.action_args.size() != domain.actions[*action].parameters.size())
     return make_error(ErrorCode::kDataLoss, "a stored rule has the wrong arity for " + domain.actions[*action].name);
-  rule.steps_to_goal = j.at("steps").get<int>();
-  if (j.contains("subtask")) rule.subtask = j.at("subtask").get<std::string>();
+  const json& steps = member(j, "steps");
+  if (!steps.is_number_unsigned() || steps.get<std::uint64_t>() > 1000) throw BadEntry("'steps' is not a small whole number");
+  rule.steps_to_goal = static_cast<int>(steps.get<std::uint64_t>());
+  if (j.contains("subtask")) rule.subtask = text_at(j, "subtask");
   // The matcher binds variables from the goal and the positive conditions
   // only; a rule whose action or negative conditions use any other
   // variable would act on no object at all.
@@ -125,45 +185,93 @@ json goal_literals_json(const GoalKnowledge& g) {
   return out;
 }
 
-std::vector<GoalTemplateLiteral> goal_literals_from_json(const json& j) {
+// A stored goal's literals; each names a predicate of `domain` with its
+// arity (kFailedPrecondition otherwise, as for rules).
+Result<std::vector<GoalTemplateLiteral>> goal_literals_from_json(const Domain& domain, const json& j) {
+  if (!j.is_array() || j.empty()) throw BadEntry("a stored goal is not a list of literals");
   std::vector<GoalTemplateLiteral> out;
   for (const json& t : j) {
-    GoalTemplateLiteral literal{t.at("predicate").get<std::string>(), t.at("positive").get<bool>(), {}};
-    for (const json& a : t.at("args")) {
-      if (a.contains("interest")) literal.arguments.push_back(GoalTemplateArgument{true, ""});
-      else literal.arguments.push_back(GoalTemplateArgument{false, a.at("category").get<std::string>()});
+    GoalTemplateLiteral literal{text_at(t, "predicate"), flag_at(t, "positive"), {}};
+    auto predicate = domain.find_predicate(literal.predicate);
+    if (!predicate)
+      return make_error(ErrorCode::kFailedPrecondition,
+                        "a stored goal uses predicate " + literal.predicate + ", which domain " + domain.name + " lacks");
+    const json& args = list_at(t, "args");
+    if (args.size() != domain.predicates[*predicate].parameter_types.size())
+      return make_error(ErrorCode::kDataLoss, "a stored goal has the wrong arity for " + literal.predicate);
+    for (const json& a : args) {
+      if (a.contains("interest")) {
+        if (!flag_at(a, "interest")) throw BadEntry("a goal argument is neither the object nor a category");
+        literal.arguments.push_back(GoalTemplateArgument{true, ""});
+      } else {
+        literal.arguments.push_back(GoalTemplateArgument{false, text_at(a, "category")});
+      }
     }
     out.push_back(std::move(literal));
   }
   return out;
 }
 
-Status check_or_create_schema(SQLite::Database& db, const std::filesystem::path& path) {
-  bool has_meta = db.tableExists("meta");
-  if (!has_meta) {
-    SQLite::Statement tables(db, "SELECT count(*) FROM sqlite_master WHERE type='table'");
-    tables.executeStep();
-    if (tables.getColumn(0).getInt() > 0)
+// A stored task structure: a non-empty list of {verb, relation, place}.
+std::vector<LearnedSubtask> subtasks_from_json(const json& j) {
+  if (!j.is_array() || j.empty()) throw BadEntry("a stored task structure is not a list of subtasks");
+  std::vector<LearnedSubtask> out;
+  for (const json& s : j) {
+    LearnedSubtask subtask{text_at(s, "verb"), text_at(s, "relation"), text_at(s, "place")};
+    if (subtask.relation != "on" && subtask.relation != "in")
+      throw BadEntry("a stored subtask's relation is '" + subtask.relation + "', not on or in");
+    out.push_back(std::move(subtask));
+  }
+  return out;
+}
+
+// The columns load() reads: a store without them is damaged.
+constexpr const char* kTasksQuery = "SELECT name, structure FROM tasks ORDER BY name";
+constexpr const char* kGoalsQuery = "SELECT task, subtask, category, place, literals, object, source FROM goals ORDER BY id";
+constexpr const char* kRulesQuery = "SELECT body, object, source FROM rules ORDER BY id";
+
+void create_schema(SQLite::Database& db) {
+  db.exec("CREATE TABLE meta(key TEXT PRIMARY KEY, value TEXT NOT NULL)");
+  db.exec("CREATE TABLE goals(id INTEGER PRIMARY KEY, task TEXT NOT NULL, subtask TEXT NOT NULL, "
+          "category TEXT NOT NULL, place TEXT NOT NULL, literals TEXT NOT NULL, object TEXT NOT NULL, "
+          "source TEXT NOT NULL, UNIQUE(task, subtask, category, place))");
+  db.exec("CREATE TABLE tasks(name TEXT PRIMARY KEY, structure TEXT NOT NULL)");
+  db.exec("CREATE TABLE rules(id INTEGER PRIMARY KEY, signature TEXT NOT NULL UNIQUE, body TEXT NOT NULL, "
+          "object TEXT NOT NULL, source TEXT NOT NULL)");
+  SQLite::Statement insert(db, "INSERT INTO meta(key, value) VALUES (?, ?)");
+  for (auto [key, value] : {std::pair<std::string, std::string>{"format", kFormatName},
+                            {"schema_version", std::to_string(kKnowledgeSchemaVersion)}}) {
+    insert.bind(1, key);
+    insert.bind(2, value);
+    insert.exec();
+    insert.reset();
+  }
+}
+
+int table_count(SQLite::Database& db) {
+  SQLite::Statement tables(db, "SELECT count(*) FROM sqlite_master WHERE type='table'");
+  tables.executeStep();
+  return tables.getColumn(0).getInt();
+}
+
+// Checks that the database is a store of this version with every table
+// load() reads, creating the schema in an empty database when `may_create`.
+// Creation happens in an immediate transaction that checks again, so two
+// processes creating one store at once make one schema.
+Status check_or_create_schema(SQLite::Database& db, const std::filesystem::path& path, bool may_create) {
+  if (!db.tableExists("meta")) {
+    if (table_count(db) > 0)
       return make_error(ErrorCode::kFailedPrecondition,
                         path.string() + " is an SQLite database of another program, not an apprentice knowledge store");
-    SQLite::Transaction transaction(db);
-    db.exec("CREATE TABLE meta(key TEXT PRIMARY KEY, value TEXT NOT NULL)");
-    db.exec("CREATE TABLE goals(id INTEGER PRIMARY KEY, task TEXT NOT NULL, subtask TEXT NOT NULL, "
-            "category TEXT NOT NULL, place TEXT NOT NULL, literals TEXT NOT NULL, object TEXT NOT NULL, "
-            "source TEXT NOT NULL, UNIQUE(task, subtask, category, place))");
-    db.exec("CREATE TABLE tasks(name TEXT PRIMARY KEY, structure TEXT NOT NULL)");
-    db.exec("CREATE TABLE rules(id INTEGER PRIMARY KEY, signature TEXT NOT NULL UNIQUE, body TEXT NOT NULL, "
-            "object TEXT NOT NULL, source TEXT NOT NULL)");
-    SQLite::Statement insert(db, "INSERT INTO meta(key, value) VALUES (?, ?)");
-    for (auto [key, value] : {std::pair<std::string, std::string>{"format", kFormatName},
-                              {"schema_version", std::to_string(kKnowledgeSchemaVersion)}}) {
-      insert.bind(1, key);
-      insert.bind(2, value);
-      insert.exec();
-      insert.reset();
+    if (!may_create) return not_a_store(path, "an SQLite database with no tables");
+    SQLite::Transaction transaction(db, SQLite::TransactionBehavior::IMMEDIATE);
+    if (!db.tableExists("meta")) {
+      if (table_count(db) > 0)
+        return make_error(ErrorCode::kFailedPrecondition,
+                          path.string() + " is an SQLite database of another program, not an apprentice knowledge store");
+      create_schema(db);
     }
     transaction.commit();
-    return {};
   }
   std::string format, version;
   SQLite::Statement meta(db, "SELECT key, value FROM meta");
@@ -179,44 +287,127 @@ Status check_or_create_schema(SQLite::Database& db, const std::filesystem::path&
                       path.string() + " was written with knowledge schema version " + version +
                           "; this apprentice reads version " + std::to_string(kKnowledgeSchemaVersion) +
                           ". Relearn into a new file, or use the apprentice version that wrote it.");
+  for (auto [table, query] : {std::pair{"tasks", kTasksQuery}, {"goals", kGoalsQuery}, {"rules", kRulesQuery}}) {
+    try {
+      SQLite::Statement check(db, query);
+    } catch (const SQLite::Exception& e) {
+      if (e.getErrorCode() != SQLITE_ERROR) throw;
+      return damaged(path, std::string("its ") + table + " table is missing or incomplete (" + e.what() + ")");
+    }
+  }
   return {};
 }
 
-// A file that exists with content must be an SQLite database. SQLite
-// itself takes a 1-byte file for an empty database (a workaround for an old
-// kernel bug) and would overwrite it with a new store.
-Status check_sqlite_header(const std::filesystem::path& path) {
-  std::error_code ec;
-  auto size = std::filesystem::file_size(path, ec);
-  if (ec || size == 0) return {};  // absent (created below) or empty: a new store
-  constexpr std::string_view kHeader("SQLite format 3\0", 16);
-  std::string head(kHeader.size(), '\0');
-  std::ifstream in(path, std::ios::binary);
-  in.read(head.data(), static_cast<std::streamsize>(head.size()));
-  if (in.gcount() == static_cast<std::streamsize>(head.size()) && head == kHeader) return {};
-  return make_error(ErrorCode::kDataLoss, path.string() + ": file is not a database" + kUnreadable);
+// SQLite's quick_check: the pages and indexes are consistent.
+Status quick_check(SQLite::Database& db, const std::filesystem::path& path) {
+  SQLite::Statement check(db, "PRAGMA quick_check(1)");
+  if (!check.executeStep()) return damaged(path, "PRAGMA quick_check gave no answer");
+  std::string answer = check.getColumn(0).getString();
+  if (answer != "ok") return damaged(path, "PRAGMA quick_check reports " + answer);
+  return {};
 }
 
 }  // namespace
 
-KnowledgeStore::KnowledgeStore(std::filesystem::path path, std::unique_ptr<SQLite::Database> db)
-    : path_(std::move(path)), db_(std::move(db)) {}
+KnowledgeStore::KnowledgeStore(std::filesystem::path path, FileDescriptor lock, std::unique_ptr<SQLite::Database> db)
+    : path_(std::move(path)), lock_(std::move(lock)), db_(std::move(db)) {}
 KnowledgeStore::KnowledgeStore(KnowledgeStore&&) noexcept = default;
-KnowledgeStore& KnowledgeStore::operator=(KnowledgeStore&&) noexcept = default;
-KnowledgeStore::~KnowledgeStore() = default;
+KnowledgeStore& KnowledgeStore::operator=(KnowledgeStore&& other) noexcept {
+  // The database first, then its lock (as in the destructor).
+  db_ = std::move(other.db_);
+  lock_ = std::move(other.lock_);
+  path_ = std::move(other.path_);
+  return *this;
+}
+KnowledgeStore::~KnowledgeStore() { db_.reset(); }
 
-Result<KnowledgeStore> KnowledgeStore::open(const std::filesystem::path& path) {
-  if (auto status = check_sqlite_header(path); !status) return tl::unexpected(status.error());
+Result<KnowledgeStore> KnowledgeStore::open(const std::filesystem::path& path, StoreAccess access) {
+  const bool read_only = access == StoreAccess::kReadOnly;
+  // 1. The file, created if absent (unless read-only), and its lock.
+  int fd = -1;
+  do {
+    fd = ::open(path.c_str(), read_only ? O_RDONLY | O_CLOEXEC : O_RDWR | O_CREAT | O_CLOEXEC, 0666);
+  } while (fd < 0 && errno == EINTR);
+  if (fd < 0) {
+    const int error = errno;
+    if (error == ENOENT && read_only) return make_error(ErrorCode::kNotFound, path.string() + ": no such knowledge store");
+    if (error == EISDIR)
+      return make_error(ErrorCode::kInvalidInput, path.string() + ": is a directory, not a knowledge store");
+    return make_error(ErrorCode::kIo, path.string() + ": cannot " + (read_only ? "open" : "open or create") +
+                                          " the knowledge store: " + std::strerror(error));
+  }
+  FileDescriptor lock(fd);
+  struct stat info {};
+  if (::fstat(fd, &info) != 0)
+    return make_error(ErrorCode::kIo, path.string() + ": cannot read the knowledge store: " + std::strerror(errno));
+  if (S_ISDIR(info.st_mode))
+    return make_error(ErrorCode::kInvalidInput, path.string() + ": is a directory, not a knowledge store");
+  if (!S_ISREG(info.st_mode)) return not_a_store(path, "not a regular file");
+  int locked = 0;
+  do {
+    locked = ::flock(fd, (access == StoreAccess::kFresh ? LOCK_EX : LOCK_SH) | LOCK_NB);
+  } while (locked != 0 && errno == EINTR);
+  if (locked != 0) {
+    if (errno == EWOULDBLOCK)
+      return make_error(ErrorCode::kIo,
+                        path.string() + ": the knowledge store is in use by another process" +
+                            (access == StoreAccess::kFresh
+                                 ? "; an experiment starts a store over only when nobody else has it open. Wait "
+                                   "for the other process, or choose another --knowledge-out directory."
+                                 : ", which is starting it over (experiment --knowledge-out); wait until it finishes."));
+    return make_error(ErrorCode::kIo, path.string() + ": cannot lock the knowledge store: " + std::strerror(errno));
+  }
+
+  // 2. What the file holds: nothing (a new store, unless read-only), or an
+  // SQLite database. SQLite itself would take any file of up to 1 byte for
+  // an empty database and overwrite it.
+  if (info.st_size == 0 && read_only) return not_a_store(path, "the file is empty");
+  if (info.st_size > 0) {
+    constexpr std::string_view kHeader("SQLite format 3\0", 16);
+    char head[16] = {};
+    ssize_t n = ::pread(fd, head, sizeof head, 0);
+    if (n != static_cast<ssize_t>(sizeof head) || std::string_view(head, sizeof head) != kHeader)
+      return not_a_store(path, "not an SQLite database");
+  }
+
+  // 3. SQLite: a rollback journal with full syncs, so a transaction that
+  // returned is on disk and a killed writer leaves a journal SQLite rolls
+  // back; quick_check; the schema.
   try {
-    auto db = std::make_unique<SQLite::Database>(path.string(), SQLite::OPEN_READWRITE | SQLite::OPEN_CREATE);
-    db->exec("PRAGMA busy_timeout = 5000");
-    // A rollback journal with full syncs: a transaction that returned is on
-    // disk, and a killed writer leaves a journal SQLite rolls back.
-    db->exec("PRAGMA journal_mode = DELETE");
-    db->exec("PRAGMA synchronous = FULL");
-    auto status = check_or_create_schema(*db, path);
-    if (!status) return tl::unexpected(status.error());
-    return KnowledgeStore(path, std::move(db));
+    auto connect = [&](int flags) {
+      auto db = std::make_unique<SQLite::Database>(path.string(), flags);
+      db->exec("PRAGMA busy_timeout = " + std::to_string(kBusyTimeoutMs));
+      return db;
+    };
+    std::unique_ptr<SQLite::Database> db;
+    if (read_only) {
+      db = connect(SQLite::OPEN_READONLY);
+      try {
+        if (auto status = quick_check(*db, path); !status) return tl::unexpected(status.error());
+      } catch (const SQLite::Exception& e) {
+        if (e.getExtendedErrorCode() != SQLITE_READONLY_ROLLBACK) throw;
+        // A killed writer left a hot journal, which only a writer can roll
+        // back: let one do it, then read as before.
+        db.reset();
+        connect(SQLite::OPEN_READWRITE)->exec("SELECT count(*) FROM sqlite_master");
+        db = connect(SQLite::OPEN_READONLY);
+        if (auto status = quick_check(*db, path); !status) return tl::unexpected(status.error());
+      }
+    } else {
+      db = connect(SQLite::OPEN_READWRITE);
+      db->exec("PRAGMA journal_mode = DELETE");
+      db->exec("PRAGMA synchronous = FULL");
+      if (auto status = quick_check(*db, path); !status) return tl::unexpected(status.error());
+    }
+    if (auto status = check_or_create_schema(*db, path, !read_only); !status) return tl::unexpected(status.error());
+    if (access == StoreAccess::kFresh) {
+      SQLite::Transaction transaction(*db, SQLite::TransactionBehavior::IMMEDIATE);
+      db->exec("DELETE FROM goals");
+      db->exec("DELETE FROM tasks");
+      db->exec("DELETE FROM rules");
+      transaction.commit();
+    }
+    return KnowledgeStore(path, std::move(lock), std::move(db));
   } catch (const std::exception& e) {
     return tl::unexpected(sqlite_error(path, e));
   }
@@ -232,7 +423,7 @@ Status KnowledgeStore::save_goal(const GoalKnowledge& goal) {
     insert.bind(2, goal.key.subtask);
     insert.bind(3, goal.key.category);
     insert.bind(4, goal.key.place);
-    insert.bind(5, goal_literals_json(goal).dump());
+    insert.bind(5, dump_json(goal_literals_json(goal)));
     insert.bind(6, goal.provenance.object);
     insert.bind(7, goal.provenance.source);
     insert.exec();
@@ -248,7 +439,7 @@ Status KnowledgeStore::save_rule(const Domain& domain, const Rule& rule) {
     SQLite::Transaction transaction(*db_);
     SQLite::Statement insert(*db_, "INSERT OR IGNORE INTO rules(signature, body, object, source) VALUES (?, ?, ?, ?)");
     insert.bind(1, rule_signature(domain, rule));
-    insert.bind(2, rule_json(domain, rule).dump());
+    insert.bind(2, dump_json(rule_json(domain, rule)));
     insert.bind(3, rule.provenance.object);
     insert.bind(4, rule.provenance.source);
     insert.exec();
@@ -273,7 +464,7 @@ Status KnowledgeStore::save_task(const TaskKnowledge& task) {
     SQLite::Transaction transaction(*db_);
     SQLite::Statement insert(*db_, "INSERT OR REPLACE INTO tasks(name, structure) VALUES (?, ?)");
     insert.bind(1, task.name);
-    insert.bind(2, subtasks.dump());
+    insert.bind(2, dump_json(subtasks));
     insert.exec();
     transaction.commit();
     return {};
@@ -284,33 +475,44 @@ Status KnowledgeStore::save_task(const TaskKnowledge& task) {
 
 Result<Knowledge> KnowledgeStore::load(const Domain& domain) const {
   Knowledge knowledge;
+  // Which entry is being read, for the message if it is damaged.
+  std::string entry;
+  auto parse = [&](const SQLite::Column& column) {
+    if (!column.isText()) throw BadEntry("not text");
+    return json::parse(column.getString());
+  };
   try {
-    SQLite::Statement tasks(*db_, "SELECT name, structure FROM tasks ORDER BY name");
+    // One read transaction: a consistent snapshot while writers go on.
+    SQLite::Transaction snapshot(*db_, SQLite::TransactionBehavior::DEFERRED);
+    SQLite::Statement tasks(*db_, kTasksQuery);
     while (tasks.executeStep()) {
-      TaskKnowledge task{tasks.getColumn(0).getString(), {}};
-      for (const json& s : json::parse(tasks.getColumn(1).getString()))
-        task.subtasks.push_back(LearnedSubtask{s.at("verb").get<std::string>(), s.at("relation").get<std::string>(),
-                                               s.at("place").get<std::string>()});
-      knowledge.tasks.push_back(std::move(task));
+      entry = "the task " + apprentice::quoted(tasks.getColumn(0).getString());
+      knowledge.tasks.push_back(TaskKnowledge{tasks.getColumn(0).getString(), subtasks_from_json(parse(tasks.getColumn(1)))});
     }
-    SQLite::Statement goals(*db_, "SELECT task, subtask, category, place, literals, object, source FROM goals ORDER BY id");
+    SQLite::Statement goals(*db_, kGoalsQuery);
     while (goals.executeStep()) {
       GoalKnowledge g;
       g.key = GoalKey{goals.getColumn(0).getString(), goals.getColumn(1).getString(),
                       goals.getColumn(2).getString(), goals.getColumn(3).getString()};
-      g.literals = goal_literals_from_json(json::parse(goals.getColumn(4).getString()));
+      entry = "the goal for " + g.key.category + " (" + g.key.subtask + ")";
+      auto literals = goal_literals_from_json(domain, parse(goals.getColumn(4)));
+      if (!literals) return tl::unexpected(prefix_error(literals.error(), path_.string()));
+      g.literals = std::move(*literals);
       g.provenance = Provenance{goals.getColumn(5).getString(), goals.getColumn(6).getString()};
       knowledge.goals.add(std::move(g));
     }
-    SQLite::Statement rules(*db_, "SELECT body, object, source FROM rules ORDER BY id");
+    SQLite::Statement rules(*db_, kRulesQuery);
     while (rules.executeStep()) {
-      auto rule = rule_from_json(domain, json::parse(rules.getColumn(0).getString()));
+      entry = "a rule";
+      auto rule = rule_from_json(domain, parse(rules.getColumn(0)));
       if (!rule) return tl::unexpected(prefix_error(rule.error(), path_.string()));
       rule->provenance = Provenance{rules.getColumn(1).getString(), rules.getColumn(2).getString()};
       knowledge.rules.add(domain, std::move(*rule));
     }
+  } catch (const BadEntry& e) {
+    return make_error(ErrorCode::kDataLoss, path_.string() + ": a stored entry is unreadable: " + entry + ": " + e.what());
   } catch (const json::exception& e) {
-    return make_error(ErrorCode::kDataLoss, path_.string() + ": a stored entry is unreadable: " + e.what());
+    return make_error(ErrorCode::kDataLoss, path_.string() + ": a stored entry is unreadable: " + entry + ": " + e.what());
   } catch (const std::exception& e) {
     return tl::unexpected(sqlite_error(path_, e));
   }

@@ -1,12 +1,12 @@
 #include "language/corpus.h"
 
-#include <fstream>
 #include <sstream>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "language/reference.h"
+#include "util/file.h"
 #include "util/text.h"
 
 namespace apprentice::language {
@@ -52,17 +52,17 @@ std::optional<ObjectId> place_named(const Universe& universe, std::string_view n
 }  // namespace
 
 Result<std::vector<CorpusLine>> read_corpus(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) return make_error(ErrorCode::kNotFound, "cannot read corpus " + path.string());
+  auto file = read_input_lines(path);  // within the input limits (util/file.h)
+  if (!file) return tl::unexpected(prefix_error(file.error(), "the corpus"));
   std::vector<CorpusLine> lines;
-  std::string text;
-  for (std::size_t number = 1; std::getline(in, text); ++number) {
+  std::size_t number = 0;
+  for (const std::string& text : *file) {
+    ++number;
     if (trim(text).empty()) continue;
     auto line = parse_line(text, number);
     if (!line) return tl::unexpected(prefix_error(line.error(), path.string()));
     lines.push_back(std::move(*line));
   }
-  if (in.bad()) return make_error(ErrorCode::kIo, "error reading corpus " + path.string());
   return lines;
 }
 

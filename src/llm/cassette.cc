@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "llm/json_fields.h"
+#include "util/file.h"
 #include "util/log.h"
 
 namespace apprentice::llm {
@@ -223,12 +224,11 @@ ReplayClient::ReplayClient(std::filesystem::path path, std::vector<Exchange> exc
 }
 
 Result<std::unique_ptr<ReplayClient>> ReplayClient::open(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return make_error(ErrorCode::kNotFound, "cannot open the cassette " + path.string());
+  auto file = read_input_lines(path);  // within the input limits (util/file.h)
+  if (!file) return tl::unexpected(prefix_error(file.error(), "the cassette"));
   std::vector<Exchange> exchanges;
-  std::string line;
   size_t number = 0;
-  while (std::getline(in, line)) {
+  for (const std::string& line : *file) {
     ++number;
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
     Result<Exchange> exchange = exchange_from_line(line);

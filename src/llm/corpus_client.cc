@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <set>
 
 #include <nlohmann/json.hpp>
 
 #include "llm/json_fields.h"
+#include "util/file.h"
 #include "util/text.h"
 
 namespace apprentice::llm {
@@ -47,13 +47,12 @@ std::string list_conditions(const std::set<std::string>& conditions) {
 
 Result<std::unique_ptr<CorpusClient>> CorpusClient::open(const std::filesystem::path& path,
                                                          CorpusSelection selection) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return make_error(ErrorCode::kNotFound, "cannot open the goal corpus " + path.string());
+  auto file = read_input_lines(path);  // within the input limits (util/file.h)
+  if (!file) return tl::unexpected(prefix_error(file.error(), "the goal corpus"));
   std::vector<std::pair<std::string, Line>> all;  // (condition, line)
   std::set<std::string> conditions;
-  std::string text;
   size_t number = 0;
-  while (std::getline(in, text)) {
+  for (const std::string& text : *file) {
     ++number;
     if (trim(text).empty()) continue;
     const std::string where = path.string() + ":" + std::to_string(number);

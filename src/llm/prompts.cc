@@ -1,11 +1,10 @@
 #include "llm/prompts.h"
 
-#include <fstream>
 #include <map>
 #include <set>
-#include <sstream>
 #include <vector>
 
+#include "util/file.h"
 #include "util/text.h"
 
 #ifndef APPRENTICE_DATA_DIR
@@ -22,13 +21,9 @@ Result<std::string> read_template(const std::filesystem::path& path) {
   if (!std::filesystem::is_regular_file(path, ec)) {
     return make_error(ErrorCode::kNotFound, "prompt template not found: " + path.string());
   }
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in && !in.eof()) {
-    return make_error(ErrorCode::kIo, "cannot read prompt template " + path.string());
-  }
-  std::string content = text.str();
+  auto text = read_input_file(path);  // within the input limits (util/file.h)
+  if (!text) return tl::unexpected(prefix_error(text.error(), "prompt template"));
+  std::string content = std::move(*text);
   // The file's final newline is an editor convention, not part of the prompt.
   if (!content.empty() && content.back() == '\n') content.pop_back();
   if (!content.empty() && content.back() == '\r') content.pop_back();

@@ -33,7 +33,9 @@ std::string write_domain(const Domain& domain);
 std::string write_problem(std::string_view name, const Domain& domain, const Universe& universe,
                           const State& init, const Goal& goal);
 
-// Reads a whole file; kNotFound if it does not exist, kIo if unreadable.
+// Reads a whole input file within the limits of util/file.h: kNotFound if
+// it does not exist, kInvalidInput for a directory or a file too large,
+// kIo (with the reason) if it cannot be read.
 Result<std::string> read_text_file(const std::filesystem::path& path);
 
 }  // namespace apprentice

@@ -1,23 +1,12 @@
 #include <algorithm>
-#include <fstream>
-#include <sstream>
 
+#include "util/file.h"
 #include "world/pddl.h"
 #include "world/sexpr.h"
 
 namespace apprentice {
 
-Result<std::string> read_text_file(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec))
-    return make_error(ErrorCode::kNotFound, path.string() + ": no such file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return make_error(ErrorCode::kIo, path.string() + ": cannot be opened");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) return make_error(ErrorCode::kIo, path.string() + ": read failed");
-  return buffer.str();
-}
+Result<std::string> read_text_file(const std::filesystem::path& path) { return read_input_file(path); }
 
 namespace {
 

@@ -4,6 +4,7 @@
 #include <map>
 #include <set>
 
+#include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/yaml.h>
 
 #include "world/pddl.h"
@@ -441,6 +442,12 @@ Result<Scenario> parse_scenario(std::string_view yaml_text, const std::filesyste
   try {
     YAML::Node root = YAML::Load(std::string(yaml_text));
     return ScenarioBuilder(source).build(root);
+  } catch (const YAML::DeepRecursion& e) {
+    // yaml-cpp's own message is "bad file"; a scenario nests four levels.
+    std::string where = source.string();
+    if (e.mark.line >= 0) where += ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1);
+    return make_error(ErrorCode::kInvalidInput,
+                      where + ": the YAML is nested too deeply (a scenario needs only a few levels of lists and mappings)");
   } catch (const YAML::Exception& e) {
     std::string where = source.string();
     if (e.mark.line >= 0) where += ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1);

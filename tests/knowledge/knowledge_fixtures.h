@@ -84,6 +84,17 @@ inline std::vector<std::string> signatures(const World& world, const std::vector
   return out;
 }
 
+// A test with the tidy kitchen and the path of a store in a scratch
+// directory (not yet created).
+class KitchenStoreTest : public ::testing::Test {
+ protected:
+  Scenario scenario_ = tidy_kitchen();
+  const World& world_ = scenario_.world;
+  const Domain& domain_ = *world_.domain;
+  ScratchDir dir_;
+  fs::path path_ = dir_ / "knowledge.sqlite";
+};
+
 // Runs the apprentice binary with `args` in the test's working directory,
 // capturing its output in `dir`.
 inline Invocation run_cli(const fs::path& dir, const std::vector<std::string>& args) {
