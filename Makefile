@@ -1,11 +1,16 @@
 # Quick start (README): bash scripts/install-deps.sh && make run | make test
 #   make run    installs what is missing, builds, runs the paper's experiment
 #   make test   installs what is missing, builds, runs every test (also under ASan+UBSan)
+#   make        builds (the program, the libraries, the Python module, the man page)
 JOBS ?= $(shell nproc)
 BUILD ?= build
 ASAN_BUILD ?= build-asan
 
-.PHONY: deps build run test test-release test-asan test-fuzz bench clean
+.PHONY: all deps build run test test-release test-asan test-fuzz bench figure clean
+
+# `make` builds the program, the libraries and the Python module
+# (build/python/apprentice; PYTHONPATH=build/python /usr/bin/python3).
+all: build
 
 deps:
 	@bash scripts/install-deps.sh
@@ -34,6 +39,10 @@ test-fuzz: deps
 	@if [ -x scripts/fuzz-parser.sh ]; then bash scripts/fuzz-parser.sh; fi
 
 test: test-release test-asan test-fuzz
+
+# The README's figure (docs/experiment.svg), drawn by experiment --plot.
+figure: build
+	bash scripts/make-figure.sh
 
 bench: build
 	./$(BUILD)/bench/bench_search

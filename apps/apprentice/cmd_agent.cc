@@ -1,15 +1,19 @@
 #include "cmd_agent.h"
 
-#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 
 #include <nlohmann/json.hpp>
 
+#include "agent/explanation.h"
 #include "experiment/experiment.h"
+#include "experiment/runner.h"
 #include "instructor/terminal_instructor.h"
+#include "language/narration.h"
 #include "llm/factory.h"
+#include "plot.h"
+#include "progress.h"
 #include "util/json.h"
 #include "util/log.h"
 #include "util/text.h"
@@ -36,12 +40,6 @@ std::filesystem::path data_dir() {
   return APPRENTICE_DATA_DIR;
 }
 
-Result<Generalization> parse_generalization(const std::string& text) {
-  if (text == "full") return Generalization::kFull;
-  if (text == "paper") return Generalization::kPaper;
-  return make_error(ErrorCode::kInvalidInput, "--generalization must be full or paper, not " + text);
-}
-
 llm::LlmOptions llm_options(const LlmFlags& flags) {
   llm::LlmOptions options;
   options.model = flags.model;
@@ -49,53 +47,6 @@ llm::LlmOptions llm_options(const LlmFlags& flags) {
   if (flags.timeout_ms) options.request_timeout = std::chrono::milliseconds(*flags.timeout_ms);
   if (flags.connect_timeout_ms) options.connect_timeout = std::chrono::milliseconds(*flags.connect_timeout_ms);
   return options;
-}
-
-std::optional<LlmFactory> llm_factory(const LlmFlags& flags, const std::string& condition = "") {
-  auto spec = llm::resolve_llm_spec(flags.spec);
-  if (!spec) return std::nullopt;
-  // With several conditions each keeps its own cassette (llm/factory.h).
-  if (!condition.empty()) spec = llm::spec_for_condition(*spec, condition);
-  llm::LlmOptions options = llm_options(flags);
-  std::string s = *spec;
-  return LlmFactory([s, options]() { return llm::make_llm_client(s, options); });
-}
-
-// Before a run that needs the LLM: whether its server can be reached at
-// all, so that a dead server costs seconds, not a run's worth of timeouts.
-// Returns whether to go on with the LLM; an error (exit 4) when it cannot
-// be reached and the LLM is not optional.
-Result<bool> check_llm(const LlmFlags& flags) {
-  auto spec = llm::resolve_llm_spec(flags.spec);
-  if (!spec) return true;
-  auto reachable = llm::check_llm_connection(*spec, llm_options(flags));
-  if (reachable) return true;
-  if (!flags.optional) {
-    Error error = reachable.error();
-    error.message += " (--llm-optional goes on without it)";
-    return tl::unexpected(std::move(error));
-  }
-  spdlog::warn("{}; going on without the LLM (--llm-optional)", reachable.error().message);
-  return false;
-}
-
-nlohmann::json result_json(const ConditionResult& r) {
-  return nlohmann::json{{"condition", r.condition},
-                        {"llm_failures", r.llm_failures},
-                        {"llm_ensemble", r.llm_ensemble},
-                        {"completion_rate", r.completion_rate},
-                        {"assertions_achieved", r.assertions_achieved},
-                        {"assertions_total", r.assertions_total},
-                        {"objects_done", r.objects_done},
-                        {"objects_total", r.objects_total},
-                        {"instructions", r.counts.instructions},
-                        {"words", r.counts.words},
-                        {"yes_no", r.counts.yes_no},
-                        {"relevance", r.relevance ? nlohmann::json(*r.relevance) : nlohmann::json(nullptr)},
-                        {"llm_calls", r.llm_calls},
-                        {"llm_tokens", r.llm_tokens},
-                        {"search_nodes", r.search_nodes},
-                        {"wall_ms", r.wall_ms}};
 }
 
 Status write_file(const std::filesystem::path& path, const std::string& text) {
@@ -115,6 +66,19 @@ Result<Knowledge> load_knowledge_copy(const std::filesystem::path& path, const D
 
 }  // namespace
 
+// Printed under the table: what its columns mean where that is not plain.
+const char* const kTableLegend =
+    "Relevant%: yes answers over yes/no questions; without an instructor (search4+llm), the share of the LLM's\n"
+    "goals adopted that were the intended ones. --: the condition asks the LLM nothing, as in the paper.\n";
+
+std::string skipped_hint(const std::vector<std::string>& skipped) {
+  std::string names;
+  for (const std::string& name : skipped) names += (names.empty() ? "" : ", ") + name;
+  return "Skipped for want of an LLM: " + names +
+         ".\nTo run them, pass --llm SPEC or set APPRENTICE_LLM: openai:http://127.0.0.1:8080/v1 for any "
+         "OpenAI-compatible\nserver, or corpus:FILE for recorded responses (see docs/llm.md).\n";
+}
+
 CommandResult run_experiment(const ExperimentOptions& options, const std::string& program, std::ostream& out) {
   (void)program;
   auto scenario = load_scenario(options.scenario);
@@ -122,77 +86,63 @@ CommandResult run_experiment(const ExperimentOptions& options, const std::string
   if (auto s = check_runnable(*scenario); !s) return tl::unexpected(s.error());
   auto generalization = parse_generalization(options.generalization);
   if (!generalization) return tl::unexpected(generalization.error());
-  apprentice::ExperimentOptions experiment;
+  ExperimentRequest request;
   if (!options.knowledge_in.empty()) {
     auto knowledge = load_knowledge_copy(options.knowledge_in, *scenario->world.domain);
     if (!knowledge) return tl::unexpected(knowledge.error());
-    experiment.knowledge_in = std::move(*knowledge);
+    request.options.knowledge_in = std::move(*knowledge);
   }
-  experiment.generalization = *generalization;
-  experiment.use_rules = !options.no_rules;
-  experiment.prompts_dir = data_dir() / "prompts";
-  if (auto factory = llm_factory(options.llm)) experiment.llm = *factory;
-  if (!options.knowledge_out.empty()) experiment.knowledge_out = options.knowledge_out;
+  request.conditions = options.conditions;
+  request.llm_spec = llm::resolve_llm_spec(options.llm.spec);
+  request.llm_options = llm_options(options.llm);
+  request.llm_optional = options.llm.optional;
   auto repair = parse_goal_repair(options.llm.goal_repair);
   if (!repair) return tl::unexpected(repair.error());
-  experiment.goal_repair = *repair;
-  experiment.offer_ungrounded = options.llm.offer_ungrounded;
-  experiment.goal_responses = options.llm.goal_responses;
-  std::vector<std::string> names = options.conditions;
-  if (names.empty()) {
-    for (const std::string& name : paper_condition_names()) {
-      auto condition = parse_condition(name);
-      if (condition && (!condition->llm || experiment.llm)) names.push_back(name);
-    }
-  }
-  std::vector<Condition> conditions;
-  for (const std::string& name : names) {
-    auto condition = parse_condition(name);
-    if (!condition) return tl::unexpected(condition.error());
-    conditions.push_back(*condition);
-  }
-  if (experiment.llm && std::any_of(conditions.begin(), conditions.end(), [](const Condition& c) { return c.llm; })) {
-    auto reachable = check_llm(options.llm);
-    if (!reachable) return tl::unexpected(reachable.error());
-    experiment.llm_disabled = !*reachable;
-  }
-  std::vector<ConditionResult> results;
-  for (const std::string& name : names) {
-    auto condition = parse_condition(name);
-    if (!condition) return tl::unexpected(condition.error());
-    if (names.size() > 1) {
-      if (auto factory = llm_factory(options.llm, name)) experiment.llm = *factory;
-    }
-    spdlog::info("running condition {}", name);
-    auto result = run_condition(*scenario, *condition, experiment);
-    if (!result) return tl::unexpected(prefix_error(result.error(), "condition " + name));
-    if (!options.transcript_dir.empty()) {
+  request.options.goal_repair = *repair;
+  request.options.offer_ungrounded = options.llm.offer_ungrounded;
+  request.options.goal_responses = options.llm.goal_responses;
+  request.options.generalization = *generalization;
+  request.options.use_rules = !options.no_rules;
+  request.options.prompts_dir = data_dir() / "prompts";
+  if (!options.knowledge_out.empty()) request.options.knowledge_out = options.knowledge_out;
+  if (!options.transcript_dir.empty()) {
+    request.on_result = [&](const ConditionResult& result) -> Status {
       std::error_code ec;
       std::filesystem::create_directories(options.transcript_dir, ec);
       if (ec) return make_error(ErrorCode::kIo, options.transcript_dir + ": " + ec.message());
-      auto status = write_file(std::filesystem::path(options.transcript_dir) / (name + ".txt"), result->transcript);
-      if (!status) return tl::unexpected(status.error());
-    }
-    results.push_back(std::move(*result));
+      return write_file(std::filesystem::path(options.transcript_dir) / (result.condition + ".txt"), result.transcript);
+    };
   }
+  Result<ExperimentResults> run;
+  {
+    TerminalProgress progress(stderr, !options.json && !options.quiet, TerminalProgress::Mode::kWholeRun);
+    if (progress.active()) request.observer = &progress;
+    run = run_experiment(*scenario, request);
+  }
+  if (!run) return tl::unexpected(run.error());
+  const std::vector<ConditionResult>& results = run->results;
+  std::string json = results_json(results);
   if (options.json) {
-    nlohmann::json all = nlohmann::json::array();
-    for (const ConditionResult& r : results) all.push_back(result_json(r));
-    out << dump_json(all, 2) << "\n";
+    out << json << "\n";
   } else {
     DialogueCounts floor = instruction_floor(*scenario);
     out << "Scenario " << scenario->name << ": " << scenario->objects_to_tidy().size() << " objects to tidy, "
         << scenario->goal_assertions().size() << " goal assertions; the floor (task structure and one goal per goal "
         << "type) is " << floor.instructions << " instructions, " << floor.words << " words";
-    if (experiment.knowledge_in)
+    if (request.options.knowledge_in)
       out << "; every condition starts from the knowledge in " << options.knowledge_in << " ("
-          << experiment.knowledge_in->goals.size() << " goals, " << experiment.knowledge_in->rules.size() << " rules)";
+          << request.options.knowledge_in->goals.size() << " goals, " << request.options.knowledge_in->rules.size() << " rules)";
     for (const ConditionResult& r : results)
       if (!r.llm_description.empty()) {
         out << "; LLM answers from " << r.llm_description;
         break;
       }
-    out << "\n" << format_results_table(results, scenario->reference == "table3");
+    out << "\n" << format_results_table(results, scenario->reference == "table3") << "\n" << kTableLegend;
+    if (!run->skipped.empty()) out << skipped_hint(run->skipped);
+  }
+  if (!options.plot.empty()) {
+    if (auto status = plot_results(json, options.plot, scenario->reference == "table3"); !status) return tl::unexpected(status.error());
+    if (!options.json && !options.quiet) out << "The figure is in " << options.plot << ".\n";
   }
   std::vector<std::string> degraded;
   for (const ConditionResult& r : results)
@@ -203,6 +153,33 @@ CommandResult run_experiment(const ExperimentOptions& options, const std::string
                                                    "accepts a run without it)");
   return Outcome::kSuccess;
 }
+
+namespace {
+
+// The end of a teaching session, in English: how much of the scenario's
+// intent holds (where it has one), which assertions do not, and where the
+// knowledge is, or that nothing was kept.
+void print_teach_summary(const Scenario& scenario, const State& state, bool finished, int instructions,
+                         const KnowledgeStore* store, std::ostream& out) {
+  std::vector<Literal> assertions = scenario.goal_assertions();
+  int achieved = count_achieved_assertions(scenario, state);
+  std::string instructions_phrase = language::count_phrase(instructions, "instruction");
+  out << (finished ? "The task is learned" : "Stopped");
+  if (assertions.empty()) out << ", after " << instructions_phrase << ".\n";
+  else
+    out << ": " << achieved << " of " << language::count_phrase(static_cast<long long>(assertions.size()), "goal assertion")
+        << (achieved == 1 ? " holds" : " hold") << ", after " << instructions_phrase << ".\n";
+  World now = scenario.world;
+  now.state = state;
+  for (const Literal& l : assertions)
+    if (!state.satisfies(l)) out << "Not done: " << language::expected_fact(now, l) << ".\n";
+  if (store) out << "What you taught me is kept in " << store->path().string() << ".\n";
+  else
+    out << "Nothing was saved. To keep what you teach, give a knowledge store: teach --scenario " << scenario.source.string()
+        << " --knowledge FILE (for example kitchen.sqlite).\n";
+}
+
+}  // namespace
 
 CommandResult run_teach(const TeachOptions& options, const std::string& program, std::FILE* in, std::ostream& out) {
   (void)program;
@@ -223,20 +200,24 @@ CommandResult run_teach(const TeachOptions& options, const std::string& program,
     knowledge = std::move(*loaded);
     store.emplace(std::move(*opened));
   }
+  // While the LLM is asked, a progress line on a terminal's stderr.
+  TerminalProgress progress(stderr, !options.quiet, TerminalProgress::Mode::kLlmQueries);
   std::unique_ptr<LlmAdvisor> advisor;
   if (condition->llm) {
-    auto factory = llm_factory(options.llm);
-    if (!factory) return make_error(ErrorCode::kInvalidInput, "condition " + condition->name + " needs --llm SPEC");
-    auto client = (*factory)();
+    auto spec = llm::resolve_llm_spec(options.llm.spec);
+    if (!spec) return make_error(ErrorCode::kInvalidInput, "condition " + condition->name + " needs --llm SPEC");
+    auto client = llm::make_llm_client(*spec, llm_options(options.llm));
     if (!client) return tl::unexpected(client.error());
     auto templates = llm::PromptTemplates::load(data_dir() / "prompts");
     if (!templates) return tl::unexpected(templates.error());
-    auto reachable = check_llm(options.llm);
+    auto reachable = check_llm_before_run(*spec, llm_options(options.llm), options.llm.optional);
     if (!reachable) return tl::unexpected(reachable.error());
     LlmAdvisorOptions advice;
     advice.disabled = !*reachable;
     advice.goal_responses = options.llm.goal_responses;
-    advisor = std::make_unique<LlmAdvisor>(std::move(*client), std::move(*templates), advice);
+    std::unique_ptr<llm::LlmClient> observed = std::move(*client);
+    if (progress.active()) observed = observe_llm(std::move(observed), progress);
+    advisor = std::make_unique<LlmAdvisor>(std::move(observed), std::move(*templates), advice);
   }
   auto repair = parse_goal_repair(options.llm.goal_repair);
   if (!repair) return tl::unexpected(repair.error());
@@ -248,21 +229,27 @@ CommandResult run_teach(const TeachOptions& options, const std::string& program,
   TaskLearningAgent agent(agent_options, std::move(knowledge), Understanding(), store ? &*store : nullptr,
                           advisor.get());
   Simulator simulator(scenario->world);
-  TerminalInstructor instructor(in, out);
+  TerminalInstructor instructor(in, out, TerminalOptions{options.quiet, true});
   Dialogue dialogue(instructor);
-  out << "Teaching in " << scenario->name << " (" << condition->name
-      << "). Type 'status' to see the world, Ctrl-D to stop.\n";
+  if (!options.quiet)
+    out << "Teaching in " << scenario->name << " (" << condition->name
+        << "). Answer in your own words; type help at any question. Ctrl-D or quit stops and keeps what you "
+           "taught.\n";
   auto report = agent.learn(simulator, dialogue);
   if (!report && report.error().code != ErrorCode::kCancelled) return tl::unexpected(report.error());
-  out << (report ? "The task is learned." : "Stopped.");
-  // Without an intent the teacher is the only authority: no completion.
+  if (instructor.interrupted()) {
+    out << "Interrupted. "
+        << (store ? "What you taught me is kept in " + store->path().string() + "."
+                  : std::string("Nothing was saved (no --knowledge)."))
+        << "\n";
+    out.flush();
+    return Outcome::kInterrupted;
+  }
+  print_teach_summary(*scenario, simulator.state(), report.has_value(), dialogue.counts().instructions,
+                      store ? &*store : nullptr, out);
   int achieved = count_achieved_assertions(*scenario, simulator.state());
   int total = static_cast<int>(scenario->goal_assertions().size());
-  if (scenario->has_intent) out << " " << achieved << " of " << total << " goal assertions hold;";
-  out << " " << dialogue.counts().instructions << " instructions.";
-  if (store) out << " Knowledge is in " << store->path().string() << ".";
-  out << "\n";
-  if (!scenario->has_intent) return report ? Outcome::kSuccess : Outcome::kGoalNotReached;
+  if (!scenario->has_intent || total == 0) return report ? Outcome::kSuccess : Outcome::kGoalNotReached;
   return achieved == total ? Outcome::kSuccess : Outcome::kGoalNotReached;
 }
 
@@ -297,9 +284,10 @@ CommandResult run_run(const RunOptions& options, std::ostream& out) {
     out << dump_json(j, 2) << "\n";
   } else {
     out << "Performed with learned knowledge alone: ";
-    if (measured) out << achieved << " of " << total << " goal assertions (" << completion << "%), ";
-    out << report->actions_executed << " actions, 0 instructions, " << report->search_nodes
-        << " search nodes, 0 LLM calls.\n";
+    if (measured)
+      out << achieved << " of " << language::count_phrase(total, "goal assertion") << " (" << completion << "%), ";
+    out << language::count_phrase(report->actions_executed, "action") << ", 0 instructions, "
+        << language::count_phrase(static_cast<long long>(report->search_nodes), "search node") << ", 0 LLM calls.\n";
     if (report->help_needed.empty()) out << "No help was needed.\n";
     for (const std::string& help : report->help_needed) out << "Would need help: " << help << "\n";
   }
@@ -331,17 +319,33 @@ CommandResult run_knowledge(const KnowledgeOptions& options, const std::string& 
     out << dump_json(nlohmann::json{{"tasks", tasks}, {"goals", goals}, {"rules", rules}}, 2) << "\n";
     return Outcome::kSuccess;
   }
-  for (const TaskKnowledge& t : knowledge->tasks) {
-    out << "Task " << t.name << ":\n";
-    for (const LearnedSubtask& s : t.subtasks)
-      out << "  while an object is " << s.relation << " the " << s.place_category << ", " << s.verb << " it\n";
+  if (options.pddl) {
+    for (const TaskKnowledge& t : knowledge->tasks) {
+      out << "Task " << t.name << ":\n";
+      for (const LearnedSubtask& s : t.subtasks)
+        out << "  while an object is " << s.relation << " the " << s.place_category << ", " << s.verb << " it\n";
+    }
+    out << "\n" << knowledge->goals.size() << " goals:\n";
+    for (const GoalKnowledge& g : knowledge->goals.all())
+      out << format_goal_knowledge(g) << "  (learned on " << g.provenance.object << " from " << g.provenance.source << ")\n\n";
+    out << knowledge->rules.size() << " rules:\n";
+    for (const Rule& r : knowledge->rules.rules())
+      out << format_rule(*domain, r) << "  (learned on " << r.provenance.object << " from " << r.provenance.source << ")\n\n";
+    return Outcome::kSuccess;
   }
-  out << "\n" << knowledge->goals.size() << " goals:\n";
+  if (knowledge->tasks.empty() && knowledge->goals.size() == 0 && knowledge->rules.size() == 0) {
+    out << "Nothing has been learned yet.\n";
+    return Outcome::kSuccess;
+  }
+  out << language::capitalize(language::count_phrase(static_cast<long long>(knowledge->tasks.size()), "task")) << ":\n";
+  for (const TaskKnowledge& t : knowledge->tasks) out << "  " << explain_task(t) << "\n";
+  out << "\n" << language::capitalize(language::count_phrase(static_cast<long long>(knowledge->goals.size()), "goal")) << ":\n";
   for (const GoalKnowledge& g : knowledge->goals.all())
-    out << format_goal_knowledge(g) << "  (learned on " << g.provenance.object << " from " << g.provenance.source << ")\n\n";
-  out << knowledge->rules.size() << " rules:\n";
+    out << "  " << explain_goal(g) << "\n    (" << explain_provenance(g.provenance) << ")\n";
+  out << "\n" << language::capitalize(language::count_phrase(static_cast<long long>(knowledge->rules.size()), "rule")) << ":\n";
+  int number = 0;
   for (const Rule& r : knowledge->rules.rules())
-    out << format_rule(*domain, r) << "  (learned on " << r.provenance.object << " from " << r.provenance.source << ")\n\n";
+    out << "  " << ++number << ". " << explain_rule(*domain, r) << "\n     (" << explain_provenance(r.provenance) << ")\n";
   return Outcome::kSuccess;
 }
 

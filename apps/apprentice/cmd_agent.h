@@ -34,6 +34,8 @@ struct ExperimentOptions {
   std::string knowledge_in;  // empty: every condition starts from nothing
   std::string generalization = "full";
   bool no_rules = false;
+  std::string plot;    // --plot FILE.svg|FILE.png: draw the results
+  bool quiet = false;  // no progress line
   LlmFlags llm;
 };
 CommandResult run_experiment(const ExperimentOptions& options, const std::string& program, std::ostream& out);
@@ -43,6 +45,7 @@ struct TeachOptions {
   std::string knowledge;  // empty: nothing kept
   std::string condition = "inst+search4";
   std::string generalization = "full";
+  bool quiet = false;  // only the questions and the summary; no progress line
   LlmFlags llm;
 };
 CommandResult run_teach(const TeachOptions& options, const std::string& program, std::FILE* in, std::ostream& out);
@@ -59,6 +62,7 @@ struct KnowledgeOptions {
   std::string knowledge;
   std::string domain;  // empty: the shipped kitchen domain
   bool json = false;
+  bool pddl = false;  // goals and rules in PDDL terms, not English
 };
 CommandResult run_knowledge(const KnowledgeOptions& options, const std::string& program, std::ostream& out);
 

@@ -2,11 +2,14 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <map>
 #include <ostream>
 
 #include <nlohmann/json.hpp>
+#include <spdlog/spdlog.h>
 
+#include "search/greedy_best_first.h"
 #include "search/iterative_deepening.h"
 #include "util/json.h"
 #include "world/pddl.h"
@@ -26,6 +29,14 @@ std::string location_of(const World& world, ObjectId item) {
     if (f.predicate == v.holding) return "in hand";
   }
   return "nowhere";
+}
+
+// The goal a --goal option names: a PDDL conjunction, or "intent" for the
+// conjunction of every goal assertion of the scenario's intent (the whole
+// task, as the instructor wants it done).
+Result<Goal> goal_of(const Scenario& scenario, const std::string& text) {
+  if (text == kIntentGoal) return Goal(scenario.goal_assertions());
+  return parse_goal(*scenario.world.domain, *scenario.world.universe, text);
 }
 
 }  // namespace
@@ -69,32 +80,66 @@ CommandResult run_world(const WorldOptions& options, std::ostream& out) {
   return Outcome::kSuccess;
 }
 
-CommandResult run_plan(const PlanOptions& options, std::ostream& out) {
+CommandResult run_plan(const PlanOptions& options, std::ostream& out, std::ostream& progress_out) {
   auto scenario = load_scenario(options.scenario);
   if (!scenario) return tl::unexpected(scenario.error());
   const World& world = scenario->world;
-  auto goal = parse_goal(*world.domain, *world.universe, options.goal);
+  auto goal = goal_of(*scenario, options.goal);
   if (!goal) return tl::unexpected(goal.error());
   SearchOptions search;
-  search.max_depth = options.depth;
-  if (options.max_nodes) search.max_nodes = static_cast<std::uint64_t>(*options.max_nodes);
+  if (options.depth) search.max_depth = *options.depth;
+  if (options.node_limit) search.max_nodes = static_cast<std::uint64_t>(*options.node_limit);
+  if (options.time_limit_s)
+    search.max_time = std::chrono::milliseconds(static_cast<std::int64_t>(*options.time_limit_s * 1000.0));
   search.prune_irrelevant = !options.no_pruning;
-  PlanResult result = find_plan(*world.domain, *world.universe, world.state, *goal, search);
+  if (options.progress) {
+    search.progress = [&progress_out](const SearchProgress& p) {
+      progress_out << "searching: " << p.nodes_expanded << " nodes in " << std::fixed << std::setprecision(1)
+                   << p.elapsed_ms / 1000.0 << " s (" << std::setprecision(0) << p.nodes_per_second
+                   << " nodes/s), best heuristic value " << p.best_heuristic << std::defaultfloat
+                   << std::setprecision(6) << "\n"
+                   << std::flush;
+    };
+  }
+  const bool greedy = !options.depth.has_value();
+  PlanResult result = greedy ? find_greedy_plan(*world.domain, *world.universe, world.state, *goal, search)
+                             : find_plan(*world.domain, *world.universe, world.state, *goal, search);
+  for (const std::string& note : result.notes) spdlog::info("{}", note);
   const SearchStatistics& s = result.statistics;
   if (options.json) {
     nlohmann::json plan = nlohmann::json::array();
     for (const Action& a : result.plan) plan.push_back(format_action(*world.domain, *world.universe, a));
-    const nlohmann::json document{{"status", to_string(result.status)}, {"plan", plan},
-                                  {"nodes_expanded", s.nodes_expanded}, {"nodes_generated", s.nodes_generated},
-                                  {"depth_limit", s.depth_limit_reached}, {"relevant_objects", s.relevant_objects},
-                                  {"ground_actions", s.ground_actions}, {"elapsed_ms", s.elapsed_ms}};
-    out << dump_json(document, 2) << "\n";
+    nlohmann::json j{{"status", to_string(result.status)}, {"plan", plan},
+                     {"planner", greedy ? "greedy-best-first" : "iterative-deepening"},
+                     {"nodes_expanded", s.nodes_expanded}, {"nodes_generated", s.nodes_generated},
+                     {"relevant_objects", s.relevant_objects}, {"ground_actions", s.ground_actions},
+                     {"elapsed_ms", s.elapsed_ms}, {"relevance", result.notes}};
+    if (greedy) {
+      j["nodes_evaluated"] = s.nodes_evaluated;
+      j["dead_ends"] = s.dead_ends;
+      j["states_registered"] = s.states_registered;
+      j["propositions"] = s.propositions;
+      j["initial_heuristic"] = s.initial_heuristic;
+      j["best_heuristic"] = s.best_heuristic;
+      j["steps_removed"] = s.steps_removed;
+      j["grounding_ms"] = s.grounding_ms;
+    } else {
+      j["depth_limit"] = s.depth_limit_reached;
+    }
+    out << dump_json(j, 2) << "\n";
   } else {
     for (const Action& a : result.plan) out << format_action(*world.domain, *world.universe, a) << "\n";
-    out << ";; status " << to_string(result.status) << ", " << result.plan.size() << " steps, "
-        << s.nodes_expanded << " nodes expanded, " << s.nodes_generated << " generated, depth limit "
-        << s.depth_limit_reached << ", " << s.relevant_objects << " relevant objects, "
-        << s.ground_actions << " ground actions, " << s.elapsed_ms << " ms\n";
+    out << ";; status " << to_string(result.status) << ", " << result.plan.size() << " steps, ";
+    if (greedy) {
+      out << "greedy best-first search, " << s.nodes_expanded << " nodes expanded, " << s.nodes_generated
+          << " generated, " << s.states_registered << " states, heuristic " << s.initial_heuristic
+          << " at the start, " << s.steps_removed << " steps removed afterwards, ";
+    } else {
+      out << s.nodes_expanded << " nodes expanded, " << s.nodes_generated << " generated, depth limit "
+          << s.depth_limit_reached << ", ";
+    }
+    out << s.relevant_objects << " relevant objects, " << s.ground_actions << " ground actions, " << s.elapsed_ms
+        << " ms\n";
   }
   return result.status == SearchStatus::kSolved ? Outcome::kSuccess : Outcome::kGoalNotReached;
 }
@@ -103,7 +148,7 @@ CommandResult run_export_pddl(const ExportPddlOptions& options, std::ostream& ou
   auto scenario = load_scenario(options.scenario);
   if (!scenario) return tl::unexpected(scenario.error());
   const World& world = scenario->world;
-  auto goal = parse_goal(*world.domain, *world.universe, options.goal);
+  auto goal = goal_of(*scenario, options.goal);
   if (!goal) return tl::unexpected(goal.error());
   std::error_code ec;
   std::filesystem::create_directories(options.out_dir, ec);

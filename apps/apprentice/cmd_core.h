@@ -16,19 +16,26 @@ struct WorldOptions {
 };
 CommandResult run_world(const WorldOptions& options, std::ostream& out);
 
+// --goal intent: the conjunction of every goal assertion of the scenario's intent.
+inline constexpr const char* kIntentGoal = "intent";
+
 struct PlanOptions {
   std::string scenario;
-  std::string goal;
-  int depth = 4;
-  std::optional<long> max_nodes;
+  std::string goal;  // PDDL, or kIntentGoal
+  // Iterative deepening to this depth; without it, greedy best-first search.
+  std::optional<int> depth;
+  std::optional<long> node_limit;
+  std::optional<double> time_limit_s;
   bool no_pruning = false;
   bool json = false;
+  bool progress = false;  // report progress on `progress_out` about once a second after the first
 };
-CommandResult run_plan(const PlanOptions& options, std::ostream& out);
+// Progress lines go to `progress_out` (stderr, when it is a terminal).
+CommandResult run_plan(const PlanOptions& options, std::ostream& out, std::ostream& progress_out);
 
 struct ExportPddlOptions {
   std::string scenario;
-  std::string goal;
+  std::string goal;  // PDDL, or kIntentGoal
   std::string out_dir;
 };
 CommandResult run_export_pddl(const ExportPddlOptions& options, std::ostream& out);

@@ -7,7 +7,9 @@
 #include "language/corpus.h"
 #include "language/generation.h"
 #include "language/grounding.h"
+#include "language/reply.h"
 #include "util/json.h"
+#include "util/text.h"
 #include "world/scenario.h"
 
 namespace apprentice::cli {
@@ -66,6 +68,66 @@ void print_json(const World& world, std::string_view sentence, const Interpretat
   out << dump_json(j) << "\n";
 }
 
+// --asked: the sentence as a teacher's reply.
+CommandResult run_reply(const Scenario& scenario, const language::Grounder& grounder,
+                        std::optional<ObjectId> object, const InterpretOptions& options, std::ostream& out) {
+  const World& world = scenario.world;
+  language::ReplyContext context;
+  bool known = false;
+  for (language::Asked a : {language::Asked::kTask, language::Asked::kTaskStep, language::Asked::kSubtaskEnd,
+                            language::Asked::kGoal, language::Asked::kAction, language::Asked::kYesNo,
+                            language::Asked::kWhich})
+    if (language::to_string(a) == *options.asked) {
+      context.asked = a;
+      known = true;
+    }
+  if (!known)
+    return make_error(ErrorCode::kInvalidInput,
+                      "--asked takes task, task-step, subtask-end, goal, action, yes-no or which, not " +
+                          apprentice::quoted(*options.asked));
+  context.object = object;
+  auto id = [&](const std::string& name) -> Result<ObjectId> {
+    if (auto found = world.universe->find(name)) return *found;
+    return make_error(ErrorCode::kNotFound, "no object " + name + " in " + options.scenario);
+  };
+  if (options.recent) {
+    auto recent = id(*options.recent);
+    if (!recent) return tl::unexpected(recent.error());
+    context.recent_place = *recent;
+  }
+  for (const std::string& name : options.choices) {
+    auto choice = id(name);
+    if (!choice) return tl::unexpected(choice.error());
+    context.choices.push_back(*choice);
+  }
+  language::Reply reply = language::read_reply(grounder, world, context, *options.sentence);
+  std::string meaning = language::format_reply(world, reply);
+  std::string reason, question;
+  std::vector<std::string> examples;
+  if (const auto* unusable = std::get_if<language::Unusable>(&reply)) {
+    reason = unusable->reason;
+    examples = unusable->examples;
+  }
+  if (const auto* ambiguous = std::get_if<language::Ambiguous>(&reply)) question = ambiguous->question;
+  if (options.json) {
+    nlohmann::ordered_json j;
+    j["reply"] = *options.sentence;
+    j["asked"] = *options.asked;
+    j["meaning"] = meaning;
+    if (!reason.empty()) j["reason"] = reason;
+    if (!question.empty()) j["question"] = question;
+    if (!examples.empty()) j["examples"] = examples;
+    out << dump_json(j) << "\n";
+  } else {
+    out << "reply: " << *options.sentence << "\nasked: " << *options.asked << "\nmeaning: " << meaning << "\n";
+    if (!reason.empty()) out << "reason: " << reason << "\n";
+    if (!question.empty()) out << "question: " << question << "\n";
+    for (const std::string& e : examples) out << "example: " << e << "\n";
+  }
+  bool usable = !std::holds_alternative<language::Unusable>(reply) && !std::holds_alternative<language::Ambiguous>(reply);
+  return usable ? Outcome::kSuccess : Outcome::kGoalNotReached;
+}
+
 CommandResult run_corpus(const Scenario& scenario, const language::Grounder& grounder,
                          const InterpretOptions& options, std::ostream& out) {
   auto lines = language::read_corpus(*options.corpus);
@@ -87,6 +149,7 @@ CommandResult run_interpret(const InterpretOptions& options, std::ostream& out) 
   if (options.corpus) return run_corpus(*scenario, grounder, options, out);
   auto object = object_option(*scenario, options);
   if (!object) return tl::unexpected(object.error());
+  if (options.asked) return run_reply(*scenario, grounder, *object, options, out);
   const World& world = scenario->world;
   Interpretation in = grounder.interpret(*options.sentence, world, *object);
   if (options.json) {

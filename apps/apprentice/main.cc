@@ -6,6 +6,8 @@
 //   3  local storage failed or holds unreadable data
 //   4  a needed service (the LLM server) is unavailable or timed out
 //   130 interrupted
+#include <unistd.h>
+
 #include <cstdio>
 #include <iostream>
 
@@ -38,6 +40,7 @@ int finish(const CommandResult& result) {
     std::cerr << "apprentice: " << result.error().describe() << "\n";
     return exit_code_for(result.error());
   }
+  if (*result == Outcome::kInterrupted) return 130;
   return *result == Outcome::kSuccess ? 0 : 1;
 }
 
@@ -60,19 +63,29 @@ int run(int argc, char** argv) {
   world_cmd->callback([&] { result = run_world(world, std::cout); });
 
   PlanOptions plan;
-  auto* plan_cmd = app.add_subcommand("plan", "Plan with iterative-deepening search from a scenario's state to a goal");
+  auto* plan_cmd = app.add_subcommand(
+      "plan", "Plan from a scenario's state to a goal: greedy best-first search, or iterative deepening with --depth");
   plan_cmd->add_option("--scenario", plan.scenario, "Scenario file (YAML)")->required();
-  plan_cmd->add_option("--goal", plan.goal, "Goal, e.g. '(and (in ketchup1 fridge1) (closed fridge1))'")->required();
-  plan_cmd->add_option("--depth", plan.depth, "Depth limit")->capture_default_str()->check(CLI::Range(0, 64));
-  plan_cmd->add_option("--max-nodes", plan.max_nodes, "Stop after expanding this many nodes")->check(CLI::PositiveNumber);
+  plan_cmd->add_option("--goal", plan.goal,
+                       "Goal, e.g. '(and (in ketchup1 fridge1) (closed fridge1))', or 'intent' for the whole task")
+      ->required();
+  plan_cmd->add_option("--depth", plan.depth, "Iterative deepening to this depth (a shortest plan)")
+      ->check(CLI::Range(0, 64));
+  plan_cmd->add_option("--node-limit,--max-nodes", plan.node_limit, "Stop after expanding this many nodes")
+      ->check(CLI::PositiveNumber);
+  plan_cmd->add_option("--time-limit", plan.time_limit_s, "Stop after this many seconds")
+      ->check(CLI::PositiveNumber);
   plan_cmd->add_flag("--no-pruning", plan.no_pruning, "Ground every object, not only those relevant to the goal");
   plan_cmd->add_flag("--json", plan.json, "Machine-readable output");
-  plan_cmd->callback([&] { result = run_plan(plan, std::cout); });
+  plan_cmd->callback([&] {
+    plan.progress = isatty(fileno(stderr)) != 0;
+    result = run_plan(plan, std::cout, std::cerr);
+  });
 
   ExportPddlOptions export_pddl;
   auto* export_cmd = app.add_subcommand("export-pddl", "Write the PDDL domain and a problem for a scenario and goal");
   export_cmd->add_option("--scenario", export_pddl.scenario, "Scenario file (YAML)")->required();
-  export_cmd->add_option("--goal", export_pddl.goal, "Goal, as for plan")->required();
+  export_cmd->add_option("--goal", export_pddl.goal, "Goal, as for plan ('intent' for the whole task)")->required();
   export_cmd->add_option("--out", export_pddl.out_dir, "Directory to write domain.pddl and problem.pddl into")->required();
   export_cmd->callback([&] { result = run_export_pddl(export_pddl, std::cout); });
 
@@ -111,8 +124,16 @@ int run(int argc, char** argv) {
   interpret_cmd->add_option("--subtask", interpret_subtask, "The subtask (a category --object is taken at its place)");
   interpret_cmd->add_option("--corpus", interpret_corpus, "A JSONL corpus of LLM goal statements to ground");
   interpret_cmd->add_flag("--json", interpret.json, "Machine-readable output");
+  std::string interpret_asked, interpret_recent;
+  interpret_cmd->add_option("--asked", interpret_asked,
+                            "Read the sentence as a reply to a question: task, task-step, subtask-end, goal, action, "
+                            "yes-no or which");
+  interpret_cmd->add_option("--recent", interpret_recent, "With --asked: the place named last (an id)");
+  interpret_cmd->add_option("--choices", interpret.choices, "With --asked which: the ids offered")->delimiter(',');
   interpret_cmd->add_option("sentence", interpret_sentence, "The sentence to interpret");
   interpret_cmd->callback([&] {
+    if (!interpret_asked.empty()) interpret.asked = interpret_asked;
+    if (!interpret_recent.empty()) interpret.recent = interpret_recent;
     if (!interpret_sentence.empty()) interpret.sentence = interpret_sentence;
     if (!interpret_object.empty()) interpret.object = interpret_object;
     if (!interpret_subtask.empty()) interpret.subtask = interpret_subtask;
@@ -127,7 +148,9 @@ int run(int argc, char** argv) {
   experiment_cmd->add_option("--conditions", experiment.conditions,
                              "Comma-separated conditions, e.g. instruction,inst+search4 (default: all that can run)")
       ->delimiter(',');
-  experiment_cmd->add_flag("--json", experiment.json, "One JSON object per condition");
+  experiment_cmd->add_flag("--json", experiment.json, "Print a JSON array with one object per condition");
+  experiment_cmd->add_option("--plot", experiment.plot, "Draw the results into FILE.svg or FILE.png (needs python3-matplotlib)");
+  experiment_cmd->add_flag("-q,--quiet", experiment.quiet, "No progress line on a terminal");
   experiment_cmd->add_option("--transcript", experiment.transcript_dir, "Write each condition's dialogue to DIR/<condition>.txt");
   experiment_cmd->add_option("--knowledge-out", experiment.knowledge_out, "Keep each condition's knowledge in DIR/<condition>.sqlite");
   experiment_cmd->add_option("--knowledge-in", experiment.knowledge_in,
@@ -146,6 +169,7 @@ int run(int argc, char** argv) {
       ->capture_default_str();
   teach_cmd->add_option("--generalization", teach.generalization, "Rule generalization: full or paper")
       ->capture_default_str();
+  teach_cmd->add_flag("-q,--quiet", teach.quiet, "Print only the agent's questions and the summary");
   add_llm_flags(teach_cmd, teach.llm);
   teach_cmd->callback([&] { result = run_teach(teach, program, stdin, std::cout); });
 
@@ -158,10 +182,11 @@ int run(int argc, char** argv) {
   run_cmd->callback([&] { result = run_run(run_options, std::cout); });
 
   KnowledgeOptions knowledge;
-  auto* knowledge_cmd = app.add_subcommand("knowledge", "Print learned goals and rules, with where each came from");
+  auto* knowledge_cmd = app.add_subcommand("knowledge", "Print what was learned (tasks, goals, rules) in English, with where each came from");
   knowledge_cmd->add_option("--knowledge", knowledge.knowledge, "Knowledge store (SQLite)")->required();
   knowledge_cmd->add_option("--domain", knowledge.domain, "PDDL domain the rules use (default: the kitchen)");
   knowledge_cmd->add_flag("--json", knowledge.json, "Machine-readable output");
+  knowledge_cmd->add_flag("--pddl", knowledge.pddl, "Goals and rules in PDDL terms instead of English");
   knowledge_cmd->callback([&] { result = run_knowledge(knowledge, program, std::cout); });
 
   try {

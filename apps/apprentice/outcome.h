@@ -9,6 +9,7 @@ namespace apprentice::cli {
 enum class Outcome {
   kSuccess,         // exit 0
   kGoalNotReached,  // exit 1: a plan or task did not reach its goal
+  kInterrupted,     // exit 130: the person pressed Ctrl-C (the command has said so)
 };
 
 using CommandResult = Result<Outcome>;

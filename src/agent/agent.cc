@@ -1,9 +1,22 @@
+// Algorithm 1 as a loop of steps. next_step() reads how far the teaching
+// has come and does what comes next:
+//
+//   no task yet                -> ask for the task (learn_task_name)
+//   an object being worked on  -> act until its goal holds (achieve_current)
+//   a subtask under way        -> its next object: the goal it knows for
+//                                 that kind of object, or one it asks for
+//                                 (start_object); or, the paper's way, ask
+//                                 whether the subtask is done after its
+//                                 first object (learn_subtask_end)
+//   a known task's subtasks    -> do them, asking only what is new
+//   otherwise                  -> ask for the task's next step
+//                                 (learn_task_step)
 #include "agent/agent.h"
 
 #include <algorithm>
 
 #include "agent/session.h"
-#include "language/generation.h"
+#include "language/narration.h"
 #include "util/log.h"
 #include "util/text.h"
 
@@ -38,154 +51,285 @@ std::string TaskLearningAgent::Session::describe_object(ObjectId object) const {
   return world().universe->name(object) + " (" + world().universe->info(object).category + ")";
 }
 
-Result<std::string> TaskLearningAgent::Session::ask(QuestionKind kind, std::string text,
-                                                    std::optional<ObjectId> object, std::optional<Goal> goal,
-                                                    std::optional<Action> action) {
-  APPRENTICE_CHECK(dialogue_ != nullptr);
-  Question question;
-  question.kind = kind;
-  question.text = std::move(text);
-  question.task = task_.name;
-  question.subtask = subtask_verb_;
-  question.object = object;
-  question.goal = std::move(goal);
-  question.action = action;
-  return dialogue_->ask(question, world());
+Result<AgentReport> TaskLearningAgent::Session::learn_task() {
+  while (!progress_.finished) {
+    Step step = next_step();
+    // An undo has put everything back as it was before the last lesson:
+    // the loop goes on from there.
+    if (!step && step.error().error) return tl::unexpected(*step.error().error);
+  }
+  report_.objects = progress_.objects;
+  report_.goals_learned = progress_.goals_learned;
+  report_.rules_learned = progress_.rules_learned;
+  report_.task_finished = true;
+  return report_;
 }
 
-std::optional<ObjectId> TaskLearningAgent::Session::next_object(ObjectId place) {
+Result<AgentReport> TaskLearningAgent::Session::perform_task(const TaskKnowledge& task) {
+  progress_.task = task;
+  progress_.known_to_do.assign(task.subtasks.begin(), task.subtasks.end());
+  while (!progress_.finished) {
+    Step step = next_step();
+    if (!step) return tl::unexpected(step.error().error.value_or(Error{ErrorCode::kCancelled, "stopped"}));
+  }
+  report_.objects = progress_.objects;
+  report_.task_finished = true;
+  return report_;
+}
+
+TaskLearningAgent::Session::Step TaskLearningAgent::Session::next_step() {
+  if (progress_.in_progress) return achieve_current();
+  if (progress_.task.name.empty()) return learn_task_name();
+  if (progress_.current) return work_on_subtask();
+  if (!progress_.known_to_do.empty()) return start_known_subtask();
+  if (progress_.finishing || !learning_) {
+    progress_.finished = true;
+    return {};
+  }
+  return learn_task_step();
+}
+
+// --- The task and its structure ---------------------------------------------
+
+TaskLearningAgent::Session::Step TaskLearningAgent::Session::learn_task_name() {
+  auto heard = converse(question(QuestionKind::kTaskName, language::ask_task()), context(language::Asked::kTask),
+                        [](const language::Reply& r) -> std::optional<std::string> {
+                          if (std::holds_alternative<language::TaskNamed>(r)) return std::nullopt;
+                          return "I need the name of the task first.";
+                        });
+  if (!heard) return tl::unexpected(heard.error());
+  if (!heard->reply)
+    return stop(Error{ErrorCode::kInvalidInput,
+                      "the instructor's replies could not be understood: " + apprentice::quoted(heard->text)});
+  begin_lesson(heard->text);
+  const std::string name = std::get<language::TaskNamed>(*heard->reply).name;
+  if (const TaskKnowledge* known = agent_.knowledge_.find_task(name)) {
+    progress_.task = *known;
+    progress_.known_to_do.assign(known->subtasks.begin(), known->subtasks.end());
+    progress_.asked_about_task = !known->subtasks.empty();
+    say("I know how to " + language::task_phrase(name) + "; I will ask only about what is new.");
+    return {};
+  }
+  progress_.task = TaskKnowledge{name, {}};
+  return {};
+}
+
+TaskLearningAgent::Session::Step TaskLearningAgent::Session::learn_task_step() {
+  using language::Reply;
+  const bool awaiting_repeat = progress_.current && progress_.current->mode == Current::Mode::kAwaitRepeat;
+  Question asked = question(QuestionKind::kTaskStep, language::ask_task_step(progress_.task.name, !progress_.asked_about_task));
+  auto heard = converse(asked, context(language::Asked::kTaskStep), [&](const Reply& r) -> std::optional<std::string> {
+    if (std::holds_alternative<language::LoopNamed>(r) || std::holds_alternative<language::SubtaskNamed>(r) ||
+        std::holds_alternative<language::Finished>(r))
+      return std::nullopt;
+    if (std::holds_alternative<language::Proceed>(r))
+      return awaiting_repeat ? std::nullopt : std::optional<std::string>("There is nothing to repeat yet.");
+    return "I asked for the next step of the task: a subtask and its place, or that the task is done.";
+  });
+  if (!heard) return tl::unexpected(heard.error());
+  if (!heard->reply)
+    return stop(Error{ErrorCode::kInvalidInput,
+                      "the instructor's replies could not be understood: " + apprentice::quoted(heard->text)});
+  begin_lesson(heard->text);
+  progress_.asked_about_task = true;
+  const Reply& reply = *heard->reply;
+  // A loop that was announced runs before anything else is begun.
+  if (awaiting_repeat) progress_.current->mode = Current::Mode::kLoop;
+  if (const auto* loop = std::get_if<language::LoopNamed>(&reply)) {
+    progress_.announced_loop = loop->places;
+    say("So I repeat the next steps while something is " + std::string(language::relation_word(world(), loop->places.front())) +
+        " " + language::spoken_places(world(), loop->places) + ".");
+    return {};
+  }
+  if (const auto* subtask = std::get_if<language::SubtaskNamed>(&reply)) return start_subtask(*subtask);
+  if (std::holds_alternative<language::Finished>(reply)) {
+    progress_.finishing = true;
+    say("So the task is done" + std::string(progress_.current ? " once this subtask is." : "."));
+    return {};
+  }
+  // Proceed: the loop runs (set above).
+  say("So I " + progress_.current->verb + " everything else " + progress_.current->relation + " " +
+      language::spoken_places(world(), progress_.current->places) + " the same way.");
+  return {};
+}
+
+TaskLearningAgent::Session::Step TaskLearningAgent::Session::start_subtask(const language::SubtaskNamed& named) {
+  Current next;
+  next.verb = named.verb;
+  next.relation = std::string(language::to_string(named.relation));
+  next.places = named.places;
+  next.mode = progress_.announced_loop ? Current::Mode::kFirstObject : Current::Mode::kLoop;
+  progress_.announced_loop.reset();
+  LearnedSubtask learned{next.verb, next.relation, world().universe->info(next.places.front()).category};
+  if (std::find(progress_.task.subtasks.begin(), progress_.task.subtasks.end(), learned) ==
+      progress_.task.subtasks.end()) {
+    progress_.task.subtasks.push_back(learned);
+    if (auto s = remember_task(); !s) return stop(s.error());
+  }
+  const std::string where = next.relation + " " + language::spoken_places(world(), next.places);
+  if (next.mode == Current::Mode::kFirstObject)
+    say("So I " + next.verb + " one thing " + where + " at a time.");
+  else
+    say("So I " + next.verb + " what is " + where + ", one thing at a time.");
+  // Naming the next subtask ends the one under way, once its loop is done.
+  if (progress_.current) {
+    progress_.current->mode = Current::Mode::kLoop;
+    progress_.queued = std::move(next);
+  } else {
+    progress_.current = std::move(next);
+  }
+  return {};
+}
+
+TaskLearningAgent::Session::Step TaskLearningAgent::Session::learn_subtask_end() {
+  using language::Reply;
+  const Current& c = current();
+  Question asked = question(QuestionKind::kSubtaskStep, language::ask_subtask_end(c.verb, world(), c.places));
+  auto heard = converse(asked, context(language::Asked::kSubtaskEnd), [](const Reply& r) -> std::optional<std::string> {
+    if (std::holds_alternative<language::Finished>(r) || std::holds_alternative<language::Proceed>(r) ||
+        std::holds_alternative<language::SubtaskNamed>(r))
+      return std::nullopt;
+    return "I asked whether there is more to this subtask.";
+  });
+  if (!heard) return tl::unexpected(heard.error());
+  if (!heard->reply) {
+    // A program that cannot say: take the subtask as done, as it was.
+    progress_.current->mode = Current::Mode::kAwaitRepeat;
+    return {};
+  }
+  begin_lesson(heard->text);
+  if (std::holds_alternative<language::Finished>(*heard->reply)) {
+    progress_.current->mode = Current::Mode::kAwaitRepeat;
+    say("So that is all there is to " + c.verb + " for one thing.");
+    return {};
+  }
+  if (const auto* subtask = std::get_if<language::SubtaskNamed>(&*heard->reply)) return start_subtask(*subtask);
+  progress_.current->mode = Current::Mode::kLoop;
+  say("So I " + c.verb + " everything else " + c.relation + " " + language::spoken_places(world(), c.places) +
+      " the same way.");
+  return {};
+}
+
+TaskLearningAgent::Session::Step TaskLearningAgent::Session::start_known_subtask() {
+  LearnedSubtask subtask = progress_.known_to_do.front();
+  progress_.known_to_do.pop_front();
+  std::vector<ObjectId> places = world().universe->with_category(subtask.place_category);
+  if (places.empty()) {
+    if (learning_)
+      say("There is no " + language::spoken_category(subtask.place_category) + " here, so I cannot " + subtask.verb +
+          " it.");
+    else
+      report_.help_needed.push_back("which " + language::spoken_category(subtask.place_category) + " to " +
+                                    subtask.verb + ": there is none here");
+    return {};
+  }
+  progress_.current = Current{subtask.verb, subtask.relation, places, Current::Mode::kLoop};
+  return {};
+}
+
+Status TaskLearningAgent::Session::remember_task() {
+  auto& tasks = agent_.knowledge_.tasks;
+  auto existing = std::find_if(tasks.begin(), tasks.end(), [&](const TaskKnowledge& t) { return t.name == progress_.task.name; });
+  std::optional<TaskKnowledge> previous;
+  if (existing == tasks.end()) {
+    tasks.push_back(progress_.task);
+  } else {
+    previous = *existing;
+    *existing = progress_.task;
+  }
+  return store_task(std::move(previous));
+}
+
+// --- Subtasks and their objects ----------------------------------------------
+
+TaskLearningAgent::Session::Step TaskLearningAgent::Session::work_on_subtask() {
+  Current& c = *progress_.current;
+  switch (c.mode) {
+    case Current::Mode::kEndQuestion: return learn_subtask_end();
+    case Current::Mode::kAwaitRepeat: return learn_task_step();
+    case Current::Mode::kFirstObject:
+    case Current::Mode::kLoop:
+      if (auto object = next_object(c)) return start_object(*object);
+      finish_subtask();
+      return {};
+  }
+  return {};
+}
+
+void TaskLearningAgent::Session::finish_subtask() {
+  const Current& c = current();
+  if (learning_)
+    say("There is nothing " + std::string(c.mode == Current::Mode::kFirstObject ? "" : "left ") + c.relation + " " +
+        language::spoken_places(world(), c.places) + ".");
+  progress_.current = std::move(progress_.queued);
+  progress_.queued.reset();
+}
+
+std::optional<ObjectId> TaskLearningAgent::Session::next_object(const Current& current) const {
   const Vocabulary& v = world().vocabulary;
   for (const Fact& f : world().state.facts()) {
-    if ((f.predicate != v.on && f.predicate != v.in) || f.args[1] != place) continue;
-    if (evaluated_.count(f.args[0])) continue;
+    if ((f.predicate != v.on && f.predicate != v.in) || f.arity != 2) continue;
+    if (std::find(current.places.begin(), current.places.end(), f.args[1]) == current.places.end()) continue;
+    if (progress_.evaluated.count(f.args[0])) continue;
     return f.args[0];
   }
   return std::nullopt;
 }
 
-Status TaskLearningAgent::Session::remember_task() {
-  auto existing = std::find_if(agent_.knowledge_.tasks.begin(), agent_.knowledge_.tasks.end(),
-                               [&](const TaskKnowledge& t) { return t.name == task_.name; });
-  if (existing == agent_.knowledge_.tasks.end()) agent_.knowledge_.tasks.push_back(task_);
-  else *existing = task_;
-  if (agent_.store_) return agent_.store_->save_task(task_);
-  return {};
-}
-
-Result<AgentReport> TaskLearningAgent::Session::learn_task() {
-  auto name = ask(QuestionKind::kTaskName, "What task should I learn?");
-  if (!name) return tl::unexpected(name.error());
-  auto form = agent_.understanding_.parse(*name);
-  if (!form || !std::holds_alternative<language::TaskName>(*form))
-    return make_error(ErrorCode::kInvalidInput, "expected the name of a task, such as \"Tidy kitchen.\", not " + apprentice::quoted(*name));
-  const auto& words = std::get<language::TaskName>(*form).words;
-  task_.name = join(words, " ");
-  task_verb_ = words.front();
-  std::optional<Current> current;
-  int confused = 0;
-  for (;;) {
-    auto reply = ask(QuestionKind::kTaskStep, language::say_next_goal_request(task_verb_));
-    if (!reply) return tl::unexpected(reply.error());
-    auto step = agent_.understanding_.parse(*reply);
-    if (step && std::holds_alternative<language::Done>(*step)) break;
-    if (step && std::holds_alternative<language::RepeatWhile>(*step)) {
-      const auto& repeat = std::get<language::RepeatWhile>(*step);
-      // The loop's place comes again in its subtask; here it must only exist.
-      if (agent_.understanding_.place(world(), repeat.place, repeat.relation)) continue;
-    } else if (step && std::holds_alternative<language::SubtaskCommand>(*step)) {
-      const auto& command = std::get<language::SubtaskCommand>(*step);
-      auto place = agent_.understanding_.place(world(), command.place, command.relation);
-      if (place) {
-        current = Current{command.verb, *place};
-        task_.subtasks.push_back(LearnedSubtask{command.verb, std::string(language::to_string(command.relation)),
-                                                world().universe->info(*place).category});
-        if (auto s = remember_task(); !s) return tl::unexpected(s.error());
-        if (auto s = run_first_iteration(*current); !s) return tl::unexpected(s.error());
-        continue;
-      }
-    } else if (step && std::holds_alternative<language::Repeat>(*step) && current) {
-      if (auto s = run_loop(*current); !s) return tl::unexpected(s.error());
-      continue;
-    }
-    if (++confused > agent_.options_.max_retries)
-      return make_error(ErrorCode::kInvalidInput, "the instructor's replies could not be understood: " + apprentice::quoted(*reply));
-    dialogue_->say("I do not understand " + apprentice::quoted(*reply) + (step ? "" : ": " + step.error().message) + ".");
-  }
-  report_.task_finished = true;
-  return report_;
-}
-
-Status TaskLearningAgent::Session::run_first_iteration(const Current& current) {
-  subtask_verb_ = current.verb;
-  auto object = next_object(current.place);
-  if (!object) return {};
+TaskLearningAgent::Session::Step TaskLearningAgent::Session::start_object(ObjectId object) {
   ObjectReport report;
-  if (auto s = handle_object(current, *object, report); !s) return s;
-  // Learn where the subtask ends: with this object done, what is next? The
-  // question is about the subtask, not the object.
-  for (int attempt = 0; attempt <= agent_.options_.max_retries; ++attempt) {
-    auto reply = ask(QuestionKind::kSubtaskStep, language::say_next_goal_request(current.verb));
-    if (!reply) return tl::unexpected(reply.error());
-    auto form = agent_.understanding_.parse(*reply);
-    if (form && std::holds_alternative<language::Done>(*form)) return {};
-    dialogue_->say("I expected to hear that " + current.verb + " is done.");
-  }
-  return {};
-}
-
-Status TaskLearningAgent::Session::run_loop(const Current& current) {
-  subtask_verb_ = current.verb;
-  while (auto object = next_object(current.place)) {
-    ObjectReport report;
-    if (auto s = handle_object(current, *object, report); !s) return s;
-  }
-  return {};
-}
-
-Status TaskLearningAgent::Session::handle_object(const Current& current, ObjectId object, ObjectReport& report) {
-  evaluated_.insert(object);
   report.object = world().universe->name(object);
-  report.subtask = current.verb;
+  report.subtask = current().verb;
   std::optional<Goal> goal;
-  if (const GoalKnowledge* known = agent_.knowledge_.goals.find(goal_key(current, object))) {
+  if (const GoalKnowledge* known = agent_.knowledge_.goals.find(goal_key(object))) {
     goal = instantiate_goal(world(), *known, object);
-    if (goal) report.goal_source = "memory";
-  }
-  if (!goal) {
-    if (!learning_) {
-      report.note = "no goal known";
-      report_.help_needed.push_back("a goal for " + describe_object(object) + " in " + current.verb);
-      report_.objects.push_back(report);
-      return {};
+    if (goal) {
+      report.goal_source = "memory";
+      if (learning_) say(language::announce_known_goal(world(), object, *goal));
     }
-    auto acquired = acquire_goal(current, object, report);
+  }
+  if (!goal && !learning_) {
+    report.note = "no goal known";
+    report_.help_needed.push_back("where " + language::spoken_name_and_location(world(), object) + " goes (" +
+                                  current().verb + ")");
+  } else if (!goal) {
+    auto acquired = acquire_goal(object, report);
     if (!acquired) return tl::unexpected(acquired.error());
     goal = *acquired;
   }
-  if (goal) {
-    report.goal = format_goal(*world().domain, *world().universe, *goal);
-    auto achieved = achieve(current, object, *goal, report);
-    if (!achieved) return tl::unexpected(achieved.error());
-    report.achieved = *achieved;
+  if (!goal) {
+    progress_.in_progress = InProgress{object, Goal{}, report, world().state, {}, {}, {}};
+    finish_object();
+    return {};
   }
-  report_.objects.push_back(report);
+  report.goal = format_goal(*world().domain, *world().universe, *goal);
+  progress_.in_progress = InProgress{object, *goal, report, world().state, {}, {}, {}};
   return {};
 }
 
-Result<AgentReport> TaskLearningAgent::Session::perform_task(const TaskKnowledge& task) {
-  task_ = task;
-  for (const LearnedSubtask& subtask : task.subtasks) {
-    auto places = world().universe->with_category(subtask.place_category);
-    if (places.size() != 1) {
-      report_.help_needed.push_back("which " + subtask.place_category + " to " + subtask.verb +
-                                    " (there are " + std::to_string(places.size()) + ")");
-      continue;
-    }
-    Current current{subtask.verb, places.front()};
-    if (auto s = run_loop(current); !s) return tl::unexpected(s.error());
+TaskLearningAgent::Session::Step TaskLearningAgent::Session::achieve_current() {
+  InProgress& work = *progress_.in_progress;
+  auto achieved = achieve(work);
+  if (!achieved) return tl::unexpected(achieved.error());
+  work.report.achieved = *achieved;
+  if (*achieved && learning_) {
+    if (auto s = learn_rules(work); !s) return stop(s.error());
   }
-  report_.task_finished = true;
-  return report_;
+  if (learning_) {
+    std::string done = language::report_actions(world(), work.actions);
+    if (!done.empty()) say(done);
+  }
+  finish_object();
+  return {};
+}
+
+void TaskLearningAgent::Session::finish_object() {
+  InProgress& work = *progress_.in_progress;
+  progress_.evaluated.insert(work.object);
+  progress_.objects.push_back(work.report);
+  progress_.in_progress.reset();
+  if (progress_.current && progress_.current->mode == Current::Mode::kFirstObject)
+    progress_.current->mode = Current::Mode::kEndQuestion;
 }
 
 }  // namespace apprentice

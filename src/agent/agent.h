@@ -35,9 +35,14 @@ struct AgentOptions {
   Generalization generalization = Generalization::kFull;
   // Consult learned policy rules before search and before asking.
   bool use_rules = true;
-  // Give up on an object after this many actions (a bad goal or bad advice).
+  // Give up on an object after this many actions (a bad goal or bad
+  // advice). With a person teaching, the agent asks the person instead of
+  // giving up, and only what the person says is done.
   int max_actions_per_object = 30;
-  // Re-ask at most this many times after a reply the agent cannot use.
+  // Re-ask an instructor that is not a person (Instructor::is_person) at
+  // most this many times after a reply the agent cannot use; the question
+  // then goes unanswered and the report says so. A person is asked again
+  // until they answer or end the session.
   int max_retries = 3;
   // LLM goals: which analysis and repair steps run (agent/goal_repair.h).
   GoalRepairOptions goal_repair;
@@ -74,20 +79,28 @@ struct AgentReport {
   bool task_finished = false;  // the instructor said the task was done
 };
 
+// Ownership: the agent owns its options, knowledge and understanding (by
+// value). `store` and `llm` are borrowed and must outlive the agent; the
+// simulator and dialogue are lent for one call. Not thread-safe: one
+// thread uses an agent at a time (separate agents may run in parallel).
 class TaskLearningAgent {
  public:
   // `store` may be null (nothing persisted); `llm` may be null unless the
-  // condition uses the LLM.
+  // condition uses the LLM (checked: a bug aborts).
   TaskLearningAgent(AgentOptions options, Knowledge knowledge, Understanding understanding,
                     KnowledgeStore* store, LlmAdvisor* llm);
 
-  // Learns and performs the task the instructor teaches (Algorithm 1).
-  // Errors: kCancelled when the instructor leaves (what was learned is
-  // kept); kIo/kDataLoss if the store cannot be written.
+  // Learns and performs the task the instructor teaches (Algorithm 1),
+  // saying what it understood and what it did, and answering the
+  // teacher's commands (help, status, undo, forget, quit). Errors:
+  // kCancelled when the instructor leaves (end of input or "quit"; what was
+  // learned is kept); kIo/kDataLoss if the store cannot be written.
   Result<AgentReport> learn(Simulator& simulator, Dialogue& dialogue);
 
   // Performs a task it has learned, with learned knowledge alone: no
   // instructor, search or LLM. Reports where it would have needed help.
+  // Errors: kNotFound when no such task was learned (with an empty name:
+  // unless exactly one was).
   Result<AgentReport> perform(Simulator& simulator, const std::string& task_name);
 
   const Knowledge& knowledge() const { return knowledge_; }

@@ -6,6 +6,8 @@
 
 #include "agent/session.h"
 #include "language/generation.h"
+#include "language/narration.h"
+#include "search/greedy_best_first.h"
 #include "search/iterative_deepening.h"
 #include "util/log.h"
 #include "util/text.h"
@@ -27,110 +29,114 @@ std::string step_text(const World& world, const Action& action) {
 
 }  // namespace
 
-Result<bool> TaskLearningAgent::Session::achieve(const Current& current, ObjectId object, const Goal& goal,
-                                                 ObjectReport& report) {
+TaskLearningAgent::Session::Flow<bool> TaskLearningAgent::Session::achieve(InProgress& work) {
   const Condition& condition = agent_.options_.condition;
-  episode_start_ = world().state;
-  episode_actions_.clear();
-  episode_sources_.clear();
-  llm_steps_.clear();
-  std::deque<Action> plan;
-  // A failed search is not repeated until some other source has changed
-  // the state.
-  std::optional<State> searched_in;
+  ObjectReport& report = work.report;
+  Attempt attempt;
   int actions = 0;
-  while (!goal.satisfied_by(world().state)) {
-    if (actions >= agent_.options_.max_actions_per_object) {
+  while (!work.goal.satisfied_by(world().state)) {
+    // Past the bound, a program's run gives up on the object; a person is
+    // asked instead, and only what the person says is done.
+    const bool over_bound = actions >= agent_.options_.max_actions_per_object;
+    if (over_bound && !(learning_ && person() && condition.instruction)) {
       report.note = "gave up after " + std::to_string(actions) + " actions";
       return false;
     }
     std::optional<Action> next;
     std::string source;
-    if (!plan.empty()) {
-      next = plan.front();
-      plan.pop_front();
-      source = "search";
-    }
-    if (!next && agent_.options_.use_rules) {
-      MatchQuery query{&world().state, &goal, object, current.verb};
-      if (auto proposal = agent_.knowledge_.rules.select(*world().domain, *world().universe, query)) {
-        next = proposal->action;
-        source = "rule";
-        ++report_.rule_actions;
-      }
-    }
-    if (!next && learning_ && condition.search_depth > 0 && searched_in != world().state) {
-      SearchOptions options;
-      options.max_depth = condition.search_depth;
-      PlanResult result = find_plan(*world().domain, *world().universe, world().state, goal, options);
-      ++report_.searches;
-      report_.search_nodes += result.statistics.nodes_expanded;
-      searched_in = world().state;
-      if (result.status == SearchStatus::kSolved && !result.plan.empty()) {
-        plan.assign(result.plan.begin() + 1, result.plan.end());
-        next = result.plan.front();
-        source = "search";
-      }
-    }
-    if (!next && learning_ && condition.llm) {
-      auto from_llm = action_from_llm(current, object, goal);
-      if (!from_llm) return tl::unexpected(from_llm.error());
-      if (*from_llm) {
-        next = *from_llm;
-        source = "llm: " + advice_;
-      }
+    if (!over_bound) {
+      auto own = own_next_action(work, attempt, source);
+      if (!own) return tl::unexpected(own.error());
+      next = *own;
     }
     if (!next && learning_ && condition.instruction) {
-      auto from_instructor = action_from_instructor(current, object, goal);
+      auto from_instructor = action_from_instructor(work);
       if (!from_instructor) return tl::unexpected(from_instructor.error());
-      if (*from_instructor) {
-        next = *from_instructor;
-        source = "instructor: " + advice_;
-      }
+      if (!*from_instructor) return false;  // the instructor said to leave it, or could not say
+      next = *from_instructor;
+      source = "instructor: " + advice_;
     }
     if (!next) {
       report.note = "no way to reach the goal";
       if (!learning_)
-        report_.help_needed.push_back("an action for " + describe_object(object) + " towards " +
-                                      format_goal(*world().domain, *world().universe, goal));
+        report_.help_needed.push_back("how to make it so that " + language::goal_facts(world(), work.goal));
       return false;
     }
     if (auto status = simulator_.execute(*next); !status) {
       // Advice that cannot be carried out; the plan, if any, is stale.
-      plan.clear();
-      if (dialogue_) dialogue_->say("I cannot do that: " + status.error().message + ".");
-      ++actions;
+      attempt.plan.clear();
+      say(language::refusal(world(), *next), Voice::kResponse);
+      if (source.rfind("instructor", 0) != 0) ++actions;
       continue;
     }
-    episode_actions_.push_back(*next);
-    episode_sources_.push_back(source);
-    llm_steps_.push_back(step_text(world(), *next));
+    work.actions.push_back(*next);
+    work.sources.push_back(source);
+    work.llm_steps.push_back(step_text(world(), *next));
     ++report_.actions_executed;
     ++actions;
   }
-  if (learning_) {
-    if (auto s = learn_rules(current, object, goal); !s) return tl::unexpected(s.error());
-  }
   return true;
+}
+
+TaskLearningAgent::Session::Flow<std::optional<Action>> TaskLearningAgent::Session::own_next_action(
+    InProgress& work, Attempt& attempt, std::string& source) {
+  const Condition& condition = agent_.options_.condition;
+  if (!attempt.plan.empty()) {
+    Action next = attempt.plan.front();
+    attempt.plan.pop_front();
+    source = "search";
+    return next;
+  }
+  if (agent_.options_.use_rules) {
+    MatchQuery query{&world().state, &work.goal, work.object, current().verb};
+    if (auto proposal = agent_.knowledge_.rules.select(*world().domain, *world().universe, query)) {
+      source = "rule";
+      ++report_.rule_actions;
+      return std::optional<Action>(proposal->action);
+    }
+  }
+  if (learning_ && (condition.search_depth > 0 || condition.unbounded_search) &&
+      attempt.searched_in != world().state) {
+    SearchOptions options;
+    options.max_depth = condition.search_depth;
+    PlanResult result =
+        condition.unbounded_search
+            ? find_greedy_plan(*world().domain, *world().universe, world().state, work.goal, options)
+            : find_plan(*world().domain, *world().universe, world().state, work.goal, options);
+    ++report_.searches;
+    report_.search_nodes += result.statistics.nodes_expanded;
+    attempt.searched_in = world().state;
+    if (result.status == SearchStatus::kSolved && !result.plan.empty()) {
+      attempt.plan.assign(result.plan.begin() + 1, result.plan.end());
+      source = "search";
+      return std::optional<Action>(result.plan.front());
+    }
+  }
+  if (learning_ && condition.llm) {
+    auto from_llm = action_from_llm(work);
+    if (!from_llm) return from_llm;
+    if (*from_llm) source = "llm: " + advice_;
+    return from_llm;
+  }
+  return std::optional<Action>();
 }
 
 // The LLM's next steps, chosen by Algorithm 5 (llm::finalize_choice): the
 // most probable step that grounds and can be done now, confirmed by the
 // instructor where there is one.
-Result<std::optional<Action>> TaskLearningAgent::Session::action_from_llm(const Current& current, ObjectId object,
-                                                                          const Goal& goal) {
+TaskLearningAgent::Session::Flow<std::optional<Action>> TaskLearningAgent::Session::action_from_llm(InProgress& work) {
   LlmAdvisor& llm = *agent_.llm_;
-  std::string goal_text = language::describe_goal_instruction(world(), object, goal);
+  std::string goal_text = language::describe_goal_instruction(world(), work.object, work.goal);
   if (!goal_text.empty() && goal_text.back() == '.') goal_text.pop_back();
   auto known = [this](std::string_view word) { return agent_.understanding_.is_known_action_word(word); };
-  std::vector<llm::Candidate> candidates = llm.actions(llm_context(current, object), goal_text, llm_steps_, known);
+  std::vector<llm::Candidate> candidates = llm.actions(llm_context(work.object), goal_text, work.llm_steps, known);
   const bool instructed = agent_.options_.condition.instruction;
   if (llm.last_failure() && candidates.empty())
-    dialogue_->say("I could not reach the language model (" + llm.last_failure()->message + ")" +
-                   (instructed ? ", so I will ask." : "."));
+    say("I could not reach the language model (" + llm.last_failure()->message + ")" +
+        (instructed ? ", so I will ask." : "."));
   std::map<std::string, Action> usable;  // by the candidate's text
   for (const llm::Candidate& candidate : candidates) {
-    ActionMeaning meaning = agent_.understanding_.action(world(), candidate.text, object);
+    ActionMeaning meaning = agent_.understanding_.action(world(), candidate.text, work.object);
     if (meaning.action && is_applicable(*world().domain, world().state, *meaning.action)) {
       usable.emplace(candidate.text, *meaning.action);
       continue;
@@ -138,14 +144,17 @@ Result<std::optional<Action>> TaskLearningAgent::Session::action_from_llm(const 
     spdlog::info("LLM action {} is not usable here: {}", apprentice::quoted(candidate.text),
                  meaning.action ? "not applicable" : meaning.failure);
   }
+  // An undo or the teacher leaving stops the choice (`stopped`).
+  std::optional<Stop> stopped;
   llm::CallbackConfirmer confirmer([&](llm::QueryKind, const llm::Candidate& c) -> Result<bool> {
     auto action = usable.find(c.text);
     std::optional<Action> proposed;
     if (action != usable.end()) proposed = action->second;
-    auto reply = ask(QuestionKind::kConfirmAction, language::say_action_question(world(), object, c.text), object, goal,
-                     proposed);
-    if (!reply) return tl::unexpected(reply.error());
-    return read_yes_no(*reply).value_or(false);
+    std::string text = language::say_action_question(world(), work.object, c.text);
+    auto yes = confirm(question(QuestionKind::kConfirmAction, text, work.object, work.goal, proposed));
+    if (yes) return *yes;
+    stopped = yes.error();
+    return make_error(ErrorCode::kCancelled, "the choice of an LLM action was stopped");
   });
   llm::ChoiceOptions choosing;
   choosing.offer_ungrounded = agent_.options_.offer_ungrounded;
@@ -155,38 +164,53 @@ Result<std::optional<Action>> TaskLearningAgent::Session::action_from_llm(const 
   auto choice = llm::finalize_choice(candidates, llm::QueryKind::kAction,
                                      [&](const llm::Candidate& c) { return usable.contains(c.text); },
                                      instructed ? &confirmer : nullptr, choosing);
-  if (!choice) return tl::unexpected(choice.error());
+  if (stopped) return tl::unexpected(*stopped);
+  if (!choice) return stop(choice.error());
   if (!choice->candidate) return std::optional<Action>();
   auto action = usable.find(choice->candidate->text);
   if (action == usable.end()) return std::optional<Action>();  // unattended, the paper's way: unusable
   advice_ = apprentice::quoted(choice->candidate->text) + (instructed ? " (confirmed)" : "");
-  return action->second;
+  return std::optional<Action>(action->second);
 }
 
-Result<std::optional<Action>> TaskLearningAgent::Session::action_from_instructor(const Current& current,
-                                                                                 ObjectId object, const Goal& goal) {
-  for (int attempt = 0; attempt <= agent_.options_.max_retries; ++attempt) {
-    auto reply = ask(QuestionKind::kNextAction, language::say_next_action_request(current.verb), object, goal);
-    if (!reply) return tl::unexpected(reply.error());
-    ActionMeaning meaning = agent_.understanding_.action(world(), *reply, object);
-    if (meaning.action) {
-      advice_ = apprentice::quoted(*reply);
-      return meaning.action;
-    }
-    dialogue_->say(meaning.failure);
+TaskLearningAgent::Session::Flow<std::optional<Action>> TaskLearningAgent::Session::action_from_instructor(
+    InProgress& work) {
+  Question asked = question(QuestionKind::kNextAction, language::ask_next_action(world(), work.goal), work.object,
+                            work.goal);
+  auto heard = converse(asked, context(language::Asked::kAction, work.object),
+                        [](const language::Reply& r) -> std::optional<std::string> {
+                          if (std::holds_alternative<language::ActionGiven>(r) ||
+                              std::holds_alternative<language::Finished>(r))
+                            return std::nullopt;
+                          return "I asked what to do next.";
+                        });
+  if (!heard) return tl::unexpected(heard.error());
+  if (!heard->reply) {
+    work.report.note = "no usable action from the instructor";
+    return std::optional<Action>();
   }
-  return std::optional<Action>();
+  begin_lesson(heard->text);
+  if (std::holds_alternative<language::Finished>(*heard->reply)) {
+    work.report.note = "left as it is, as the instructor said";
+    say("I will leave " + language::spoken_name(world(), work.object) + " as it is.");
+    return std::optional<Action>();
+  }
+  const Action& action = std::get<language::ActionGiven>(*heard->reply).action;
+  for (ObjectId o : action.arguments())
+    if (world().universe->info(o).kind != ObjectKind::kItem) recent_place_ = o;
+  advice_ = apprentice::quoted(heard->text);
+  return std::optional<Action>(action);
 }
 
-Status TaskLearningAgent::Session::learn_rules(const Current& current, ObjectId object, const Goal& goal) {
-  bool all_from_rules = std::all_of(episode_sources_.begin(), episode_sources_.end(),
-                                    [](const std::string& s) { return s == "rule"; });
-  if (episode_actions_.empty() || all_from_rules) return {};
-  Episode episode{episode_start_, episode_actions_, {}, goal, object, current.verb, describe_object(object)};
-  for (std::size_t i = 0; i < episode_actions_.size(); ++i) {
-    const std::string& source = episode_sources_[i];
+Status TaskLearningAgent::Session::learn_rules(const InProgress& work) {
+  bool all_from_rules =
+      std::all_of(work.sources.begin(), work.sources.end(), [](const std::string& s) { return s == "rule"; });
+  if (work.actions.empty() || all_from_rules) return {};
+  Episode episode{work.start, work.actions, {}, work.goal, work.object, current().verb, describe_object(work.object)};
+  for (std::size_t i = 0; i < work.actions.size(); ++i) {
+    const std::string& source = work.sources[i];
     episode.sources.push_back(source == "search" || source == "rule"
-                                  ? source + ": " + format_action(*world().domain, *world().universe, episode_actions_[i])
+                                  ? source + ": " + format_action(*world().domain, *world().universe, work.actions[i])
                                   : source);
   }
   std::vector<Rule> rules =
@@ -194,10 +218,8 @@ Status TaskLearningAgent::Session::learn_rules(const Current& current, ObjectId 
   for (Rule& rule : rules) {
     Rule copy = rule;
     if (!agent_.knowledge_.rules.add(*world().domain, std::move(rule))) continue;
-    ++report_.rules_learned;
-    if (agent_.store_) {
-      if (auto s = agent_.store_->save_rule(*world().domain, copy); !s) return s;
-    }
+    ++progress_.rules_learned;
+    if (auto s = store_rule(copy); !s) return s;
   }
   return {};
 }

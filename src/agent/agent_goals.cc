@@ -4,35 +4,36 @@
 
 #include "agent/session.h"
 #include "language/generation.h"
+#include "language/narration.h"
 #include "util/log.h"
 #include "util/text.h"
 
 namespace apprentice {
 
-GoalKey TaskLearningAgent::Session::goal_key(const Current& current, ObjectId object) const {
-  return GoalKey{task_.name, current.verb, world().universe->info(object).category,
-                 world().universe->info(current.place).category};
+GoalKey TaskLearningAgent::Session::goal_key(ObjectId object) const {
+  return GoalKey{progress_.task.name, current().verb, world().universe->info(object).category,
+                 world().universe->info(current().places.front()).category};
 }
 
-llm::TaskContext TaskLearningAgent::Session::llm_context(const Current& current, ObjectId object) const {
-  const ObjectInfo& place = world().universe->info(current.place);
+llm::TaskContext TaskLearningAgent::Session::llm_context(ObjectId object) const {
+  const ObjectInfo& place = world().universe->info(current().places.front());
   std::string relation = place.kind == ObjectKind::kSurface ? "on " : "in ";
   std::string place_words = place.category;
   std::replace(place_words.begin(), place_words.end(), '-', ' ');
-  return llm::TaskContext{task_.name, current.verb, world().location, world().universe->info(object).category,
-                          relation + place_words};
+  return llm::TaskContext{progress_.task.name, current().verb, world().location,
+                          world().universe->info(object).category, relation + place_words};
 }
 
-Result<std::optional<Goal>> TaskLearningAgent::Session::acquire_goal(const Current& current, ObjectId object,
-                                                                     ObjectReport& report) {
+TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session::acquire_goal(ObjectId object,
+                                                                                             ObjectReport& report) {
   std::optional<Goal> goal;
   if (agent_.options_.condition.llm) {
-    auto from_llm = goal_from_llm(current, object, report);
+    auto from_llm = goal_from_llm(object, report);
     if (!from_llm) return from_llm;
     goal = *from_llm;
   }
   if (!goal && agent_.options_.condition.instruction) {
-    auto from_instructor = goal_from_instructor(current, object, report);
+    auto from_instructor = goal_from_instructor(object, report);
     if (!from_instructor) return from_instructor;
     goal = *from_instructor;
   }
@@ -62,15 +63,15 @@ std::vector<llm::Candidate> unseen(std::vector<llm::Candidate> candidates, std::
 // instructor confirms one, or without an instructor the best usable one is
 // taken. When none is accepted, the model is asked again with the rejected
 // statements in the prompt (the paper's future work), then the instructor
-// is asked for a description (goal_from_instructor).
-Result<std::optional<Goal>> TaskLearningAgent::Session::goal_from_llm(const Current& current, ObjectId object,
-                                                                      ObjectReport& report) {
+// is asked (goal_from_instructor).
+TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session::goal_from_llm(ObjectId object,
+                                                                                              ObjectReport& report) {
   LlmAdvisor& llm = *agent_.llm_;
   const AgentOptions& options = agent_.options_;
   const GoalRepairOptions& repair = options.goal_repair;
   const bool instructed = options.condition.instruction;
   const bool repairing = format_goal_repair(repair) != "none";
-  llm::TaskContext context = llm_context(current, object);
+  llm::TaskContext context = llm_context(object);
   llm::ChoiceOptions choosing;
   choosing.offer_ungrounded = options.offer_ungrounded;
   choosing.ask_description = false;  // after re-prompting, by goal_from_instructor
@@ -82,8 +83,8 @@ Result<std::optional<Goal>> TaskLearningAgent::Session::goal_from_llm(const Curr
   for (int round = 0; round < rounds; ++round) {
     std::vector<llm::Candidate> candidates = unseen(llm.goals(context), seen);
     if (llm.last_failure() && candidates.empty()) {
-      dialogue_->say("I could not reach the language model (" + llm.last_failure()->message + ")" +
-                     (instructed ? ", so I will ask." : "."));
+      say("I could not reach the language model (" + llm.last_failure()->message + ")" +
+          (instructed ? ", so I will ask." : "."));
       return std::optional<Goal>();
     }
     if (candidates.empty()) break;  // nothing new: a corpus or cassette has no answer to a re-prompt
@@ -109,19 +110,23 @@ Result<std::optional<Goal>> TaskLearningAgent::Session::goal_from_llm(const Curr
       return !instructed || !repair.choose || (best_agreed && analysed == best);
     };
     // The instructor hears the goal the agent would adopt, in English; the
-    // model's own words when nothing is repaired or it does not ground.
+    // model's own words when nothing is repaired or it does not ground. An
+    // undo or the teacher leaving stops the choice (`stopped`).
+    std::optional<Stop> stopped;
     llm::CallbackConfirmer confirmer([&](llm::QueryKind, const llm::Candidate& c) -> Result<bool> {
       const AnalysedGoal* analysed = analysis.find(c);
       const std::optional<Goal> goal = analysed ? analysed->goal : std::nullopt;
-      std::string question = goal && repairing ? language::say_goal_question(world(), object, *goal, true)
-                                               : language::say_goal_question(world(), object, c.text);
-      auto reply = ask(QuestionKind::kConfirmGoal, question, object, goal);
-      if (!reply) return tl::unexpected(reply.error());
-      return read_yes_no(*reply).value_or(false);
+      std::string text = goal && repairing ? language::say_goal_question(world(), object, *goal, true)
+                                           : language::say_goal_question(world(), object, c.text);
+      auto yes = confirm(question(QuestionKind::kConfirmGoal, text, object, goal));
+      if (yes) return *yes;
+      stopped = yes.error();
+      return make_error(ErrorCode::kCancelled, "the choice of an LLM goal was stopped");
     });
     auto choice = llm::finalize_choice(analysis.ordered_candidates(), llm::QueryKind::kGoal, usable,
                                        instructed ? &confirmer : nullptr, choosing);
-    if (!choice) return tl::unexpected(choice.error());
+    if (stopped) return tl::unexpected(*stopped);
+    if (!choice) return stop(choice.error());
     if (choice->candidate) {
       const AnalysedGoal* chosen = analysis.find(*choice->candidate);
       if (chosen == nullptr || !chosen->goal) {
@@ -132,11 +137,12 @@ Result<std::optional<Goal>> TaskLearningAgent::Session::goal_from_llm(const Curr
                       (chosen ? chosen->failure_kind : std::string("ungrounded"));
         return std::optional<Goal>();
       }
+      if (instructed) say(language::read_back_goal(world(), object, *chosen->goal));
       std::string repairs = describe_repairs(world(), *chosen);
       std::string source = std::string(choice->candidate->source == llm::ResponseSource::kCorpus ? "corpus" : "llm") +
                            ": " + apprentice::quoted(choice->text) + (repairs.empty() ? "" : " (" + repairs + ")") +
                            (instructed ? " (confirmed)" : "");
-      if (auto s = learn_goal(current, object, *chosen->goal, source); !s) return tl::unexpected(s.error());
+      if (auto s = learn_goal(object, *chosen->goal, source); !s) return stop(s.error());
       report.goal_source = "llm";
       return chosen->goal;
     }
@@ -147,37 +153,61 @@ Result<std::optional<Goal>> TaskLearningAgent::Session::goal_from_llm(const Curr
   return std::optional<Goal>();
 }
 
-Result<std::optional<Goal>> TaskLearningAgent::Session::goal_from_instructor(const Current& current, ObjectId object,
-                                                                             ObjectReport& report) {
-  for (int attempt = 0; attempt <= agent_.options_.max_retries; ++attempt) {
-    auto reply = ask(QuestionKind::kSubtaskStep, language::say_next_goal_request(current.verb), object);
-    if (!reply) return tl::unexpected(reply.error());
-    GoalMeaning meaning = agent_.understanding_.goal(world(), *reply, object);
-    if (meaning.goal) {
-      if (auto s = learn_goal(current, object, *meaning.goal, "instructor: " + apprentice::quoted(*reply)); !s)
-        return tl::unexpected(s.error());
-      report.goal_source = "instructor";
-      return meaning.goal;
-    }
-    dialogue_->say(meaning.failure);
+TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session::goal_from_instructor(
+    ObjectId object, ObjectReport& report) {
+  const World& w = world();
+  Question asked = question(QuestionKind::kSubtaskStep, language::ask_goal(w, object), object);
+  auto heard = converse(asked, context(language::Asked::kGoal, object),
+                        [&](const language::Reply& r) -> std::optional<std::string> {
+                          if (std::holds_alternative<language::Finished>(r)) return std::nullopt;
+                          const auto* given = std::get_if<language::GoalGiven>(&r);
+                          if (given == nullptr)
+                            return "I asked where " + language::spoken_name(w, object) + " goes.";
+                          std::vector<ObjectId> mentioned = given->goal.objects();
+                          if (std::find(mentioned.begin(), mentioned.end(), object) != mentioned.end())
+                            return std::nullopt;
+                          // A goal about something else is never stored as this one's.
+                          std::vector<std::string> names;
+                          for (ObjectId o : mentioned)
+                            if (w.universe->info(o).kind == ObjectKind::kItem) names.push_back(language::spoken_name(w, o));
+                          return "That says what becomes of " + (names.empty() ? "other things" : language::list_phrase(names)) +
+                                 ", but I asked about " + language::spoken_name_and_location(w, object) + ".";
+                        });
+  if (!heard) return tl::unexpected(heard.error());
+  if (!heard->reply) {
+    report.note = "no usable goal from the instructor";
+    return std::optional<Goal>();
   }
-  report.note = "no usable goal from the instructor";
-  return std::optional<Goal>();
+  begin_lesson(heard->text);
+  if (std::holds_alternative<language::Finished>(*heard->reply)) {
+    report.note = "left where it is, as the instructor said";
+    say("I will leave " + language::spoken_name_and_location(w, object) + " as it is.");
+    return std::optional<Goal>();
+  }
+  const Goal& goal = std::get<language::GoalGiven>(*heard->reply).goal;
+  say(language::read_back_goal(w, object, goal));
+  if (auto s = learn_goal(object, goal, "instructor: " + apprentice::quoted(heard->text)); !s) return stop(s.error());
+  report.goal_source = "instructor";
+  return std::optional<Goal>(goal);
 }
 
-Status TaskLearningAgent::Session::learn_goal(const Current& current, ObjectId object, const Goal& goal,
-                                              const std::string& source) {
-  auto knowledge = generalize_goal(world(), goal_key(current, object), object, goal,
-                                   Provenance{describe_object(object), source});
+Status TaskLearningAgent::Session::learn_goal(ObjectId object, const Goal& goal, const std::string& source) {
+  // What "the door" and "close it" mean next: the place this goal names.
+  for (const Literal& l : goal.literals)
+    if ((l.fact.predicate == world().vocabulary.in || l.fact.predicate == world().vocabulary.on) && l.fact.arity == 2 &&
+        l.fact.args[0] == object)
+      recent_place_ = l.fact.args[1];
+  auto knowledge = generalize_goal(world(), goal_key(object), object, goal, Provenance{describe_object(object), source});
   if (!knowledge) {
     // Still usable for this object, just not learnable for its category.
     spdlog::warn("goal not learned: {}", knowledge.error().message);
     return {};
   }
+  std::optional<GoalKnowledge> previous;
+  if (const GoalKnowledge* known = agent_.knowledge_.goals.find(knowledge->key)) previous = *known;
   agent_.knowledge_.goals.add(*knowledge);
-  ++report_.goals_learned;
-  if (agent_.store_) return agent_.store_->save_goal(*knowledge);
-  return {};
+  ++progress_.goals_learned;
+  return store_goal(*knowledge, std::move(previous));
 }
 
 }  // namespace apprentice

@@ -22,6 +22,8 @@ Result<Condition> parse_condition(std::string_view name) {
       condition.instruction = true;
     } else if (part == "llm") {
       condition.llm = true;
+    } else if (part == "search") {
+      condition.unbounded_search = true;
     } else if (part.substr(0, 6) == "search") {
       std::string_view digits = part.substr(6);
       int depth = 0;
@@ -33,8 +35,8 @@ Result<Condition> parse_condition(std::string_view name) {
       condition.search_depth = depth;
     } else {
       return make_error(ErrorCode::kInvalidInput,
-                        "condition " + std::string(name) + ": expected parts instruction (or inst), search<depth> "
-                        "or llm joined by '+', not '" + std::string(part) + "'");
+                        "condition " + std::string(name) + ": expected parts instruction (or inst), search<depth>, "
+                        "search or llm joined by '+', not '" + std::string(part) + "'");
     }
   }
   if (!any) return make_error(ErrorCode::kInvalidInput, "empty condition name");

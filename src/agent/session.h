@@ -1,12 +1,27 @@
 // Internal to the agent: the state of one run (learn or perform).
+//
+// Learning is a loop of steps (agent.cc, next_step): each step looks at
+// how far the teaching has come (`Progress`) and does the one thing that
+// comes next: ask for the task, ask for its next step, work on the next
+// object of the current subtask (its goal, known or asked for), or take the
+// actions that achieve that object's goal. Everything a step decides lives
+// in `Progress`, never in a caller's local variables, so that "undo" can
+// put the progress, the knowledge and the world back as they were before
+// the teacher's last lesson and the loop simply goes on from there.
 #pragma once
 
 #include <deque>
+#include <functional>
 #include <set>
 
 #include "agent/agent.h"
+#include "language/reply.h"
 
 namespace apprentice {
+
+// `text` ending in a period, unless it ends with a quotation that has its
+// own: "... last: \"Open the fridge.\"" (agent_dialogue.cc).
+std::string with_period(std::string text);
 
 class TaskLearningAgent::Session {
  public:
@@ -16,52 +31,159 @@ class TaskLearningAgent::Session {
   Result<AgentReport> perform_task(const TaskKnowledge& task);
 
  private:
-  // The subtask being worked on.
-  struct Current {
-    std::string verb;
-    ObjectId place = 0;
+  // Why a step stopped before its end: an error (the teacher left, the
+  // store failed), or none when an undo restored an earlier point and the
+  // loop should go on from there.
+  struct Stop {
+    std::optional<Error> error;
   };
+  template <typename T>
+  using Flow = tl::expected<T, Stop>;
+  using Step = Flow<void>;
+  static tl::unexpected<Stop> stop(Error error) { return tl::unexpected<Stop>(Stop{std::move(error)}); }
 
-  // Task structure (agent.cc).
-  Result<std::string> ask(QuestionKind kind, std::string text, std::optional<ObjectId> object = std::nullopt,
-                          std::optional<Goal> goal = std::nullopt, std::optional<Action> action = std::nullopt);
-  Status run_first_iteration(const Current& current);
-  Status run_loop(const Current& current);
-  std::optional<ObjectId> next_object(ObjectId place);
-  Status handle_object(const Current& current, ObjectId object, ObjectReport& report);
+  // The subtask being worked on, and how far: the paper's way (a loop
+  // announced first) does one object, asks whether the subtask is done,
+  // and loops once told "Repeat."; a subtask named with its place alone
+  // loops over its places' objects at once.
+  struct Current {
+    enum class Mode { kFirstObject, kEndQuestion, kAwaitRepeat, kLoop };
+    std::string verb;
+    std::string relation;  // "on" or "in"
+    std::vector<ObjectId> places;
+    Mode mode = Mode::kLoop;
+  };
+  // An object whose goal is known, being achieved.
+  struct InProgress {
+    ObjectId object = 0;
+    Goal goal;
+    ObjectReport report;
+    State start;  // the world when its actions began
+    std::vector<Action> actions;       // executed towards the goal
+    std::vector<std::string> sources;  // where each came from
+    std::vector<std::string> llm_steps;  // the steps as the LLM prompt shows them
+  };
+  // How far the teaching has come.
+  struct Progress {
+    TaskKnowledge task;
+    std::optional<Current> current;
+    std::optional<Current> queued;  // named before the current subtask ended
+    std::optional<std::vector<ObjectId>> announced_loop;  // "Repeat ... while an object is on the table."
+    std::deque<LearnedSubtask> known_to_do;  // a known task's subtasks still to do
+    bool asked_about_task = false;  // the task-step question was asked at least once
+    bool finishing = false;         // the teacher said the task is done; the current loop ends first
+    bool finished = false;
+    std::set<ObjectId> evaluated;
+    std::optional<InProgress> in_progress;
+    std::vector<ObjectReport> objects;
+    int goals_learned = 0;
+    int rules_learned = 0;
+  };
+  // What one reply of the teacher taught, with what undo needs to forget
+  // it: the progress, knowledge and world before it, and the writes to the
+  // store since.
+  struct StoreWrite {
+    enum class Kind { kGoal, kRule, kTask } kind = Kind::kGoal;
+    GoalKey goal_key;
+    std::optional<GoalKnowledge> previous_goal;
+    std::optional<Rule> rule;
+    std::optional<TaskKnowledge> previous_task;
+    std::string task_name;
+  };
+  struct Lesson {
+    std::string reply;
+    Progress progress;
+    Knowledge knowledge;
+    State world;
+    std::size_t history = 0;
+    std::vector<StoreWrite> writes;
+  };
+  // A reply usable at the question asked; none when a program's replies
+  // could not be used within its attempts.
+  struct Heard {
+    std::optional<language::Reply> reply;
+    std::string text;
+  };
+  // Why a reply, though understood, does not answer this question; nullopt
+  // if it does.
+  using Accept = std::function<std::optional<std::string>(const language::Reply&)>;
+
+  // The steps (agent.cc).
+  Step next_step();
+  Step learn_task_name();
+  Step learn_task_step();
+  Step learn_subtask_end();
+  Step work_on_subtask();
+  Step start_known_subtask();
+  Step start_subtask(const language::SubtaskNamed& named);
+  void finish_subtask();
+  Step start_object(ObjectId object);
+  Step achieve_current();
+  void finish_object();
+  std::optional<ObjectId> next_object(const Current& current) const;
   Status remember_task();
 
+  // Conversation (agent_dialogue.cc).
+  Question question(QuestionKind kind, std::string text, std::optional<ObjectId> object = std::nullopt,
+                    std::optional<Goal> goal = std::nullopt, std::optional<Action> action = std::nullopt) const;
+  language::ReplyContext context(language::Asked asked, std::optional<ObjectId> object = std::nullopt) const;
+  Flow<Heard> converse(const Question& question, language::ReplyContext context, const Accept& accept);
+  Flow<language::Reply> settle(const language::Ambiguous& ambiguous, const Question& asked,
+                               language::ReplyContext& context, const std::string& text);
+  Flow<bool> confirm(const Question& question);
+  Step obey(const language::Command& command, const Question& question, const language::ReplyContext& context);
+  void explain(const std::string& reason, const language::ReplyContext& context);
+  void help(const Question& question, const language::ReplyContext& context);
+  void status(const Question& question);
+  Status forget(const std::string& kind);
+  void say(const std::string& statement, Voice voice = Voice::kNarration);
+  bool person() const { return dialogue_ != nullptr && dialogue_->instructor_is_person(); }
+
+  // Lessons and undo (agent_undo.cc).
+  void begin_lesson(const std::string& reply);
+  // Writes to the store (when there is one), kept in the open lesson with
+  // what they replaced.
+  Status store_goal(const GoalKnowledge& goal, std::optional<GoalKnowledge> previous);
+  Status store_rule(const Rule& rule);
+  Status store_task(std::optional<TaskKnowledge> previous);
+  Step undo();
+  void put_world_back(const State& before, std::size_t history_size);
+
   // Goals (agent_goals.cc).
-  Result<std::optional<Goal>> acquire_goal(const Current& current, ObjectId object, ObjectReport& report);
-  Result<std::optional<Goal>> goal_from_llm(const Current& current, ObjectId object, ObjectReport& report);
-  Result<std::optional<Goal>> goal_from_instructor(const Current& current, ObjectId object, ObjectReport& report);
-  Status learn_goal(const Current& current, ObjectId object, const Goal& goal, const std::string& source);
-  GoalKey goal_key(const Current& current, ObjectId object) const;
-  llm::TaskContext llm_context(const Current& current, ObjectId object) const;
+  Flow<std::optional<Goal>> acquire_goal(ObjectId object, ObjectReport& report);
+  Flow<std::optional<Goal>> goal_from_llm(ObjectId object, ObjectReport& report);
+  Flow<std::optional<Goal>> goal_from_instructor(ObjectId object, ObjectReport& report);
+  Status learn_goal(ObjectId object, const Goal& goal, const std::string& source);
+  GoalKey goal_key(ObjectId object) const;
+  llm::TaskContext llm_context(ObjectId object) const;
 
   // Actions (agent_actions.cc).
-  Result<bool> achieve(const Current& current, ObjectId object, const Goal& goal, ObjectReport& report);
-  Result<std::optional<Action>> action_from_llm(const Current& current, ObjectId object, const Goal& goal);
-  Result<std::optional<Action>> action_from_instructor(const Current& current, ObjectId object, const Goal& goal);
-  Status learn_rules(const Current& current, ObjectId object, const Goal& goal);
+  // One attempt at a goal: the rest of a plan found by search, and the
+  // state search last failed in (not searched again until it changes).
+  struct Attempt {
+    std::deque<Action> plan;
+    std::optional<State> searched_in;
+  };
+  Flow<bool> achieve(InProgress& work);
+  // The next action from the agent's own sources, in order: the plan being
+  // executed, learned rules, search to the condition's depth, the LLM.
+  Flow<std::optional<Action>> own_next_action(InProgress& work, Attempt& attempt, std::string& source);
+  Flow<std::optional<Action>> action_from_llm(InProgress& work);
+  Flow<std::optional<Action>> action_from_instructor(InProgress& work);
+  Status learn_rules(const InProgress& work);
 
   const World& world() const { return simulator_.world(); }
+  const Current& current() const { return *progress_.current; }
   std::string describe_object(ObjectId object) const;
 
   TaskLearningAgent& agent_;
   Simulator& simulator_;
   Dialogue* dialogue_;  // null when performing alone
   bool learning_;
-  AgentReport report_;
-  TaskKnowledge task_;
-  std::string task_verb_;
-  std::string subtask_verb_;  // the subtask being worked on, once there is one
-  std::set<ObjectId> evaluated_;
-  // The actions executed towards the current goal, and where each came from.
-  State episode_start_;
-  std::vector<Action> episode_actions_;
-  std::vector<std::string> episode_sources_;
-  std::vector<std::string> llm_steps_;  // the steps so far, as the LLM prompt shows them
+  Progress progress_;
+  std::vector<Lesson> lessons_;  // the teacher's lessons this session, oldest first
+  AgentReport report_;           // the counters of search and actions; objects come from progress_
+  std::optional<ObjectId> recent_place_;  // the place named last: what "the door" means
   std::string advice_;  // the words of the last action advised by the LLM or the instructor
 };
 

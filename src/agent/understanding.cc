@@ -2,6 +2,7 @@
 
 #include "language/grounding.h"
 #include "language/parser.h"
+#include "language/reference.h"
 #include "util/text.h"
 
 namespace apprentice {
@@ -73,6 +74,30 @@ std::optional<ObjectId> Understanding::place(const World& world, const language:
   language::RepeatWhile probe{relation, phrase};
   auto interpretation = impl_->grounder.ground(language::LogicalForm(probe), world, std::nullopt);
   if (const auto* step = std::get_if<language::TaskStep>(&interpretation.result)) return step->place;
+  return std::nullopt;
+}
+
+language::Reply Understanding::reply(const World& world, const language::ReplyContext& context,
+                                     std::string_view text) const {
+  return language::read_reply(impl_->grounder, world, context, text);
+}
+
+std::vector<std::string> Understanding::example_replies(const World& world,
+                                                        const language::ReplyContext& context) const {
+  return language::example_replies(world, context);
+}
+
+std::optional<std::string> Understanding::category(const World& world, std::string_view phrase) const {
+  language::NounPhrase noun{"", split_words(to_lower(phrase))};
+  if (noun.words.empty()) return std::nullopt;
+  if (noun.words.front() == "the" || noun.words.front() == "a" || noun.words.front() == "an") {
+    noun.article = noun.words.front();
+    noun.words.erase(noun.words.begin());
+  }
+  if (noun.words.empty()) return std::nullopt;
+  language::ReferenceContext context{world, impl_->grounder.lexicon(), std::nullopt};
+  auto resolved = language::resolve_category(noun, context);
+  if (const std::string* category = std::get_if<std::string>(&resolved)) return *category;
   return std::nullopt;
 }
 

@@ -10,6 +10,7 @@
 
 #include "language/lexicon.h"
 #include "language/logical_form.h"
+#include "language/reply.h"
 #include "util/result.h"
 #include "world/action.h"
 #include "world/goal.h"
@@ -36,6 +37,16 @@ class Understanding {
   Understanding(Understanding&&) noexcept;
   Understanding& operator=(Understanding&&) noexcept;
   ~Understanding();
+
+  // What a teacher's reply means as an answer to the question in `context`
+  // (language/reply.h).
+  language::Reply reply(const World& world, const language::ReplyContext& context, std::string_view text) const;
+  // Replies that would work at that question, for help and after a reply
+  // that could not be used.
+  std::vector<std::string> example_replies(const World& world, const language::ReplyContext& context) const;
+  // The kind of object a phrase names ("ketchup", "glass"), for "forget
+  // <kind of object>", or nullopt if it names none here.
+  std::optional<std::string> category(const World& world, std::string_view phrase) const;
 
   // The logical form, or kInvalidInput saying what was expected.
   Result<language::LogicalForm> parse(std::string_view sentence) const;

@@ -80,6 +80,12 @@ struct ExperimentOptions {
 // intent. kInvalidInput saying what is missing otherwise.
 Status check_runnable(const Scenario& scenario);
 
+// Runs one condition on a copy of `scenario`'s world; nothing is kept
+// beyond the result (and DIR/<condition>.sqlite with knowledge_out).
+// Errors: kInvalidInput for an LLM condition without `options.llm`; the
+// LLM factory's and the prompt templates' errors; kIo when knowledge_out
+// cannot be written; the agent's (TaskLearningAgent::learn).
+// experiment/runner.h runs several conditions in order.
 Result<ConditionResult> run_condition(const Scenario& scenario, const Condition& condition,
                                       const ExperimentOptions& options);
 

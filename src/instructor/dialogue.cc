@@ -12,6 +12,7 @@ const char* to_string(QuestionKind kind) {
     case QuestionKind::kNextAction: return "next-action";
     case QuestionKind::kConfirmGoal: return "confirm-goal";
     case QuestionKind::kConfirmAction: return "confirm-action";
+    case QuestionKind::kWhich: return "which";
   }
   return "unknown";
 }
@@ -27,23 +28,32 @@ std::optional<bool> read_yes_no(std::string_view reply) {
 }
 
 Result<std::string> Dialogue::ask(const Question& question, const World& world) {
+  auto reply = ask_uncounted(question, world);
+  if (reply) count_reply(question, *reply);
+  return reply;
+}
+
+Result<std::string> Dialogue::ask_uncounted(const Question& question, const World& world) {
   transcript_.push_back(TranscriptLine{"Agent", question.text});
   auto reply = instructor_.answer(question, world);
   if (!reply) return reply;
   std::string text(trim(*reply));
   transcript_.push_back(TranscriptLine{"Instructor", text});
-  ++counts_.instructions;
-  counts_.words += count_words(text);
-  if (is_yes_no(question.kind)) {
-    ++counts_.yes_no;
-    if (read_yes_no(text).value_or(false)) ++counts_.yes;
-  }
   return text;
 }
 
-void Dialogue::say(const std::string& statement) {
+void Dialogue::count_reply(const Question& question, std::string_view reply) {
+  ++counts_.instructions;
+  counts_.words += count_words(reply);
+  if (is_yes_no(question.kind)) {
+    ++counts_.yes_no;
+    if (read_yes_no(reply).value_or(false)) ++counts_.yes;
+  }
+}
+
+void Dialogue::say(const std::string& statement, Voice voice) {
   transcript_.push_back(TranscriptLine{"Agent", statement});
-  instructor_.hear(statement);
+  if (instructor_.wants(voice)) instructor_.hear(statement);
 }
 
 std::string Dialogue::transcript_text() const {

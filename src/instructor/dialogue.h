@@ -1,8 +1,10 @@
 // The conversation between agent and instructor: it passes questions on,
 // keeps the transcript, and counts what the instructor says the way the
-// paper's Table 3 does. Every reply is an instruction; its words are its
-// whitespace-separated tokens ("apple-core" is one word); replies to yes/no
-// questions are also counted as yes/no answers.
+// paper's Table 3 does. Every reply is an instruction, except commands to
+// the agent ("help", "undo"), which the agent reads with ask_uncounted();
+// an instruction's words are its whitespace-separated tokens ("apple-core"
+// is one word); replies to yes/no questions are also counted as yes/no
+// answers.
 #pragma once
 
 #include <string>
@@ -29,10 +31,17 @@ class Dialogue {
  public:
   explicit Dialogue(Instructor& instructor) : instructor_(instructor) {}
 
-  // Asks and records; the reply is trimmed.
+  // Asks, records and counts the reply as an instruction; the reply is
+  // trimmed.
   Result<std::string> ask(const Question& question, const World& world);
+  // Asks and records without counting; count_reply() counts it once the
+  // agent knows it is an instruction rather than a command.
+  Result<std::string> ask_uncounted(const Question& question, const World& world);
+  void count_reply(const Question& question, std::string_view reply);
   // The agent says something that needs no answer.
-  void say(const std::string& statement);
+  void say(const std::string& statement, Voice voice = Voice::kNarration);
+  // Whether a person answers (see Instructor::is_person).
+  bool instructor_is_person() const { return instructor_.is_person(); }
 
   const DialogueCounts& counts() const { return counts_; }
   const std::vector<TranscriptLine>& transcript() const { return transcript_; }

@@ -4,6 +4,7 @@
 
 #include "instructor/dialogue.h"
 #include "language/generation.h"
+#include "language/narration.h"
 #include "search/iterative_deepening.h"
 
 namespace apprentice {
@@ -13,6 +14,13 @@ namespace {
 // Deep enough for any kitchen goal: open, pick up, put, close, plus putting
 // down whatever is in hand first.
 constexpr int kInstructorSearchDepth = 8;
+
+bool has_objects_at(const World& world, ObjectId place) {
+  for (const Fact& f : world.state.facts())
+    if ((f.predicate == world.vocabulary.on || f.predicate == world.vocabulary.in) && f.arity == 2 && f.args[1] == place)
+      return true;
+  return false;
+}
 
 }  // namespace
 
@@ -30,22 +38,29 @@ SimulatedInstructor::SimulatedInstructor(Scenario scenario) : scenario_(std::mov
 Result<std::string> SimulatedInstructor::answer(const Question& question, const World& world) {
   switch (question.kind) {
     case QuestionKind::kTaskName: return language::say_task_name(scenario_.task.name);
-    case QuestionKind::kTaskStep: return next_task_step();
+    case QuestionKind::kTaskStep: return next_task_step(world);
     case QuestionKind::kSubtaskStep: return goal_or_done(question, world);
     case QuestionKind::kNextAction: return next_action(question, world);
     case QuestionKind::kConfirmGoal: return std::string(accepts_goal(question, world) ? "yes." : "no.");
     case QuestionKind::kConfirmAction: return std::string(accepts_action(question, world) ? "yes." : "no.");
+    case QuestionKind::kWhich: return which(question, world);
   }
   return std::string("You are done.");
 }
 
-std::string SimulatedInstructor::next_task_step() {
+std::string SimulatedInstructor::next_task_step(const World& now) {
   for (;;) {
     if (subtask_index_ >= scenario_.task.subtasks.size()) return "You are done.";
     const Subtask& subtask = scenario_.task.subtasks[subtask_index_];
     const World& world = scenario_.world;
     switch (phase_) {
       case Phase::kAnnounceLoop:
+        // A subtask whose place is already empty (an agent that knew the
+        // task has done it) is not taught.
+        if (!has_objects_at(now, subtask.place)) {
+          ++subtask_index_;
+          continue;
+        }
         phase_ = Phase::kAnnounceSubtask;
         return language::say_repeat_while(world, subtask.places);
       case Phase::kAnnounceSubtask:
@@ -85,6 +100,20 @@ std::string SimulatedInstructor::next_action(const Question& question, const Wor
   PlanResult plan = find_plan(*world.domain, *world.universe, world.state, *goal, options);
   if (plan.status != SearchStatus::kSolved || plan.plan.empty()) return "You are done.";
   return language::describe_action(world, plan.plan.front());
+}
+
+std::string SimulatedInstructor::which(const Question& question, const World& world) const {
+  // The place the instructor wants the object in, if it is offered; else
+  // the first thing offered.
+  if (question.choices.empty()) return "You are done.";
+  ObjectId chosen = question.choices.front();
+  if (question.object) {
+    if (const IntentEntry* entry = scenario_.find_intent(question.subtask, world.universe->info(*question.object).category)) {
+      for (ObjectId c : question.choices)
+        if (c == entry->receptacle) chosen = c;
+    }
+  }
+  return language::spoken_name(world, chosen);
 }
 
 bool SimulatedInstructor::accepts_goal(const Question& question, const World& world) const {

@@ -23,7 +23,9 @@ class SimulatedInstructor final : public Instructor {
   // agent has done the subtask once) "Repeat.", then move to the next.
   enum class Phase { kAnnounceLoop, kAnnounceSubtask, kRepeat, kNextSubtask };
 
-  std::string next_task_step();
+  std::string next_task_step(const World& now);
+  // "Which ...?": the look-alike it means, by its properties.
+  std::string which(const Question& question, const World& world) const;
   std::string goal_or_done(const Question& question, const World& world) const;
   std::string next_action(const Question& question, const World& world) const;
   bool accepts_goal(const Question& question, const World& world) const;

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdlib>
 #include <ostream>
 
@@ -11,24 +12,55 @@
 
 namespace apprentice {
 
-TerminalInstructor::TerminalInstructor(std::FILE* in, std::ostream& out)
-    : in_(in), out_(out), interactive_(isatty(fileno(in)) != 0) {
+namespace {
+
+// Set by the SIGINT handler. A signal handler can reach nothing else, so
+// this flag is the one piece of global state here; it is only read by the
+// instructor that installed the handler.
+volatile std::sig_atomic_t g_interrupted = 0;
+
+extern "C" void on_interrupt(int) { g_interrupted = 1; }
+
+}  // namespace
+
+TerminalInstructor::TerminalInstructor(std::FILE* in, std::ostream& out, TerminalOptions options)
+    : in_(in), out_(out), options_(options), interactive_(isatty(fileno(in)) != 0) {
   if (interactive_) {
     rl_instream = in_;
     using_history();
   }
+  if (options_.catch_interrupt) {
+    g_interrupted = 0;
+    struct sigaction action {};
+    action.sa_handler = on_interrupt;
+    sigemptyset(&action.sa_mask);
+    action.sa_flags = 0;  // no SA_RESTART: a blocked read returns, so the reply loop sees the flag
+    sigaction(SIGINT, &action, &previous_interrupt_handler_);
+  }
 }
 
-TerminalInstructor::~TerminalInstructor() = default;
+TerminalInstructor::~TerminalInstructor() {
+  if (options_.catch_interrupt) sigaction(SIGINT, &previous_interrupt_handler_, nullptr);
+}
+
+bool TerminalInstructor::interrupted() const { return options_.catch_interrupt && g_interrupted != 0; }
 
 Result<std::string> TerminalInstructor::read_line(const char* prompt) {
+  auto stop = [this](const char* why) {
+    // End the prompt's line, so that what is printed next starts a line.
+    out_ << "\n";
+    out_.flush();
+    return make_error(ErrorCode::kCancelled, why);
+  };
+  if (interrupted()) return stop("interrupted");
   if (interactive_) {
     out_.flush();
     char* line = readline(prompt);
-    if (line == nullptr) {
-      out_ << "\n";  // Ctrl-D leaves the cursor after the prompt
-      return make_error(ErrorCode::kCancelled, "end of input");
+    if (interrupted()) {
+      std::free(line);
+      return stop("interrupted");
     }
+    if (line == nullptr) return stop("end of input");
     std::string text(line);
     std::free(line);
     if (!trim(text).empty()) add_history(text.c_str());
@@ -39,60 +71,19 @@ Result<std::string> TerminalInstructor::read_line(const char* prompt) {
   std::string text;
   int c;
   while ((c = std::fgetc(in_)) != EOF && c != '\n') text.push_back(static_cast<char>(c));
-  if (c == EOF && text.empty()) {
-    // End the prompt's line, so that what is printed next starts a line.
-    out_ << "\n";
-    return make_error(ErrorCode::kCancelled, "end of input");
-  }
+  if (interrupted()) return stop("interrupted");
+  if (c == EOF && text.empty()) return stop("end of input");
   out_ << text << "\n";
   return text;
 }
 
-std::string describe_status(const Question& question, const World& world) {
-  const Universe& u = *world.universe;
-  const Vocabulary& v = world.vocabulary;
-  std::string out = "World (" + world.location + "):\n";
-  for (ObjectId p : u.of_kind(ObjectKind::kReceptacle)) {
-    if (!world.state.holds(Fact(v.openable, {p}))) continue;
-    out += "  " + u.name(p) + " is " + (world.state.holds(Fact(v.closed, {p})) ? "closed" : "open") + "\n";
-  }
-  for (ObjectId place = 0; place < u.size(); ++place) {
-    if (u.info(place).kind == ObjectKind::kItem) continue;
-    std::string items;
-    for (const Fact& f : world.state.facts())
-      if ((f.predicate == v.on || f.predicate == v.in) && f.args[1] == place) items += " " + u.name(f.args[0]);
-    if (!items.empty()) out += "  " + std::string(u.info(place).kind == ObjectKind::kSurface ? "on " : "in ") + u.name(place) + ":" + items + "\n";
-  }
-  for (const Fact& f : world.state.facts())
-    if (f.predicate == v.holding) out += "  holding " + u.name(f.args[0]) + "\n";
-  out += "Progress:";
-  if (!question.task.empty()) out += " task " + question.task;
-  if (!question.subtask.empty()) out += ", subtask " + question.subtask;
-  if (question.object) out += ", working on " + u.name(*question.object);
-  out += "\n";
-  return out;
-}
-
-void TerminalInstructor::print_status(const Question& question, const World& world) {
-  out_ << describe_status(question, world);
-}
-
 Result<std::string> TerminalInstructor::answer(const Question& question, const World& world) {
+  (void)world;
   out_ << "Agent: " << question.text << "\n";
   for (;;) {
     auto line = read_line("Instructor: ");
     if (!line) return line;
-    std::string text = to_lower(trim(*line));
-    if (text == "status") {
-      print_status(question, world);
-      continue;
-    }
-    if (text == "help") {
-      out_ << "Answer the agent in English (see docs/language.md), or type 'status' to see the world, "
-              "or press Ctrl-D to stop; what was learned is kept.\n";
-      continue;
-    }
-    if (text.empty()) continue;
+    if (trim(*line).empty()) continue;
     return std::string(trim(*line));
   }
 }

@@ -1,6 +1,34 @@
 #include "knowledge/goal_memory.h"
 
+#include <algorithm>
+
 namespace apprentice {
+
+namespace {
+
+// The objects a template argument (not the object of interest) can stand
+// for: those of its category that have all of its properties.
+std::vector<ObjectId> matching_objects(const Universe& universe, const GoalTemplateArgument& argument) {
+  std::vector<ObjectId> out;
+  for (ObjectId id : universe.with_category(argument.category)) {
+    const std::vector<std::string>& has = universe.info(id).properties;
+    if (std::all_of(argument.properties.begin(), argument.properties.end(), [&](const std::string& p) {
+          return std::find(has.begin(), has.end(), p) != has.end();
+        }))
+      out.push_back(id);
+  }
+  return out;
+}
+
+// "drawer" or, with properties, "top drawer".
+std::string argument_text(const GoalTemplateArgument& argument) {
+  if (argument.object_of_interest) return "?o";
+  std::string text = argument.category;
+  for (auto p = argument.properties.rbegin(); p != argument.properties.rend(); ++p) text = *p + " " + text;
+  return argument.properties.empty() ? text : "[" + text + "]";
+}
+
+}  // namespace
 
 Result<GoalKnowledge> generalize_goal(const World& world, const GoalKey& key, ObjectId object,
                                       const Goal& goal, Provenance provenance) {
@@ -10,15 +38,20 @@ Result<GoalKnowledge> generalize_goal(const World& world, const GoalKey& key, Ob
     GoalTemplateLiteral t{world.domain->predicates.at(l.fact.predicate).name, l.positive, {}};
     for (ObjectId o : l.fact.arguments()) {
       if (o == object) {
-        t.arguments.push_back(GoalTemplateArgument{true, ""});
+        t.arguments.push_back(GoalTemplateArgument{true, "", {}});
         continue;
       }
-      const std::string& category = universe.info(o).category;
-      if (universe.with_category(category).size() != 1)
-        return make_error(ErrorCode::kInvalidInput,
-                          "the goal names " + universe.name(o) + ", but there is more than one " + category +
-                              ", so the goal cannot be learned for every " + key.category);
-      t.arguments.push_back(GoalTemplateArgument{false, category});
+      const ObjectInfo& info = universe.info(o);
+      GoalTemplateArgument argument{false, info.category, {}};
+      if (universe.with_category(info.category).size() != 1) {
+        argument.properties = info.properties;
+        if (info.properties.empty() || matching_objects(universe, argument).size() != 1)
+          return make_error(ErrorCode::kInvalidInput,
+                            "the goal names " + universe.name(o) + ", but there is more than one " + info.category +
+                                " and nothing tells them apart, so the goal cannot be learned for every " +
+                                key.category);
+      }
+      t.arguments.push_back(std::move(argument));
     }
     knowledge.literals.push_back(std::move(t));
   }
@@ -36,7 +69,7 @@ std::optional<Goal> instantiate_goal(const World& world, const GoalKnowledge& kn
         args.push_back(object);
         continue;
       }
-      auto matches = world.universe->with_category(a.category);
+      auto matches = matching_objects(*world.universe, a);
       if (matches.size() != 1) return std::nullopt;
       args.push_back(matches.front());
     }
@@ -53,7 +86,7 @@ std::string format_goal_knowledge(const GoalKnowledge& k) {
   for (std::size_t i = 0; i < k.literals.size(); ++i) {
     const GoalTemplateLiteral& t = k.literals[i];
     std::string atom = "(" + t.predicate;
-    for (const GoalTemplateArgument& a : t.arguments) atom += " " + (a.object_of_interest ? std::string("?o") : a.category);
+    for (const GoalTemplateArgument& a : t.arguments) atom += " " + argument_text(a);
     atom += ")";
     out += (i ? " and " : " ") + (t.positive ? atom : "(not " + atom + ")");
   }
@@ -68,6 +101,13 @@ void GoalMemory::add(GoalKnowledge knowledge) {
     }
   }
   goals_.push_back(std::move(knowledge));
+}
+
+bool GoalMemory::remove(const GoalKey& key) {
+  auto it = std::find_if(goals_.begin(), goals_.end(), [&](const GoalKnowledge& g) { return g.key == key; });
+  if (it == goals_.end()) return false;
+  goals_.erase(it);
+  return true;
 }
 
 const GoalKnowledge* GoalMemory::find(const GoalKey& key) const {

@@ -22,6 +22,9 @@ namespace apprentice {
 struct GoalTemplateArgument {
   bool object_of_interest = false;
   std::string category;  // when not the object of interest
+  // Where the world had several objects of the category: the properties
+  // that told this one apart ("top" for the top drawer); empty otherwise.
+  std::vector<std::string> properties = {};
   friend bool operator==(const GoalTemplateArgument&, const GoalTemplateArgument&) = default;
 };
 
@@ -47,14 +50,16 @@ struct GoalKnowledge {
   friend bool operator==(const GoalKnowledge&, const GoalKnowledge&) = default;
 };
 
-// Generalizes a goal about `object`. Fails (kInvalidInput) if the goal
-// names another object whose category is not unique in the world, since
-// the template could not say which one it meant.
+// Generalizes a goal about `object`. Another object the goal names is kept
+// by its category, and, where the world has several of that category, by
+// the properties that tell it apart (ObjectInfo::properties: "the top
+// drawer"). Fails (kInvalidInput) if neither says which one was meant.
 Result<GoalKnowledge> generalize_goal(const World& world, const GoalKey& key, ObjectId object,
                                       const Goal& goal, Provenance provenance);
 
-// The goal for `object` in `world`, or nullopt if some category the
-// template names is absent or not unique there.
+// The goal for `object` in `world`, or nullopt if some object the template
+// names (by category, and properties where it has them) is absent or not
+// unique there.
 std::optional<Goal> instantiate_goal(const World& world, const GoalKnowledge& knowledge, ObjectId object);
 
 // "If the object is a ceramic-plate on the table in clear then the goal is
@@ -66,6 +71,8 @@ class GoalMemory {
   // Replaces any goal already known for the same key.
   void add(GoalKnowledge knowledge);
   const GoalKnowledge* find(const GoalKey& key) const;
+  // Forgets the goal known for `key`; returns whether there was one.
+  bool remove(const GoalKey& key);
   const std::vector<GoalKnowledge>& all() const { return goals_; }
   std::size_t size() const { return goals_.size(); }
 

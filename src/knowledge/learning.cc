@@ -10,6 +10,12 @@ const char* to_string(Generalization generalization) {
   return generalization == Generalization::kPaper ? "paper" : "full";
 }
 
+Result<Generalization> parse_generalization(std::string_view text) {
+  if (text == "full") return Generalization::kFull;
+  if (text == "paper") return Generalization::kPaper;
+  return make_error(ErrorCode::kInvalidInput, "generalization must be full or paper, not '" + std::string(text) + "'");
+}
+
 namespace {
 
 bool contains(const std::vector<Fact>& facts, const Fact& fact) {

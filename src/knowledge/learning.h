@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "knowledge/rule.h"
+#include "util/result.h"
 #include "world/action.h"
 #include "world/goal.h"
 #include "world/state.h"
@@ -33,6 +34,8 @@ enum class Generalization {
 };
 
 const char* to_string(Generalization generalization);
+// "full" or "paper"; kInvalidInput otherwise.
+Result<Generalization> parse_generalization(std::string_view text);
 
 struct Episode {
   State initial;                     // the state before the first action

@@ -179,7 +179,9 @@ json goal_literals_json(const GoalKnowledge& g) {
   for (const GoalTemplateLiteral& t : g.literals) {
     json args = json::array();
     for (const GoalTemplateArgument& a : t.arguments)
-      args.push_back(a.object_of_interest ? json{{"interest", true}} : json{{"category", a.category}});
+      args.push_back(a.object_of_interest ? json{{"interest", true}}
+                     : a.properties.empty() ? json{{"category", a.category}}
+                                            : json{{"category", a.category}, {"properties", a.properties}});
     out.push_back(json{{"predicate", t.predicate}, {"positive", t.positive}, {"args", args}});
   }
   return out;
@@ -202,9 +204,15 @@ Result<std::vector<GoalTemplateLiteral>> goal_literals_from_json(const Domain& d
     for (const json& a : args) {
       if (a.contains("interest")) {
         if (!flag_at(a, "interest")) throw BadEntry("a goal argument is neither the object nor a category");
-        literal.arguments.push_back(GoalTemplateArgument{true, ""});
+        literal.arguments.push_back(GoalTemplateArgument{true, "", {}});
       } else {
-        literal.arguments.push_back(GoalTemplateArgument{false, text_at(a, "category")});
+        std::vector<std::string> properties;
+        if (a.contains("properties"))
+          for (const json& p : list_at(a, "properties")) {
+            if (!p.is_string()) throw BadEntry("a goal argument's property is not a word");
+            properties.push_back(p.get<std::string>());
+          }
+        literal.arguments.push_back(GoalTemplateArgument{false, text_at(a, "category"), std::move(properties)});
       }
     }
     out.push_back(std::move(literal));
@@ -471,6 +479,38 @@ Status KnowledgeStore::save_task(const TaskKnowledge& task) {
   } catch (const std::exception& e) {
     return tl::unexpected(sqlite_error(path_, e));
   }
+}
+
+namespace {
+
+// Runs one DELETE with text parameters in its own transaction.
+Status delete_rows(SQLite::Database& db, const std::filesystem::path& path, const char* sql,
+                   const std::vector<std::string>& parameters) {
+  try {
+    SQLite::Transaction transaction(db);
+    SQLite::Statement remove(db, sql);
+    for (std::size_t i = 0; i < parameters.size(); ++i) remove.bind(static_cast<int>(i + 1), parameters[i]);
+    remove.exec();
+    transaction.commit();
+    return {};
+  } catch (const std::exception& e) {
+    return tl::unexpected(sqlite_error(path, e));
+  }
+}
+
+}  // namespace
+
+Status KnowledgeStore::remove_goal(const GoalKey& key) {
+  return delete_rows(*db_, path_, "DELETE FROM goals WHERE task = ? AND subtask = ? AND category = ? AND place = ?",
+                     {key.task, key.subtask, key.category, key.place});
+}
+
+Status KnowledgeStore::remove_rule(const Domain& domain, const Rule& rule) {
+  return delete_rows(*db_, path_, "DELETE FROM rules WHERE signature = ?", {rule_signature(domain, rule)});
+}
+
+Status KnowledgeStore::remove_task(const std::string& name) {
+  return delete_rows(*db_, path_, "DELETE FROM tasks WHERE name = ?", {name});
 }
 
 Result<Knowledge> KnowledgeStore::load(const Domain& domain) const {

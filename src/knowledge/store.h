@@ -59,6 +59,8 @@ struct Knowledge {
   const TaskKnowledge* find_task(const std::string& name) const;
 };
 
+// Owns its SQLite connection; move-only. Use one KnowledgeStore per
+// thread.
 class KnowledgeStore {
  public:
   // Opens the store at `path` for `access`. Errors name the file:
@@ -83,6 +85,12 @@ class KnowledgeStore {
   Status save_rule(const Domain& domain, const Rule& rule);
   // Replaces the structure stored under the same task name.
   Status save_task(const TaskKnowledge& task);
+
+  // Forgetting, for the teacher's "undo" and "forget": each is durable once
+  // it returns, and removing what is not stored is not an error.
+  Status remove_goal(const GoalKey& key);
+  Status remove_rule(const Domain& domain, const Rule& rule);
+  Status remove_task(const std::string& name);
 
   // Reads everything back. Goals and rules name predicates and actions,
   // which must exist in `domain` with the arity stored (kFailedPrecondition

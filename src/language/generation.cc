@@ -76,14 +76,90 @@ std::string noun_for(const World& world, ObjectId object) {
   return "the " + name;
 }
 
-std::string location_phrase(const World& world, ObjectId object) {
+std::string spoken_category(const World& world, ObjectId object) {
+  std::string name = world.universe->info(object).category;
+  std::replace(name.begin(), name.end(), '-', ' ');
+  return name;
+}
+
+std::optional<ObjectId> place_of(const World& world, ObjectId object) {
   const Vocabulary& v = world.vocabulary;
-  for (const Fact& f : world.state.facts()) {
-    if (f.arity != 2 || f.args[0] != object) continue;
-    if (f.predicate == v.on) return "on " + noun_for(world, f.args[1]);
-    if (f.predicate == v.in) return "in " + noun_for(world, f.args[1]);
-  }
-  return "";
+  for (const Fact& f : world.state.facts())
+    if ((f.predicate == v.on || f.predicate == v.in) && f.arity == 2 && f.args[0] == object) return f.args[1];
+  return std::nullopt;
+}
+
+namespace {
+
+std::string properties_of(const ObjectInfo& info) { return join(info.properties, " "); }
+
+// Whether the properties tell `object` apart from each of `others`.
+bool told_apart_by_properties(const World& world, ObjectId object, const std::vector<ObjectId>& others) {
+  const ObjectInfo& mine = world.universe->info(object);
+  if (mine.properties.empty()) return false;
+  return std::all_of(others.begin(), others.end(), [&](ObjectId other) {
+    const auto& theirs = world.universe->info(other).properties;
+    return std::any_of(mine.properties.begin(), mine.properties.end(), [&](const std::string& p) {
+      return std::find(theirs.begin(), theirs.end(), p) == theirs.end();
+    });
+  });
+}
+
+}  // namespace
+
+std::string distinct_noun_for(const World& world, ObjectId object, std::span<const ObjectId> among) {
+  const ObjectInfo& info = world.universe->info(object);
+  std::vector<ObjectId> alike;
+  for (ObjectId other : among)
+    if (other != object && world.universe->info(other).category == info.category) alike.push_back(other);
+  std::string name = spoken_category(world, object);
+  if (alike.empty()) return "the " + name;
+  bool by_properties = told_apart_by_properties(world, object, alike);
+  std::string noun = "the " + (info.properties.empty() ? "" : properties_of(info) + " ") + name;
+  if (by_properties) return noun;
+  auto where = place_of(world, object);
+  bool by_place = where && std::none_of(alike.begin(), alike.end(), [&](ObjectId other) {
+    return place_of(world, other) == where;
+  });
+  if (!by_place) return noun;
+  const char* preposition = world.universe->info(*where).kind == ObjectKind::kSurface ? " on " : " in ";
+  return noun + preposition + distinct_noun_for(world, *where);
+}
+
+std::string distinct_noun_for(const World& world, ObjectId object) {
+  std::vector<ObjectId> all(world.universe->size());
+  for (ObjectId id = 0; id < all.size(); ++id) all[id] = id;
+  return distinct_noun_for(world, object, all);
+}
+
+std::string say_alternatives(const std::vector<std::string>& options, std::string_view conjunction) {
+  if (options.empty()) return "";
+  std::string out = options.front();
+  for (std::size_t i = 1; i < options.size(); ++i)
+    out += (i + 1 == options.size() ? " " + std::string(conjunction) + " " : ", ") + options[i];
+  return out;
+}
+
+std::string say_which_question(const World& world, std::span<const ObjectId> candidates) {
+  std::vector<std::string> options;
+  for (ObjectId id : candidates) options.push_back(distinct_noun_for(world, id, candidates));
+  bool one_category = !candidates.empty() && std::all_of(candidates.begin(), candidates.end(), [&](ObjectId id) {
+    return world.universe->info(id).category == world.universe->info(candidates.front()).category;
+  });
+  bool by_properties = one_category && std::all_of(candidates.begin(), candidates.end(), [&](ObjectId id) {
+    std::vector<ObjectId> others;
+    for (ObjectId o : candidates)
+      if (o != id) others.push_back(o);
+    return told_apart_by_properties(world, id, others);
+  });
+  if (by_properties) return "Which " + spoken_category(world, candidates.front()) + ": " + say_alternatives(options) + "?";
+  return "Which do you mean: " + say_alternatives(options) + "?";
+}
+
+std::string location_phrase(const World& world, ObjectId object) {
+  auto where = place_of(world, object);
+  if (!where) return "";
+  return (world.state.holds(Fact(world.vocabulary.on, {object, *where})) ? "on " : "in ") + noun_for(world, *where);
 }
 
 std::string say_task_name(std::string_view name) { return capitalized(std::string(bare(name))) + "."; }

@@ -5,9 +5,11 @@
 // does. Every sentence here parses back (language/parser.h) to what it says.
 #pragma once
 
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "world/action.h"
 #include "world/goal.h"
@@ -23,6 +25,26 @@ std::string noun_for(const World& world, ObjectId object);
 // "on the table" / "in the dish rack": where the object is now; "" if it is
 // on or in nothing (held).
 std::string location_phrase(const World& world, ObjectId object);
+// The place the object is on or in now; none if it is held.
+std::optional<ObjectId> place_of(const World& world, ObjectId object);
+
+// --- Everyday names, for a person ------------------------------------------
+// The category with spaces: "glass tumbler", "walk in pantry".
+std::string spoken_category(const World& world, ObjectId object);
+// "the top drawer", "the glass tumbler on the table": the object as a
+// person tells it apart from the others of `among` that are like it: by
+// category when no other shares it, then by its properties, then by where
+// it is (a place that has look-alikes of its own is named by its
+// properties: "the mug in the top drawer").
+std::string distinct_noun_for(const World& world, ObjectId object, std::span<const ObjectId> among);
+// The same among every object of the world.
+std::string distinct_noun_for(const World& world, ObjectId object);
+// "Which do you mean: the mug on the counter or the mug in the dish rack?";
+// "Which drawer: the top drawer or the bottom drawer?" when look-alikes of
+// one category differ by their properties alone.
+std::string say_which_question(const World& world, std::span<const ObjectId> candidates);
+// "the top drawer or the bottom drawer", "A, B or C".
+std::string say_alternatives(const std::vector<std::string>& options, std::string_view conjunction = "or");
 
 // --- The instructor's task structure -------------------------------------
 // "Tidy kitchen."

@@ -4,8 +4,10 @@
 
 #include <spdlog/spdlog.h>
 
+#include "language/generation.h"
 #include "language/parser.h"
 #include "language/reference.h"
+#include "language/utterance.h"
 #include "util/text.h"
 
 namespace apprentice::language {
@@ -95,15 +97,14 @@ std::optional<ObjectId> Session::item(const NounPhrase& np, std::optional<Object
 bool Session::fits_relation(ObjectId place, Relation relation) {
   ObjectKind kind = world_.universe->info(place).kind;
   std::string name = spoken(world_, place);
-  if (relation == Relation::kIn && kind != ObjectKind::kReceptacle) {
-    fail(affordance(world_, "receptacle", place, capitalized("nothing goes in the " + name + ".")));
-    return false;
-  }
-  if (relation == Relation::kOn && kind != ObjectKind::kSurface) {
-    fail(affordance(world_, "surface", place, capitalized("nothing goes on the " + name + ".")));
-    return false;
-  }
-  return true;
+  bool in = relation == Relation::kIn;
+  if (in ? kind == ObjectKind::kReceptacle : kind == ObjectKind::kSurface) return true;
+  std::string message = kind == ObjectKind::kItem
+                            ? "The " + name + " is not a place to put things " + (in ? "in." : "on.")
+                            : "Things go " + std::string(in ? "on" : "in") + " the " + name + ", not " +
+                                  (in ? "in" : "on") + " it.";
+  fail(affordance(world_, in ? "receptacle" : "surface", place, message));
+  return false;
 }
 
 std::optional<Literal> Session::conjunct(const Conjunct& c) {
@@ -128,8 +129,8 @@ std::optional<Literal> Session::conjunct(const Conjunct& c) {
   if (!openable(world_, *thing)) {
     std::string name = spoken(world_, *thing);
     std::string message = world_.universe->info(*thing).kind == ObjectKind::kReceptacle
-                              ? "The " + name + " has no door, so it cannot be " + (closed ? "closed." : "open.")
-                              : "The " + name + " cannot be " + (closed ? "closed." : "opened.");
+                              ? "The " + name + " has no lid, so it can't be " + (closed ? "closed." : "open.")
+                              : "The " + name + " can't be " + (closed ? "closed." : "opened.");
     fail(affordance(world_, closed ? "closed" : "open", *thing, message));
     return std::nullopt;
   }
@@ -175,8 +176,8 @@ Grounding Session::open_or_close(const ActionCommand& a) {
     std::string name = spoken(world_, *target);
     return affordance(world_, "openable", *target,
                       "The " + name +
-                          (receptacle ? " has no door to " + std::string(open ? "open." : "close.")
-                                      : " cannot be " + std::string(open ? "opened." : "closed.")));
+                          (receptacle ? " has no lid, so it can't be " + std::string(open ? "opened." : "closed.")
+                                      : " can't be " + std::string(open ? "opened." : "closed.")));
   }
   ObjectId args[] = {*target};
   return Action(*id, args);
@@ -186,9 +187,7 @@ Grounding Session::open_or_close(const ActionCommand& a) {
 // the place the sentence names.
 Grounding Session::pick_up(ObjectId thing, std::optional<ObjectId> place) {
   if (!place) {
-    for (const Fact& f : world_.state.facts())
-      if ((f.predicate == world_.vocabulary.on || f.predicate == world_.vocabulary.in) && f.args[0] == thing)
-        place = f.args[1];
+    place = place_of(world_, thing);
     if (!place)
       return GroundingFailure{FailureKind::kUngroundedObject, "location of " + world_.universe->name(thing),
                               "The " + spoken(world_, thing) + " is not on or in anything I can see."};
@@ -224,11 +223,31 @@ Grounding Session::action(const ActionCommand& a) {
   return Action(*id, args);
 }
 
+// A kind of place of which there are several here means all of them ("an
+// object that is in a bag"); otherwise the phrase must name one place.
 Grounding Session::place_step(TaskStep step, Relation relation, const NounPhrase& place) {
-  auto id = object(place, Role::kPlace);
-  if (!id || !fits_relation(*id, relation)) return take_failure();
+  std::vector<ObjectId> places;
+  auto found = candidates_for(place, Role::kPlace, ReferenceContext{world_, lexicon_, ooi_});
+  if (const auto* c = std::get_if<CandidateSet>(&found); c && c->objects.size() > 1) {
+    const Universe& u = *world_.universe;
+    bool one_kind = std::all_of(c->objects.begin(), c->objects.end(), [&](ObjectId id) {
+      return u.info(id).kind != ObjectKind::kItem && u.info(id).category == u.info(c->objects.front()).category;
+    });
+    if (one_kind) {
+      places = c->objects;
+      for (ObjectId id : places) out_.references.push_back(Reference{place.text(), id, c->method, c->reason});
+    }
+  }
+  if (places.empty()) {
+    auto id = object(place, Role::kPlace);
+    if (!id) return take_failure();
+    places.push_back(*id);
+  }
+  for (ObjectId id : places)
+    if (!fits_relation(id, relation)) return take_failure();
   step.relation = relation;
-  step.place = id;
+  step.place = places.front();
+  step.places = std::move(places);
   return step;
 }
 
@@ -279,6 +298,7 @@ std::string_view to_string(ReferenceMethod method) {
     case ReferenceMethod::kHead: return "head";
     case ReferenceMethod::kMorphology: return "morphology";
     case ReferenceMethod::kWordNet: return "wordnet";
+    case ReferenceMethod::kPartialName: return "partial-name";
   }
   return "category";
 }
@@ -292,16 +312,32 @@ Interpretation Grounder::ground(const LogicalForm& form, const World& world,
   return out;
 }
 
+namespace {
+
+// The sentence with the world's names that hold function words joined
+// ("the walk in pantry" -> "the walk-in-pantry"), so that the grammar never
+// reads their "in" or "and" as structure.
+Result<LogicalForm> parse_in(std::string_view sentence, const World& world) {
+  if (sentence.size() > kMaxSentenceBytes) return parse(sentence);
+  std::vector<std::string> words = tokenize(sentence);
+  std::vector<std::string> joined = words;
+  join_world_names(joined, *world.universe);
+  if (joined == words) return parse(sentence);
+  return parse(join(joined, " "));
+}
+
+}  // namespace
+
 Interpretation Grounder::interpret(std::string_view sentence, const World& world,
                                    std::optional<ObjectId> object_of_interest) const {
-  auto form = parse(sentence);
+  auto form = parse_in(sentence, world);
   if (!form) return uninterpretable(std::nullopt, form.error().message, "I do not understand: " + form.error().message + ".");
   return ground(*form, world, object_of_interest);
 }
 
 Interpretation Grounder::interpret_goal(std::string_view sentence, const World& world,
                                         std::optional<ObjectId> object_of_interest) const {
-  auto form = parse(sentence);
+  auto form = parse_in(sentence, world);
   if (!form) return uninterpretable(std::nullopt, form.error().message, "I do not understand: " + form.error().message + ".");
   if (!std::holds_alternative<GoalDescription>(*form))
     return uninterpretable(*form, "expected a goal", "I expected a goal, such as 'the goal is that ...'.");
@@ -310,7 +346,7 @@ Interpretation Grounder::interpret_goal(std::string_view sentence, const World& 
 
 Interpretation Grounder::interpret_action(std::string_view sentence, const World& world,
                                           std::optional<ObjectId> object_of_interest) const {
-  auto form = parse(sentence);
+  auto form = parse_in(sentence, world);
   if (!form) return uninterpretable(std::nullopt, form.error().message, "I do not understand: " + form.error().message + ".");
   if (const auto* task = std::get_if<TaskName>(&*form)) {
     Interpretation out;

@@ -50,8 +50,12 @@ struct TaskStep {
   Kind kind = Kind::kTaskName;
   std::string name;               // the task name ("tidy kitchen") or subtask verb ("clear")
   Relation relation = Relation::kOn;
-  std::optional<ObjectId> place;  // RepeatWhile and Subtask
+  std::optional<ObjectId> place;  // RepeatWhile and Subtask: the first of `places`
   bool yes = false;               // Answer
+  // RepeatWhile and Subtask: every place meant, in id order. Several when
+  // the phrase names a kind of place of which there are several here ("an
+  // object that is in a bag" with three bags).
+  std::vector<ObjectId> places = {};
 };
 
 using Grounding = std::variant<Goal, Action, TaskStep, GroundingFailure>;
@@ -63,6 +67,7 @@ enum class ReferenceMethod {
   kHead,              // a bare head noun naming one category here: "bin"
   kMorphology,        // a WordNet base form is a category: "ketchups"
   kWordNet,           // a WordNet relation or spelling: "trash can" -> garbage
+  kPartialName,       // everyday replies: part of a name, "glass" -> glass-tumbler
 };
 
 std::string_view to_string(ReferenceMethod method);

@@ -168,6 +168,15 @@ std::vector<std::string> Lexicon::synonyms(std::string_view phrase) const {
 
 bool Lexicon::knows(std::string_view word) const { return wordnet_ && wordnet_->knows(spaced(word)); }
 
+std::vector<std::string> Lexicon::verb_lemmas(std::string_view word) const {
+  if (!wordnet_) return {};
+  return wordnet_->verb_base_forms(spaced(word));
+}
+
+bool Lexicon::has_verb(std::string_view word) const { return wordnet_ && wordnet_->has_verb(spaced(word)); }
+
+bool Lexicon::has_noun(std::string_view word) const { return wordnet_ && wordnet_->has_noun(spaced(word)); }
+
 bool Lexicon::ancestor_of(SynsetOffset ancestor, const Synset& synset, std::string* path) const {
   std::vector<std::pair<SynsetOffset, std::string>> frontier{{synset.offset, describe(synset)}};
   std::set<SynsetOffset> seen{synset.offset};

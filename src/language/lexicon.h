@@ -40,6 +40,9 @@ class Lexicon {
   static Lexicon open_default();
 
   bool has_wordnet() const { return wordnet_.has_value(); }
+  // The database itself, for callers that walk WordNet's hierarchy (the
+  // agent's analogies across worlds); null without WordNet.
+  const WordNet* wordnet() const { return wordnet_ ? &*wordnet_ : nullptr; }
 
   // Morphology: the phrase's noun base forms, by its last word
   // ("plastic bottles" -> {"plastic bottle"}); {} if none differ.
@@ -69,6 +72,13 @@ class Lexicon {
   // Whether WordNet knows the word under any part of speech; false
   // without WordNet.
   bool knows(std::string_view word) const;
+
+  // Verb base forms of an inflected word ("tidying" -> {"tidy"}, "threw"
+  // -> {"throw"}); {} for a base form, an unknown word, or without WordNet.
+  std::vector<std::string> verb_lemmas(std::string_view word) const;
+  // Whether WordNet has the word (a base form) as a verb / as a noun.
+  bool has_verb(std::string_view word) const;
+  bool has_noun(std::string_view word) const;
 
  private:
   std::vector<Synset> synsets(std::string_view phrase) const;

@@ -88,13 +88,21 @@ Result<LogicalForm> repeat_while(Words w) {
   return RepeatWhile{loc->first, loc->second};
 }
 
-// "Clear an object that is on the table."
+// Words that make a phrasal verb of the verb before them: "put away",
+// "throw out", "clean up".
+bool is_particle(std::string_view w) { return is_one_of(w, {"away", "back", "out", "up", "down", "off"}); }
+
+// "Clear an object that is on the table.", "Put away an object that is on
+// the desk." (a phrasal verb's particle stays part of the verb).
 std::optional<Result<LogicalForm>> subtask_command(Words w) {
-  if (w.size() < 5 || (w[1] != "an" && w[1] != "a") || w[2] != "object" || w[3] != "that") return std::nullopt;
-  if (!is_copula(w[4])) return Result<LogicalForm>(tl::unexpected(expected("'is' after 'an object that'", "")));
-  auto loc = located(w.subspan(5), "after 'an object that is'");
+  std::size_t verb_words = w.size() > 1 && is_particle(w[1]) ? 2 : 1;
+  Words rest = w.subspan(verb_words);
+  if (rest.size() < 4 || (rest[0] != "an" && rest[0] != "a") || rest[1] != "object" || rest[2] != "that")
+    return std::nullopt;
+  if (!is_copula(rest[3])) return Result<LogicalForm>(tl::unexpected(expected("'is' after 'an object that'", "")));
+  auto loc = located(rest.subspan(4), "after 'an object that is'");
   if (!loc) return Result<LogicalForm>(tl::unexpected(loc.error()));
-  return Result<LogicalForm>(SubtaskCommand{w[0], loc->first, loc->second});
+  return Result<LogicalForm>(SubtaskCommand{phrase(w.first(verb_words)), loc->first, loc->second});
 }
 
 // The predicate after "is"/"are".
@@ -200,10 +208,16 @@ Result<LogicalForm> action(Words w) {
   }
   if (w[0] == "pick" || w[0] == "pick-up") {
     std::size_t start = w[0] == "pick-up" ? 1 : 2;
-    if (start == 2 && (w.size() < 2 || w[1] != "up")) return tl::unexpected(expected("'up' after 'pick'", ""));
+    std::size_t from = find_word(w, 1, [](std::string_view x) { return x == "from"; });
+    // "pick X up [from Y]": the particle after the object.
+    std::size_t object_end = from;
+    if (w[0] == "pick" && (w.size() < 2 || w[1] != "up")) {
+      if (from < 3 || w[from - 1] != "up") return tl::unexpected(expected("'up' after 'pick'", ""));
+      start = 1;
+      object_end = from - 1;
+    }
     command.verb = ActionVerb::kPickUp;
-    std::size_t from = find_word(w, start, [](std::string_view x) { return x == "from"; });
-    auto object = require_noun_phrase(w.subspan(start, from - start), true, "after 'pick up'");
+    auto object = require_noun_phrase(w.subspan(start, object_end - start), true, "after 'pick up'");
     if (!object) return tl::unexpected(object.error());
     command.object = *object;
     if (from < w.size()) {
@@ -215,10 +229,13 @@ Result<LogicalForm> action(Words w) {
     return command;
   }
   command.verb = ActionVerb::kPut;
-  std::size_t start = w.size() > 1 && w[0] == "put" && w[1] == "down" ? 2 : 1;
+  // "put down X", "put away X", "put X back in Y": particles say nothing
+  // about where the thing goes.
+  std::size_t start = w.size() > 1 && w[0] == "put" && is_particle(w[1]) ? 2 : 1;
   std::size_t prep = find_word(w, start, [](std::string_view x) { return is_in(x) || is_on(x); });
   if (prep == w.size()) return tl::unexpected(expected("'in' or 'on' and a place", "after 'put'"));
-  auto object = require_noun_phrase(w.subspan(start, prep - start), true, "after 'put'");
+  std::size_t object_end = prep > start + 1 && is_particle(w[prep - 1]) ? prep - 1 : prep;
+  auto object = require_noun_phrase(w.subspan(start, object_end - start), true, "after 'put'");
   if (!object) return tl::unexpected(object.error());
   auto place = require_noun_phrase(w.subspan(prep + 1), false, "after " + quoted(w[prep]));
   if (!place) return tl::unexpected(place.error());
@@ -295,8 +312,8 @@ Result<LogicalForm> parse(std::string_view sentence) {
   if (w[0] == "repeat") return repeat_while(w);
   if (w[0] == "if") return goal_description(w);
   if (starts_with(w, {"the", "goal"})) return goal_statement(w, std::nullopt);
-  if (is_one_of(w[0], {"open", "close", "pick", "pick-up", "put", "put-down"})) return action(w);
   if (auto subtask = subtask_command(w)) return *subtask;
+  if (is_one_of(w[0], {"open", "close", "pick", "pick-up", "put", "put-down"})) return action(w);
   if (auto task = task_name(w)) return *task;
   return make_error(ErrorCode::kInvalidInput,
                     "expected a goal ('the goal is that ...'), an action ('open', 'close', 'pick up', 'put'), "

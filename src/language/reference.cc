@@ -5,17 +5,14 @@
 
 #include <spdlog/spdlog.h>
 
+#include "language/generation.h"
+#include "language/utterance.h"
 #include "util/text.h"
 
 namespace apprentice::language {
 namespace {
 
-// Candidate objects for a phrase, and how they were found.
-struct Candidates {
-  std::vector<ObjectId> objects;  // id order, no duplicates
-  ReferenceMethod method = ReferenceMethod::kCategory;
-  std::string reason;
-};
+using Candidates = CandidateSet;
 
 bool fits(const ObjectInfo& info, Role role) {
   switch (role) {
@@ -49,13 +46,16 @@ std::optional<Candidates> by_name(const std::string& phrase, Role role, const Wo
   std::string key = category_key(phrase);
   if (auto objects = with_categories(universe, {key}, std::nullopt); !objects.empty())
     return Candidates{objects, method, reason.empty() ? "'" + phrase + "' is the category " + key : reason};
-  // The domain's own kinds ("receptacle", "surface", "item") name every
-  // object of that type.
-  if (auto type = domain.find_type(key); type && *type != kRootType) {
+  // The domain's own types ("item", "place") and the kinds of place
+  // ("receptacle", "surface", whose types are receptacle-place and
+  // surface-place) name every object of that type.
+  std::string type_key = key;
+  if (auto kind = parse_object_kind(key); kind && *kind != ObjectKind::kItem) type_key = type_name(*kind);
+  if (auto type = domain.find_type(type_key); type && *type != kRootType) {
     std::vector<ObjectId> objects;
     for (ObjectId id = 0; id < universe.size(); ++id)
       if (domain.is_subtype(universe.info(id).type, *type)) objects.push_back(id);
-    if (!objects.empty()) return Candidates{objects, method, "'" + phrase + "' is the type " + key};
+    if (!objects.empty()) return Candidates{objects, method, "'" + phrase + "' is the type " + type_key};
   }
   if (key.find('-') != std::string::npos || key.empty()) return std::nullopt;
   std::set<std::string> heads;
@@ -109,33 +109,116 @@ std::string list_ids(const Universe& universe, const std::vector<ObjectId>& ids)
   return join(names, ", ");
 }
 
-std::vector<std::string> split_parts(std::string_view text) {
-  std::vector<std::string> parts;
-  std::string part;
-  for (char c : std::string(text) + " ") {
-    if (c == '-' || c == ' ') {
-      if (!part.empty()) parts.push_back(part);
-      part.clear();
-    } else {
-      part.push_back(c);
-    }
-  }
-  return parts;
-}
-
 // Nothing fits: blame the first word neither the world's names nor WordNet
 // know, else the phrase as a whole.
 GroundingFailure unresolved(const std::string& phrase, const ReferenceContext& context) {
   std::set<std::string> vocabulary{"object"};
-  for (const ObjectInfo& info : context.world.universe->objects())
-    for (std::string& part : split_parts(info.category)) vocabulary.insert(std::move(part));
-  for (const std::string& part : split_parts(phrase))
+  for (const ObjectInfo& info : context.world.universe->objects()) {
+    for (std::string& part : name_parts(info.category)) vocabulary.insert(std::move(part));
+    for (const std::string& property : info.properties) vocabulary.insert(property);
+  }
+  for (const std::string& part : name_parts(phrase))
     if (!vocabulary.count(part) && !context.lexicon.knows(part))
       return {FailureKind::kUnknownWord, part, "I do not know the word '" + part + "'."};
-  return {FailureKind::kUngroundedObject, phrase, "I do not see the " + phrase + " here."};
+  return {FailureKind::kUngroundedObject, phrase, not_seen_message(phrase, context.world)};
+}
+
+// Words before the rest of a phrase that are properties of objects here:
+// "top drawer" -> {"top"} and "drawer".
+std::pair<std::vector<std::string>, std::string> split_properties(const std::string& phrase, const World& world) {
+  std::set<std::string> known;
+  for (const ObjectInfo& info : world.universe->objects())
+    for (const std::string& property : info.properties) known.insert(property);
+  std::vector<std::string> words = split_words(phrase);
+  std::vector<std::string> properties;
+  std::size_t i = 0;
+  while (i + 1 < words.size() && known.count(words[i])) properties.push_back(words[i++]);
+  return {properties, join(std::vector<std::string>(words.begin() + static_cast<std::ptrdiff_t>(i), words.end()), " ")};
+}
+
+bool has_properties(const ObjectInfo& info, const std::vector<std::string>& properties) {
+  return std::all_of(properties.begin(), properties.end(), [&](const std::string& p) {
+    return std::find(info.properties.begin(), info.properties.end(), p) != info.properties.end();
+  });
+}
+
+// A word's noun forms: itself, WordNet's base forms, and a plain singular.
+std::vector<std::string> noun_forms(const std::string& word, const Lexicon& lexicon) {
+  std::vector<std::string> forms{word};
+  for (std::string& base : lexicon.lemmas(word)) forms.push_back(std::move(base));
+  if (word.size() > 3 && word.back() == 's' && !word.ends_with("ss")) {
+    forms.push_back(word.substr(0, word.size() - 1));
+    if (word.ends_with("es")) forms.push_back(word.substr(0, word.size() - 2));
+  }
+  return forms;
+}
+
+// Everyday replies: words that are part of names here. Every word of the
+// phrase in a category's name ("glass" -> glass-tumbler, "pop tarts" ->
+// pop-tart-box), else a phrase holding all of a category's name and more
+// ("the ketchup bottle" -> ketchup; the longest name wins).
+std::optional<Candidates> by_parts(const std::string& phrase, Role role, const ReferenceContext& context) {
+  const Universe& universe = *context.world.universe;
+  std::vector<std::vector<std::string>> forms;
+  for (const std::string& word : name_parts(phrase)) forms.push_back(noun_forms(word, context.lexicon));
+  if (forms.empty()) return std::nullopt;
+  auto said = [&](const std::string& part) {
+    return std::any_of(forms.begin(), forms.end(), [&](const std::vector<std::string>& f) {
+      return std::find(f.begin(), f.end(), part) != f.end();
+    });
+  };
+  std::set<std::string> within, containing;
+  std::size_t longest = 0;
+  for (const ObjectInfo& info : universe.objects()) {
+    if (!fits(info, role)) continue;
+    std::vector<std::string> parts = name_parts(info.category);
+    // Parts run together count too: "poptarts" is pop + tart.
+    std::vector<std::string> pieces = parts;
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+      std::string joined = parts[i];
+      for (std::size_t j = i + 1; j < parts.size(); ++j) pieces.push_back(joined += parts[j]);
+    }
+    bool all_in = std::all_of(forms.begin(), forms.end(), [&](const std::vector<std::string>& f) {
+      return std::any_of(f.begin(), f.end(), [&](const std::string& form) {
+        return std::find(pieces.begin(), pieces.end(), form) != pieces.end();
+      });
+    });
+    if (all_in) within.insert(info.category);
+    if (!all_in && parts.size() < forms.size() && std::all_of(parts.begin(), parts.end(), said)) {
+      if (parts.size() > longest) containing.clear();
+      if (parts.size() >= longest) {
+        longest = parts.size();
+        containing.insert(info.category);
+      }
+    }
+  }
+  const std::set<std::string>& found = within.empty() ? containing : within;
+  if (found.empty()) return std::nullopt;
+  std::string names = join(std::vector<std::string>(found.begin(), found.end()), ", ");
+  return Candidates{with_categories(universe, found, role), ReferenceMethod::kPartialName,
+                    "'" + phrase + "' is part of the name " + names};
+}
+
+// Everyday replies: a phrase whose first words only describe the thing
+// ("the silverware drawer", "the clean mug"): its last words name it.
+std::optional<Candidates> by_last_words(const std::string& phrase, Role role, const ReferenceContext& context) {
+  std::vector<std::string> words = split_words(phrase);
+  for (std::size_t k = 1; k < words.size(); ++k) {
+    std::string rest = join(std::vector<std::string>(words.begin() + static_cast<std::ptrdiff_t>(k), words.end()), " ");
+    std::optional<Candidates> named = by_name(rest, role, context.world, ReferenceMethod::kPartialName, "");
+    if (!named) named = by_parts(rest, role, context);
+    if (named) {
+      named->method = ReferenceMethod::kPartialName;
+      named->reason = "'" + join(std::vector<std::string>(words.begin(), words.begin() + static_cast<std::ptrdiff_t>(k)), " ") +
+                      "' only describes the " + rest + "; " + named->reason;
+      return named;
+    }
+  }
+  return std::nullopt;
 }
 
 // All candidates for a phrase, by the first tier that finds any.
+std::variant<Candidates, GroundingFailure> candidates(const NounPhrase& np, Role role, const ReferenceContext& context);
 std::variant<Candidates, GroundingFailure> candidates(const NounPhrase& np, Role role,
                                                       const ReferenceContext& context) {
   std::string phrase = np.text();
@@ -144,12 +227,41 @@ std::variant<Candidates, GroundingFailure> candidates(const NounPhrase& np, Role
       return GroundingFailure{FailureKind::kUngroundedObject, "object", "I am not attending to any object."};
     return Candidates{{*context.object_of_interest}, ReferenceMethod::kObjectOfInterest, "the object of interest"};
   }
+  if (np.article.empty() && phrase == "it") {
+    if (!context.object_of_interest)
+      return GroundingFailure{FailureKind::kUngroundedObject, "it", "I do not know what \"it\" refers to here."};
+    return Candidates{{*context.object_of_interest}, ReferenceMethod::kObjectOfInterest, "'it' is the object of interest"};
+  }
+  // An object's own id ("drawer2") names it.
+  if (np.words.size() == 1)
+    if (auto id = context.world.universe->find(phrase))
+      return Candidates{{*id}, ReferenceMethod::kCategory, "'" + phrase + "' is the id of " + phrase};
   if (auto named = by_name(phrase, role, context.world, ReferenceMethod::kCategory, "")) return *named;
+  // Properties tell look-alikes apart: "the top drawer" is the drawer with
+  // the property "top".
+  if (auto [properties, rest] = split_properties(phrase, context.world); !properties.empty()) {
+    NounPhrase head{"", split_words(rest)};
+    auto found = candidates(head, role, context);
+    if (auto* c = std::get_if<Candidates>(&found)) {
+      std::vector<ObjectId> kept;
+      for (ObjectId id : c->objects)
+        if (has_properties(context.world.universe->info(id), properties)) kept.push_back(id);
+      if (kept.empty())
+        return GroundingFailure{FailureKind::kUngroundedObject, phrase, not_seen_message(phrase, context.world)};
+      c->objects = std::move(kept);
+      c->reason += "; with the properties " + join(properties, ", ");
+      return *c;
+    }
+  }
   for (const std::string& form : context.lexicon.lemmas(phrase)) {
     std::string reason = "WordNet's morphology gives the base form '" + form + "'";
     if (auto named = by_name(form, role, context.world, ReferenceMethod::kMorphology, reason)) return *named;
   }
+  if (context.partial_names)
+    if (auto named = by_parts(phrase, role, context)) return *named;
   if (auto related = by_wordnet(phrase, role, context)) return *related;
+  if (context.partial_names)
+    if (auto named = by_last_words(phrase, role, context)) return *named;
   // A phrase naming only things of the other role ("Pick up the bin", "the
   // trash is in the kitchen") should fail on that thing's affordances, not
   // on its name.
@@ -178,6 +290,34 @@ std::optional<ObjectId> only_one_at(const ReferenceContext& context, const std::
 
 }  // namespace
 
+std::variant<CandidateSet, GroundingFailure> candidates_for(const NounPhrase& phrase, Role role,
+                                                            const ReferenceContext& context) {
+  return candidates(phrase, role, context);
+}
+
+std::string not_seen_message(std::string_view phrase, const World& world) {
+  std::string text(phrase);
+  std::vector<std::string> words = name_parts(text);
+  std::vector<std::string> suggestions;
+  for (const ObjectInfo& info : world.universe->objects()) {
+    std::vector<std::string> parts = name_parts(info.category);
+    if (parts.size() < 2 || category_key(text) == info.category) continue;
+    bool shares = std::any_of(words.begin(), words.end(), [&](const std::string& w) {
+      auto has = [&](const std::string& x) { return std::find(parts.begin(), parts.end(), x) != parts.end(); };
+      bool plural = w.size() > 3 && w.back() == 's' && !w.ends_with("ss");
+      return has(w) || (plural && has(w.substr(0, w.size() - 1))) ||
+             (plural && w.ends_with("es") && has(w.substr(0, w.size() - 2)));
+    });
+    std::string spoken = "the " + join(parts, " ");
+    if (shares && std::find(suggestions.begin(), suggestions.end(), spoken) == suggestions.end())
+      suggestions.push_back(spoken);
+  }
+  bool plural = text.size() > 3 && text.back() == 's' && !text.ends_with("ss");
+  std::string seen = "I don't see " + (plural ? "any " + text : std::string(article_for(text)) + " " + text);
+  if (suggestions.empty() || suggestions.size() > 3) return seen + " here.";
+  return seen + "; do you mean " + say_alternatives(suggestions) + "?";
+}
+
 std::string category_key(std::string_view phrase) {
   std::string key;
   for (const std::string& word : split_words(to_lower(phrase))) {
@@ -204,8 +344,7 @@ Resolution resolve(const NounPhrase& np, Role role, const ReferenceContext& cont
   } else {
     if (c.method == ReferenceMethod::kWordNet)
       spdlog::info("wordnet: not grounding '{}': it could be {} ({})", phrase, list_ids(universe, c.objects), c.reason);
-    return GroundingFailure{FailureKind::kUngroundedObject, phrase,
-                            "I do not know which you mean by the " + phrase + ": " + list_ids(universe, c.objects) + "."};
+    return GroundingFailure{FailureKind::kUngroundedObject, phrase, say_which_question(context.world, c.objects)};
   }
   if (c.method == ReferenceMethod::kWordNet)
     spdlog::info("wordnet: '{}' -> {} ({})", phrase, universe.name(chosen), c.reason);

@@ -18,7 +18,9 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <variant>
+#include <vector>
 
 #include "language/grounding.h"
 #include "language/lexicon.h"
@@ -40,9 +42,35 @@ struct ReferenceContext {
   // A place the sentence locates the thing at ("Pick up the plate from the
   // table"): among several fitting objects, the one there is meant.
   std::optional<ObjectId> located_at = std::nullopt;
+  // Everyday replies (language/reply.h): a phrase may name a thing by part
+  // of its name ("glass" for a glass-tumbler, "pop tarts" for a
+  // pop-tart-box) or with words that only describe it ("the silverware
+  // drawer"). Off for the grammar's sentences and the LLM's, whose
+  // outcomes docs/language.md reports.
+  bool partial_names = false;
 };
 
 using Resolution = std::variant<Reference, GroundingFailure>;
+
+// Every object a phrase may name, by the first tier that finds any.
+struct CandidateSet {
+  std::vector<ObjectId> objects;  // id order, no duplicates, never empty
+  ReferenceMethod method = ReferenceMethod::kCategory;
+  std::string reason;
+};
+
+// The candidates before the reference policy chooses among them (for
+// callers that ask back instead of failing: language/reply.h). Besides the
+// tiers above, a one-word phrase that is an object's id ("drawer2") names
+// that object, "it" is the object of interest, and leading words that are
+// properties of objects here ("the top drawer") keep only the objects
+// that have them.
+std::variant<CandidateSet, GroundingFailure> candidates_for(const NounPhrase& phrase, Role role,
+                                                            const ReferenceContext& context);
+
+// "I don't see a bookshelf here.", or, when words of the phrase are part of
+// names here, "I don't see a glass here; do you mean the glass tumbler?".
+std::string not_seen_message(std::string_view phrase, const World& world);
 
 Resolution resolve(const NounPhrase& phrase, Role role, const ReferenceContext& context);
 

@@ -1,41 +1,182 @@
 #include "language/reply.h"
 
+#include <algorithm>
+#include <set>
+
 #include "language/generation.h"
 #include "language/parser.h"
+#include "language/reply_reading.h"
+#include "language/utterance.h"
 #include "util/text.h"
 
 namespace apprentice::language {
 namespace {
 
-std::optional<Command> command(std::string_view text) {
-  std::vector<std::string> words = tokenize(text);
-  if (words.empty()) return std::nullopt;
-  if (words.size() == 1) {
-    if (words[0] == "help") return Command{Command::Kind::kHelp, ""};
-    if (words[0] == "status") return Command{Command::Kind::kStatus, ""};
-    if (words[0] == "undo") return Command{Command::Kind::kUndo, ""};
-    if (words[0] == "quit" || words[0] == "exit") return Command{Command::Kind::kQuit, ""};
+// The kind of object "forget" names: a category of the world when the words
+// name one ("forget the glasses" -> "glass-tumbler"), else the words.
+std::string kind_named(const Grounder& grounder, const World& world, std::vector<std::string> words) {
+  std::erase_if(words, [](const std::string& w) { return is_determiner(w) || w == "about" || w == "everything"; });
+  if (words.empty()) return "";
+  ReferenceContext context{world, grounder.lexicon(), std::nullopt};
+  context.partial_names = true;
+  auto found = candidates_for(NounPhrase{"", words}, Role::kItem, context);
+  if (const auto* c = std::get_if<CandidateSet>(&found)) {
+    std::set<std::string> categories;
+    for (ObjectId id : c->objects) categories.insert(world.universe->info(id).category);
+    if (categories.size() == 1) return *categories.begin();
   }
-  if (words[0] == "forget" && words.size() > 1)
-    return Command{Command::Kind::kForget, join(std::vector<std::string>(words.begin() + 1, words.end()), " ")};
+  return join(words, " ");
+}
+
+std::optional<Command> command(const Grounder& grounder, const World& world, std::string_view text) {
+  std::vector<std::string> words = reply_words(text);
+  std::erase_if(words, [](const std::string& w) { return w == "," || w == "please"; });
+  if (words.empty()) return std::nullopt;
+  auto is = [&](std::initializer_list<std::string_view> phrase) {
+    return words.size() == phrase.size() && std::equal(phrase.begin(), phrase.end(), words.begin());
+  };
+  if (is({"help"}) || is({"help", "me"}) || is({"what", "can", "i", "say"}) || is({"i", "need", "help"}) ||
+      is({"what", "do", "i", "say"}) || is({"what", "should", "i", "say"}) || text == "?")
+    return Command{Command::Kind::kHelp, ""};
+  if (is({"status"}) || is({"where", "are", "we"}) || is({"what", "is", "the", "status"}) || is({"show", "status"}))
+    return Command{Command::Kind::kStatus, ""};
+  if (is({"undo"}) || is({"undo", "that"}) || is({"undo", "it"}) || is({"take", "that", "back"}) ||
+      is({"scratch", "that"}) || is({"undo", "the", "last", "one"}) || is({"undo", "last"}))
+    return Command{Command::Kind::kUndo, ""};
+  if (is({"quit"}) || is({"exit"}) || is({"bye"}) || is({"goodbye"}) || is({"q"}))
+    return Command{Command::Kind::kQuit, ""};
+  if (words[0] == "forget" && words.size() > 1) {
+    std::vector<std::string> rest(words.begin() + 1, words.end());
+    if (rest.size() > 3 && rest[0] == "what" && rest[1] == "you" && rest[2] == "know") rest.erase(rest.begin(), rest.begin() + 3);
+    std::string kind = kind_named(grounder, world, rest);
+    if (!kind.empty()) return Command{Command::Kind::kForget, kind};
+  }
   return std::nullopt;
 }
 
-Unusable unusable(const World& world, const ReplyContext& context, std::string reason,
-                  std::optional<GroundingFailure> failure = std::nullopt) {
-  return Unusable{std::move(reason), example_replies(world, context), std::move(failure)};
+bool mentions(const Goal& goal, ObjectId object) {
+  return std::any_of(goal.literals.begin(), goal.literals.end(),
+                     [&](const Literal& l) { return l.fact.mentions(object); });
 }
 
-Reply from_step(const TaskStep& step) {
+// The script's sentences, read by its grammar, where they answer the
+// question: they keep the meaning the paper gives them.
+std::optional<Reply> scripted(const Grounder& grounder, const World& world, const ReplyContext& context,
+                              std::string_view text, std::optional<Problem>& failure) {
+  if (context.asked == Asked::kTask || context.asked == Asked::kWhich) return std::nullopt;
+  Interpretation in = grounder.interpret(text, world, context.object);
+  if (!in.form) return std::nullopt;
+  bool structure = context.asked == Asked::kTaskStep || context.asked == Asked::kSubtaskEnd;
+  const LogicalForm& form = *in.form;
+  bool fits = (structure && (std::holds_alternative<RepeatWhile>(form) || std::holds_alternative<SubtaskCommand>(form) ||
+                             std::holds_alternative<Done>(form) || std::holds_alternative<Repeat>(form))) ||
+              (context.asked == Asked::kGoal &&
+               (std::holds_alternative<GoalDescription>(form) || std::holds_alternative<Done>(form))) ||
+              (context.asked == Asked::kAction && std::holds_alternative<ActionCommand>(form)) ||
+              (context.asked == Asked::kYesNo && std::holds_alternative<Answer>(form));
+  if (!fits) return std::nullopt;
+  if (const auto* f = in.failure()) {
+    failure = Problem{f->message, *f};
+    return std::nullopt;
+  }
+  if (const auto* goal = std::get_if<Goal>(&in.result)) {
+    if (context.object && !mentions(*goal, *context.object)) return std::nullopt;
+    return GoalGiven{*goal};
+  }
+  if (const auto* action = std::get_if<Action>(&in.result)) {
+    ActionGiven given;
+    given.action = *action;
+    return given;
+  }
+  const auto& step = std::get<TaskStep>(in.result);
   switch (step.kind) {
-    case TaskStep::Kind::kTaskName: return TaskNamed{step.name};
-    case TaskStep::Kind::kRepeatWhile: return LoopNamed{step.relation, {*step.place}};
-    case TaskStep::Kind::kSubtask: return SubtaskNamed{step.name, step.relation, {*step.place}};
+    case TaskStep::Kind::kRepeatWhile: return LoopNamed{step.relation, step.places};
+    case TaskStep::Kind::kSubtask: return SubtaskNamed{step.name, step.relation, step.places};
     case TaskStep::Kind::kDone: return Finished{};
     case TaskStep::Kind::kRepeat: return Proceed{};
-    case TaskStep::Kind::kAnswer: return YesNo{step.yes};
+    case TaskStep::Kind::kAnswer: return YesNo{step.yes, ""};
+    case TaskStep::Kind::kTaskName: break;
   }
-  return Finished{};
+  return std::nullopt;
+}
+
+// --- Examples, from the world ---------------------------------------------------
+
+bool openable(const World& world, ObjectId id) { return world.state.holds(Fact(world.vocabulary.openable, {id})); }
+
+// Places that hold something now, in id order.
+std::vector<ObjectId> places_with_things(const World& world) {
+  std::vector<ObjectId> out;
+  for (ObjectId id = 0; id < world.universe->size(); ++id)
+    if (world.universe->info(id).kind == ObjectKind::kItem)
+      if (auto where = place_of(world, id); where && std::find(out.begin(), out.end(), *where) == out.end())
+        out.push_back(*where);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// A place to put `object` other than where it is: a receptacle with a
+// door when `with_door`, else a receptacle, else a surface.
+std::optional<ObjectId> destination_for(const World& world, std::optional<ObjectId> object, bool with_door) {
+  std::optional<ObjectId> here = object ? place_of(world, *object) : std::nullopt;
+  std::optional<ObjectId> surface;
+  for (ObjectId id = 0; id < world.universe->size(); ++id) {
+    ObjectKind kind = world.universe->info(id).kind;
+    if (kind == ObjectKind::kItem || id == here) continue;
+    if (with_door && !(kind == ObjectKind::kReceptacle && openable(world, id))) continue;
+    if (kind == ObjectKind::kSurface) {
+      if (!surface) surface = id;
+      continue;
+    }
+    return id;
+  }
+  return with_door ? std::nullopt : surface;
+}
+
+std::string in_or_on(const World& world, ObjectId place) {
+  return world.universe->info(place).kind == ObjectKind::kSurface ? "on " : "in ";
+}
+
+std::string item_noun(const World& world, std::optional<ObjectId> object) {
+  if (!object) {
+    for (ObjectId id = 0; id < world.universe->size(); ++id)
+      if (world.universe->info(id).kind == ObjectKind::kItem) return "the " + spoken_category(world, id);
+    return "it";
+  }
+  return "the " + spoken_category(world, *object);
+}
+
+std::vector<std::string> structure_examples(const World& world, bool subtask_end) {
+  std::vector<ObjectId> places = places_with_things(world);
+  std::vector<std::string> out;
+  if (subtask_end) out = {"that's all", "keep going"};
+  for (std::size_t i = 0; i < places.size() && i < 2; ++i)
+    out.push_back((i == 0 && !subtask_end ? "clear " : "then clear ") + distinct_noun_for(world, places[i]));
+  if (!subtask_end) out.emplace_back("that's all");
+  return out;
+}
+
+std::vector<std::string> goal_examples(const World& world, const ReplyContext& context) {
+  std::vector<std::string> out;
+  std::string item = item_noun(world, context.object);
+  auto any = destination_for(world, context.object, false);
+  auto with_door = destination_for(world, context.object, true);
+  if (any) out.push_back(item + " goes " + in_or_on(world, *any) + distinct_noun_for(world, *any));
+  if (with_door) out.push_back("put it in " + distinct_noun_for(world, *with_door) + " and close it");
+  if (any) out.push_back(in_or_on(world, *any) + distinct_noun_for(world, *any));
+  return out;
+}
+
+std::vector<std::string> action_examples(const World& world, const ReplyContext& context) {
+  std::vector<std::string> out;
+  std::optional<ObjectId> here = context.object ? place_of(world, *context.object) : std::nullopt;
+  if (context.object && here) out.push_back("pick up " + item_noun(world, context.object));
+  for (ObjectId id = 0; id < world.universe->size() && out.size() < 2; ++id)
+    if (openable(world, id) && world.state.holds(Fact(world.vocabulary.closed, {id})))
+      out.push_back("open " + distinct_noun_for(world, id));
+  if (auto any = destination_for(world, context.object, false))
+    out.push_back("put it " + in_or_on(world, *any) + distinct_noun_for(world, *any));
+  return out;
 }
 
 }  // namespace
@@ -53,45 +194,55 @@ std::string_view to_string(Asked asked) {
   return "task";
 }
 
-// A first reading: the script's grammar only. docs/language.md says what is
-// understood.
 Reply read_reply(const Grounder& grounder, const World& world, const ReplyContext& context, std::string_view text) {
-  if (auto c = command(text)) return *c;
-  Interpretation interpretation = grounder.interpret(text, world, context.object);
-  if (const auto* failure = interpretation.failure()) return unusable(world, context, failure->message, *failure);
-  if (const auto* goal = std::get_if<Goal>(&interpretation.result)) return GoalGiven{*goal};
-  if (const auto* action = std::get_if<Action>(&interpretation.result)) return ActionGiven{*action};
-  return from_step(std::get<TaskStep>(interpretation.result));
+  if (text.size() > kMaxSentenceBytes)
+    return Unusable{"That is too long for me; please say it in a shorter sentence.", example_replies(world, context),
+                    std::nullopt};
+  if (auto c = command(grounder, world, text)) return *c;
+  std::optional<Problem> grammar_failure;
+  if (auto reply = scripted(grounder, world, context, text, grammar_failure)) return *reply;
+  std::vector<std::string> words = reply_words(text);
+  join_world_names(words, *world.universe);
+  if (std::all_of(words.begin(), words.end(), [](const std::string& w) { return w == ","; }))
+    return Unusable{"I didn't get a reply.", example_replies(world, context), std::nullopt};
+  ReplyInput in(grounder, world, context, std::move(words));
+  Reply reply = Unusable{};
+  switch (context.asked) {
+    case Asked::kTask: reply = read_task(in); break;
+    case Asked::kTaskStep:
+    case Asked::kSubtaskEnd: reply = read_structure(in); break;
+    case Asked::kGoal: reply = read_goal(in); break;
+    case Asked::kAction: reply = read_action(in); break;
+    case Asked::kYesNo: reply = read_yes_no(in); break;
+    case Asked::kWhich: reply = read_which(in); break;
+  }
+  // Where the grammar understood the sentence and only the world refused
+  // it, its reason is the more exact one.
+  if (auto* failed = std::get_if<Unusable>(&reply); failed && grammar_failure && !failed->failure)
+    return unusable(in, *grammar_failure);
+  return reply;
 }
 
 std::vector<std::string> example_replies(const World& world, const ReplyContext& context) {
+  std::string room = world.location.empty() ? "room" : world.location;
+  std::vector<std::string> out;
   switch (context.asked) {
-    case Asked::kTask: return {"Tidy kitchen.", "tidy the kitchen"};
-    case Asked::kTaskStep:
-      return {"Repeat the following tasks while an object is on the table.", "Clear an object that is on the table.",
-              "You are done."};
-    case Asked::kSubtaskEnd: return {"You are done.", "Repeat."};
-    case Asked::kGoal:
-      if (context.object) {
-        const std::string& category = world.universe->info(*context.object).category;
-        return {"If the object is " + std::string(article_for(category)) + " " + category +
-                " then the goal is that the object is in the fridge and the fridge is closed."};
-      }
-      return {"If the object is a ketchup then the goal is that the object is in the fridge."};
-    case Asked::kAction: return {"Open the fridge.", "Pick up the ketchup.", "Put the ketchup in the fridge."};
-    case Asked::kYesNo: return {"yes", "no"};
-    case Asked::kWhich: {
-      std::vector<std::string> out;
-      for (ObjectId id : context.choices) out.push_back(noun_for(world, id));
-      return out;
-    }
+    case Asked::kTask: out = {"tidy the " + room, "I want you to tidy the " + room}; break;
+    case Asked::kTaskStep: out = structure_examples(world, false); break;
+    case Asked::kSubtaskEnd: out = structure_examples(world, true); break;
+    case Asked::kGoal: out = goal_examples(world, context); break;
+    case Asked::kAction: out = action_examples(world, context); break;
+    case Asked::kYesNo: out = {"yes", "no"}; break;
+    case Asked::kWhich:
+      for (ObjectId id : context.choices) out.push_back(distinct_noun_for(world, id, context.choices));
+      break;
   }
-  return {};
+  return out;
 }
 
 std::string format_reply(const World& world, const Reply& reply) {
   const Universe& u = *world.universe;
-  auto places = [&](const std::vector<ObjectId>& ids) {
+  auto ids_of = [&](const std::vector<ObjectId>& ids) {
     std::vector<std::string> names;
     for (ObjectId id : ids) names.push_back(u.name(id));
     return join(names, " ");
@@ -99,7 +250,7 @@ std::string format_reply(const World& world, const Reply& reply) {
   struct Formatter {
     const World& world;
     const Universe& u;
-    decltype(places)& list;
+    decltype(ids_of)& list;
     std::string operator()(const TaskNamed& r) const { return "task " + r.name; }
     std::string operator()(const SubtaskNamed& r) const {
       return "subtask " + r.verb + " " + std::string(to_string(r.relation)) + " " + list(r.places);
@@ -111,9 +262,13 @@ std::string format_reply(const World& world, const Reply& reply) {
     std::string operator()(const Proceed&) const { return "proceed"; }
     std::string operator()(const GoalGiven& r) const { return "goal " + format_goal(*world.domain, u, r.goal); }
     std::string operator()(const ActionGiven& r) const {
-      return "action " + format_action(*world.domain, u, r.action);
+      std::string out = "action " + format_action(*world.domain, u, r.action);
+      for (const Action& a : r.more) out += ", " + format_action(*world.domain, u, a);
+      return out;
     }
-    std::string operator()(const YesNo& r) const { return r.yes ? "yes" : "no"; }
+    std::string operator()(const YesNo& r) const {
+      return std::string(r.yes ? "yes" : "no") + (r.rest.empty() ? "" : "; then: " + r.rest);
+    }
     std::string operator()(const Chosen& r) const { return "chosen " + u.name(r.object); }
     std::string operator()(const Command& r) const {
       switch (r.kind) {
@@ -130,7 +285,7 @@ std::string format_reply(const World& world, const Reply& reply) {
       return "unusable" + (r.failure ? " " + std::string(to_string(r.failure->kind)) + " " + r.failure->detail : "");
     }
   };
-  return std::visit(Formatter{world, u, places}, reply);
+  return std::visit(Formatter{world, u, ids_of}, reply);
 }
 
 }  // namespace apprentice::language

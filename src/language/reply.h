@@ -50,6 +50,18 @@ struct ReplyContext {
   std::optional<ObjectId> recent_place;
   // kWhich: the things the agent offered.
   std::vector<ObjectId> choices;
+  // Phrases the teacher has already settled: after `Ambiguous{"mug", ...}`
+  // and the answer to "Which do you mean ...?", read the same reply again
+  // with {"mug", mug2} here and "mug" means mug2.
+  struct Settled {
+    std::string phrase;  // Ambiguous::phrase
+    ObjectId object = 0;
+  };
+  std::vector<Settled> settled = {};
+  // The verbs of the subtasks taught so far, in order ("clear", "store"):
+  // what "do the same with the counter" and "the counter next" do. Empty
+  // when unknown; such replies then get a question back.
+  std::vector<std::string> taught_subtasks = {};
 };
 
 // --- What a reply can mean --------------------------------------------------
@@ -88,10 +100,17 @@ struct GoalGiven {
 
 struct ActionGiven {
   Action action;
+  // Further steps said in the same reply, in order ("open the fridge and
+  // put the ketchup in it"), each grounded in the world as it is now.
+  std::vector<Action> more = {};
 };
 
 struct YesNo {
   bool yes = false;
+  // What follows the answer, for the caller to read at the question that
+  // follows it: "no, it goes in the pantry" -> "it goes in the pantry".
+  // Empty when the rest only repeats the answer ("yes, exactly").
+  std::string rest = {};
 };
 
 // kWhich: the one meant.

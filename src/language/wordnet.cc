@@ -120,7 +120,10 @@ Result<WordNet> WordNet::open(const std::optional<std::filesystem::path>& dictio
   return WordNet(std::make_shared<Cache>());
 }
 
-std::vector<std::string> WordNet::noun_base_forms(std::string_view word) const {
+namespace {
+
+// Base forms by morphstr for one part of speech, excluding the word itself.
+std::vector<std::string> base_forms(std::string_view word, int part_of_speech) {
   std::vector<std::string> forms;
   if (!usable(word)) return forms;
   std::lock_guard lock(library().mutex);
@@ -129,12 +132,19 @@ std::vector<std::string> WordNet::noun_base_forms(std::string_view word) const {
   std::string self = from_wordnet(query.text);
   // morphstr iterates through static state: the first call takes the word,
   // later calls take NULL, until it returns NULL.
-  for (char* form = morphstr(query.text, NOUN); form != nullptr; form = morphstr(nullptr, NOUN)) {
+  for (char* form = morphstr(query.text, part_of_speech); form != nullptr;
+       form = morphstr(nullptr, part_of_speech)) {
     std::string base = from_wordnet(form);
     if (base != self && std::find(forms.begin(), forms.end(), base) == forms.end()) forms.push_back(base);
   }
   return forms;
 }
+
+}  // namespace
+
+std::vector<std::string> WordNet::noun_base_forms(std::string_view word) const { return base_forms(word, NOUN); }
+
+std::vector<std::string> WordNet::verb_base_forms(std::string_view word) const { return base_forms(word, VERB); }
 
 std::vector<SynsetOffset> WordNet::noun_senses(std::string_view lemma) const {
   if (!usable(lemma)) return {};

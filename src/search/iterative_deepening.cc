@@ -21,15 +21,10 @@ IterativeDeepeningSearch::IterativeDeepeningSearch(const Domain& domain, const U
                                                    SearchOptions options)
     : domain_(domain), goal_(std::move(goal)), options_(options),
       started_(std::chrono::steady_clock::now()) {
-  std::vector<ObjectId> objects;
-  if (options_.prune_irrelevant) {
-    objects = relevant_objects(domain, universe, initial, goal_);
-    initial_ = project_state(initial, objects);
-  } else {
-    objects.resize(universe.size());
-    for (std::size_t i = 0; i < objects.size(); ++i) objects[i] = static_cast<ObjectId>(i);
-    initial_ = initial;
-  }
+  SearchScope scope = search_scope(domain, universe, initial, goal_, options_.prune_irrelevant);
+  initial_ = std::move(scope.state);
+  notes_ = std::move(scope.notes);
+  const std::vector<ObjectId>& objects = scope.objects;
   actions_ = ground_actions(domain, universe, objects, initial_);
   statistics_.relevant_objects = objects.size();
   statistics_.ground_actions = actions_.size();
@@ -134,7 +129,7 @@ PlanResult find_plan(const Domain& domain, const Universe& universe, const State
                      const Goal& goal, const SearchOptions& options) {
   IterativeDeepeningSearch search(domain, universe, initial, goal, options);
   search.run();
-  return PlanResult{search.status(), search.plan(), search.statistics()};
+  return PlanResult{search.status(), search.plan(), search.statistics(), search.notes()};
 }
 
 }  // namespace apprentice

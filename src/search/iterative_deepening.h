@@ -14,6 +14,7 @@
 #include <optional>
 #include <vector>
 
+#include "search/search.h"
 #include "world/action.h"
 #include "world/domain.h"
 #include "world/goal.h"
@@ -21,33 +22,6 @@
 #include "world/universe.h"
 
 namespace apprentice {
-
-enum class SearchStatus {
-  kInProgress,       // step() may be called again
-  kSolved,           // plan() is a shortest plan
-  kExhausted,        // no plan of length <= max_depth exists
-  kBudgetExhausted,  // the node or time budget ran out first
-};
-
-const char* to_string(SearchStatus status);
-
-struct SearchOptions {
-  int max_depth = 4;
-  // Unlimited when unset.
-  std::optional<std::uint64_t> max_nodes;
-  std::optional<std::chrono::milliseconds> max_time;
-  // See search/relevance.h for when turning this off is needed.
-  bool prune_irrelevant = true;
-};
-
-struct SearchStatistics {
-  std::uint64_t nodes_expanded = 0;   // states whose successors were generated
-  std::uint64_t nodes_generated = 0;  // successor states created
-  int depth_limit_reached = 0;        // the last depth limit tried
-  std::size_t relevant_objects = 0;
-  std::size_t ground_actions = 0;
-  double elapsed_ms = 0;
-};
 
 class IterativeDeepeningSearch {
  public:
@@ -65,6 +39,8 @@ class IterativeDeepeningSearch {
   // The plan; valid once status() is kSolved.
   const std::vector<Action>& plan() const { return plan_; }
   const SearchStatistics& statistics() const { return statistics_; }
+  // What relevance pruning did (search/relevance.h).
+  const std::vector<std::string>& notes() const { return notes_; }
 
  private:
   struct Frame {
@@ -89,15 +65,11 @@ class IterativeDeepeningSearch {
   SearchStatus status_ = SearchStatus::kInProgress;
   std::vector<Action> plan_;
   SearchStatistics statistics_;
+  std::vector<std::string> notes_;
   std::chrono::steady_clock::time_point started_;
 };
 
 // Convenience: plans from the state to the goal with the given options.
-struct PlanResult {
-  SearchStatus status = SearchStatus::kExhausted;
-  std::vector<Action> plan;
-  SearchStatistics statistics;
-};
 PlanResult find_plan(const Domain& domain, const Universe& universe, const State& initial,
                      const Goal& goal, const SearchOptions& options);
 

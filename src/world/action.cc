@@ -12,16 +12,12 @@ Action::Action(ActionSchemaId s, std::span<const ObjectId> arguments) : schema(s
   for (ObjectId a : arguments) args[arity++] = a;
 }
 
-namespace {
-
 Fact instantiate(const AtomSchema& atom, const Action& action) {
   Fact fact;
   fact.predicate = atom.predicate;
   for (std::uint8_t p : atom.parameters) fact.args[fact.arity++] = action.args[p];
   return fact;
 }
-
-}  // namespace
 
 std::vector<Literal> preconditions_of(const Domain& domain, const Action& action) {
   std::vector<Literal> out;
@@ -52,7 +48,7 @@ std::optional<std::string> why_not_applicable(const Domain& domain, const Univer
   for (std::size_t i = 0; i < action.arity; ++i) {
     TypeId type = universe.info(action.args[i]).type;
     if (!domain.is_subtype(type, schema.parameters[i].type))
-      return universe.name(action.args[i]) + " is not a " + domain.types[schema.parameters[i].type].name;
+      return universe.name(action.args[i]) + " is not a " + type_word(domain, schema.parameters[i].type);
   }
   for (const EqualitySchema& e : schema.equalities) {
     bool equal = action.args[e.left] == action.args[e.right];
@@ -112,7 +108,7 @@ Result<Action> parse_action(const Domain& domain, const Universe& universe, std:
                                                                       (term.is_list ? "list" : term.atom)));
     if (!domain.is_subtype(universe.info(*object).type, schema.parameters[i - 1].type))
       return tl::unexpected(syntax_error("action", term.position,
-                                         "expected a " + domain.types[schema.parameters[i - 1].type].name +
+                                         "expected a " + type_word(domain, schema.parameters[i - 1].type) +
                                              "; " + term.atom + " is not one"));
     args.push_back(*object);
   }

@@ -40,6 +40,10 @@ bool is_applicable(const Domain& domain, const State& state, const Action& actio
 // The successor state. The action must be applicable (checked).
 State apply(const Domain& domain, const State& state, const Action& action);
 
+// An atom of the action's schema with the action's arguments: (in ?o ?r)
+// of (put-in ketchup1 fridge1) is (in ketchup1 fridge1).
+Fact instantiate(const AtomSchema& atom, const Action& action);
+
 // The instantiated preconditions and effects of an action.
 std::vector<Literal> preconditions_of(const Domain& domain, const Action& action);
 std::vector<Fact> add_effects_of(const Domain& domain, const Action& action);

@@ -69,9 +69,9 @@ Result<Fact> fact_from_sexpr(const Domain& domain, const Universe& universe, con
     TypeId wanted = schema.parameter_types[i - 1];
     if (!domain.is_subtype(universe.info(*object).type, wanted))
       return tl::unexpected(syntax_error(source, term.position,
-                                         "expected an object of type " + domain.types[wanted].name +
+                                         "expected an object of type " + type_word(domain, wanted) +
                                              "; " + term.atom + " is a " +
-                                             domain.types[universe.info(*object).type].name));
+                                             type_word(domain, universe.info(*object).type)));
     args.push_back(*object);
   }
   return Fact(*predicate, args);

@@ -138,7 +138,7 @@ class DomainReader {
     for (std::size_t i = 1; i < section.items.size(); ++i) {
       const SExpr& p = section.items[i];
       if (!p.is_list || p.items.empty() || p.items[0].is_list)
-        return fail(p, "expected a predicate declaration such as (on ?o - item ?s - surface)");
+        return fail(p, "expected a predicate declaration such as (on ?o - item ?s - surface-place)");
       PredicateSchema schema{p.items[0].atom, {}};
       if (domain_.find_predicate(schema.name))
         return fail(p.items[0], "predicate " + schema.name + " is declared twice");

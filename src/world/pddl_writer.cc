@@ -89,10 +89,10 @@ std::string category_from_name(const std::string& name) {
 // Objects of a problem file are places if their type says so, so that
 // search (relevance pruning) treats them as it treats a scenario's places.
 ObjectKind kind_of_type(const Domain& domain, TypeId type) {
-  auto receptacle = domain.find_type("receptacle");
-  if (receptacle && domain.is_subtype(type, *receptacle)) return ObjectKind::kReceptacle;
-  auto surface = domain.find_type("surface");
-  if (surface && domain.is_subtype(type, *surface)) return ObjectKind::kSurface;
+  for (ObjectKind kind : {ObjectKind::kReceptacle, ObjectKind::kSurface}) {
+    auto kind_type = domain.find_type(type_name(kind));
+    if (kind_type && domain.is_subtype(type, *kind_type)) return kind;
+  }
   return ObjectKind::kItem;
 }
 

@@ -93,7 +93,9 @@ class ScenarioBuilder {
   Result<Scenario> build(const YAML::Node& root) {
     if (!root.IsMap()) return fail(root, "expected a mapping with name, domain, places, objects, task and intent");
     if (auto duplicate = find_duplicate_key(root)) return fail_at(duplicate->first, duplicate->second);
-    if (auto s = check_keys(root, {"name", "domain", "location", "reference", "places", "objects", "task", "intent"}); !s)
+    if (auto s = check_keys(root, {"name", "domain", "location", "reference", "places", "objects", "facts", "task",
+                                   "intent"});
+        !s)
       return tl::unexpected(s.error());
     Scenario scenario;
     scenario.source = source_;
@@ -117,6 +119,7 @@ class ScenarioBuilder {
     if (auto s = load_domain(root, scenario); !s) return tl::unexpected(s.error());
     if (auto s = read_places(root, scenario); !s) return tl::unexpected(s.error());
     if (auto s = read_objects(root, scenario); !s) return tl::unexpected(s.error());
+    if (auto s = read_facts(root, scenario); !s) return tl::unexpected(s.error());
     if (auto s = read_task(root, scenario); !s) return tl::unexpected(s.error());
     if (auto s = read_intent(root, scenario); !s) return tl::unexpected(s.error());
     scenario.world.universe = std::make_shared<const Universe>(std::move(universe_));
@@ -207,10 +210,10 @@ class ScenarioBuilder {
     }
     auto vocabulary = Vocabulary::resolve(*domain);
     if (!vocabulary) return fail(root["domain"], vocabulary.error().message);
-    for (const char* type : {"item", "receptacle", "surface"}) {
-      auto id = domain->find_type(type);
-      if (!id) return fail(root["domain"], std::string("the domain must declare the type ") + type);
-      types_[type] = *id;
+    for (ObjectKind kind : {ObjectKind::kItem, ObjectKind::kReceptacle, ObjectKind::kSurface}) {
+      auto id = domain->find_type(type_name(kind));
+      if (!id) return fail(root["domain"], "the domain must declare the type " + std::string(type_name(kind)));
+      types_[kind] = *id;
     }
     scenario.world.vocabulary = *vocabulary;
     scenario.world.domain = std::make_shared<const Domain>(std::move(*domain));
@@ -260,8 +263,7 @@ class ScenarioBuilder {
       auto properties = optional_properties(p);
       if (!properties) return tl::unexpected(properties.error());
       auto added = add_object(p, ObjectInfo{"", *category, *kind,
-                                            types_[*kind == ObjectKind::kSurface ? "surface" : "receptacle"],
-                                            std::move(*properties)});
+                                            types_[*kind], std::move(*properties)});
       if (!added) return tl::unexpected(added.error());
       ObjectId id = *added;
       if (auto s = check_told_apart(p, id); !s) return s;
@@ -320,12 +322,37 @@ class ScenarioBuilder {
       if (!properties) return tl::unexpected(properties.error());
       bool on_surface = universe_.info(*place).kind == ObjectKind::kSurface;
       for (int i = 0; i < count; ++i) {
-        auto added = add_object(o, ObjectInfo{"", *category, ObjectKind::kItem, types_["item"], *properties});
+        auto added = add_object(o, ObjectInfo{"", *category, ObjectKind::kItem, types_[ObjectKind::kItem], *properties});
         if (!added) return tl::unexpected(added.error());
         ObjectId id = *added;
         object_marks_[id] = o.Mark();
         facts_.push_back(Fact(vocabulary_.grabbable, {id}));
         facts_.push_back(Fact(on_surface ? vocabulary_.on : vocabulary_.in, {id, *place}));
+      }
+    }
+    return {};
+  }
+
+  // facts: further initial facts, in PDDL, over the predicates a domain adds
+  // to the kitchen's (stacked dishes, a drawer inside a cupboard). Where
+  // places and objects are, and doors, come from places and objects only.
+  Status read_facts(const YAML::Node& root, Scenario& scenario) {
+    const YAML::Node facts = root["facts"];
+    if (!facts) return {};
+    if (!facts.IsSequence()) return fail(facts, "expected 'facts': a list such as ['(stacked bowl1 plate1)']");
+    const Domain& domain = *scenario.world.domain;
+    const Vocabulary& v = vocabulary_;
+    const PredicateId own[] = {v.on, v.in, v.holding, v.handempty, v.closed, v.grabbable, v.openable, v.receptacle, v.surface};
+    for (const YAML::Node& f : facts) {
+      if (!f.IsScalar()) return fail(f, "expected a fact such as (stacked bowl1 plate1)");
+      auto parsed = parse_goal(domain, universe_, f.Scalar());
+      if (!parsed) return fail(f, parsed.error().message);
+      for (const Literal& l : parsed->literals) {
+        if (!l.positive) return fail(f, "expected facts that hold, not (not ...)");
+        if (std::find(std::begin(own), std::end(own), l.fact.predicate) != std::end(own))
+          return fail(f, "(" + domain.predicates[l.fact.predicate].name +
+                             " ...) comes from places and objects, not from facts");
+        facts_.push_back(l.fact);
       }
     }
     return {};
@@ -431,7 +458,7 @@ class ScenarioBuilder {
   Universe universe_;
   std::vector<Fact> facts_;
   Vocabulary vocabulary_;
-  std::map<std::string, TypeId> types_;
+  std::map<ObjectKind, TypeId> types_;
   std::map<std::string, int> counters_;
   std::map<ObjectId, YAML::Mark> object_marks_;  // where each item was declared
 };

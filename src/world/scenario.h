@@ -23,6 +23,8 @@
 namespace apprentice {
 
 // What the robot perceives: the action model, the objects and the state.
+// A value: copies share the immutable domain and universe and copy the
+// state, so each Simulator works on its own copy.
 struct World {
   std::shared_ptr<const Domain> domain;
   Vocabulary vocabulary;

@@ -20,6 +20,21 @@ std::optional<ObjectKind> parse_object_kind(std::string_view text) {
   return std::nullopt;
 }
 
+std::string_view type_name(ObjectKind kind) {
+  switch (kind) {
+    case ObjectKind::kItem: return "item";
+    case ObjectKind::kReceptacle: return "receptacle-place";
+    case ObjectKind::kSurface: return "surface-place";
+  }
+  return "item";
+}
+
+std::string type_word(const Domain& domain, TypeId type) {
+  for (ObjectKind kind : {ObjectKind::kReceptacle, ObjectKind::kSurface})
+    if (domain.types[type].name == type_name(kind)) return std::string(to_string(kind));
+  return domain.types[type].name;
+}
+
 ObjectId Universe::add(ObjectInfo info) {
   auto id = static_cast<ObjectId>(objects_.size());
   auto [it, inserted] = by_id_.emplace(info.id, id);

@@ -19,6 +19,14 @@ enum class ObjectKind { kItem, kReceptacle, kSurface };
 
 std::string_view to_string(ObjectKind kind);
 std::optional<ObjectKind> parse_object_kind(std::string_view text);
+// The PDDL type a scenario gives objects of each kind: "item",
+// "receptacle-place", "surface-place". (The types are not called
+// "receptacle" and "surface" because those name predicates, and PDDL
+// tools warn when a type and a predicate share a name.)
+std::string_view type_name(ObjectKind kind);
+// How messages name a type: the kind's word ("receptacle", "surface") for
+// the kinds' types, otherwise the type's own name.
+std::string type_word(const Domain& domain, TypeId type);
 
 struct ObjectInfo {
   std::string id;        // "ketchup1"

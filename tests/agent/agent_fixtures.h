@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -40,6 +41,45 @@ class RecordingInstructor final : public Instructor {
  private:
   Instructor& inner_;
 };
+
+// The goals of tests/agent/data/two-objects.yaml in the script's words.
+inline constexpr const char* kKetchupGoal =
+    "If the object is a ketchup then the goal is that the object is in the fridge and the fridge is closed.";
+inline constexpr const char* kPaperPlateGoal =
+    "If the object is a paper-plate then the goal is that the object is in the garbage.";
+
+// An instructor whose replies come from a function of the question (what
+// a program or a person would answer); nullopt ends the session as end of
+// input does. `person` says whether the agent must never give up on it.
+class CallbackInstructor final : public Instructor {
+ public:
+  using Reply = std::function<std::optional<std::string>(const Question&, const World&)>;
+  CallbackInstructor(Reply reply, bool person) : reply_(std::move(reply)), person_(person) {}
+  Result<std::string> answer(const Question& question, const World& world) override {
+    questions.push_back(question);
+    auto reply = reply_(question, world);
+    if (!reply) return make_error(ErrorCode::kCancelled, "end of input");
+    return *reply;
+  }
+  void hear(std::string_view statement) override { heard.emplace_back(statement); }
+  bool is_person() const override { return person_; }
+
+  std::vector<Question> questions;
+  std::vector<std::string> heard;
+
+ private:
+  Reply reply_;
+  bool person_;
+};
+
+// Replies from a list, in order, then end of input.
+inline CallbackInstructor::Reply replies(std::vector<std::string> lines) {
+  auto next = std::make_shared<std::size_t>(0);
+  return [lines = std::move(lines), next](const Question&, const World&) -> std::optional<std::string> {
+    if (*next >= lines.size()) return std::nullopt;
+    return lines[(*next)++];
+  };
+}
 
 // One learning run from empty knowledge with the simulated instructor.
 struct LearningRun {

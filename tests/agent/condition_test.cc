@@ -48,6 +48,16 @@ TEST(ParseCondition, ThePapersSixConditionsParseInTableOrder) {
   for (const std::string& name : names) EXPECT_TRUE(parse_condition(name).has_value()) << name;
 }
 
+TEST(ParseCondition, SearchWithoutADepthIsUnboundedSearch) {
+  auto condition = parse_condition("inst+search");
+  ASSERT_TRUE(condition.has_value()) << condition.error().describe();
+  EXPECT_TRUE(condition->instruction);
+  EXPECT_TRUE(condition->unbounded_search);
+  EXPECT_EQ(condition->search_depth, 0);
+  EXPECT_FALSE(parse_condition("inst+search4")->unbounded_search);
+  EXPECT_TRUE(parse_condition("search+llm")->unbounded_search);
+}
+
 struct Bad {
   const char* name;
   const char* message;  // a part of the error message
@@ -68,7 +78,6 @@ INSTANTIATE_TEST_SUITE_P(
                       Bad{"search4", "nothing can supply goals"},       // no source of goals
                       Bad{"search0+inst", "depth from 1 to 16"},
                       Bad{"search17+inst", "depth from 1 to 16"},
-                      Bad{"search+inst", "depth from 1 to 16"},
                       Bad{"searchx+inst", "depth from 1 to 16"},
                       Bad{"search4x+inst", "depth from 1 to 16"},
                       Bad{"search-1+inst", "depth from 1 to 16"},

@@ -69,6 +69,10 @@ class Process {
     }
     return true;
   }
+  // Ctrl-C: sends SIGINT, as a terminal does to the foreground process.
+  void interrupt() {
+    if (pid_ > 0 && !waited_) kill(pid_, SIGINT);
+  }
   // Ctrl-D: the end of the person's input.
   void close_stdin() {
     if (stdin_ >= 0) close(stdin_);

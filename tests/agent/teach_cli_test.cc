@@ -17,12 +17,15 @@ namespace {
 
 namespace fs = std::filesystem;
 using testing::Process;
+using ::testing::EndsWith;
 using ::testing::HasSubstr;
 using ::testing::Not;
 
-const char* const kKetchupGoal =
-    "If the object is a ketchup then the goal is that the object is in the fridge and the fridge is closed.";
-const char* const kPaperPlateGoal = "If the object is a paper-plate then the goal is that the object is in the garbage.";
+using testing::kKetchupGoal;
+using testing::kPaperPlateGoal;
+const char* const kBanner =
+    "Teaching in two-objects (inst+search4). Answer in your own words; type help at any question. Ctrl-D or quit "
+    "stops and keeps what you taught.\n";
 
 // What the instructor says for the two-object kitchen, in order.
 std::vector<std::string> full_script() {
@@ -36,6 +39,12 @@ std::vector<std::string> full_script() {
           "You are done."};
 }
 
+std::string lines(const std::vector<std::string>& script) {
+  std::string text;
+  for (const std::string& line : script) text += line + "\n";
+  return text;
+}
+
 // Each test has a fresh directory of its own (testing::ScratchTest::dir_),
 // so that runs in parallel never share a store.
 class Teach : public testing::ScratchTest {
@@ -45,6 +54,7 @@ class Teach : public testing::ScratchTest {
             "--condition", condition};
   }
   fs::path knowledge() const { return dir_ / "knowledge.sqlite"; }
+  std::string kept() const { return "What you taught me is kept in " + knowledge().string() + ".\n"; }
 
   Knowledge stored() const {
     Scenario scenario = testing::load_or_die(scenario_);
@@ -59,46 +69,67 @@ class Teach : public testing::ScratchTest {
   fs::path scenario_ = testing::source_path("tests/agent/data/two-objects.yaml");
 };
 
-TEST_F(Teach, LearnsTheTaskFromAScriptOnStdin) {
+TEST_F(Teach, LearnsTheTaskFromAScriptOnStdinSayingWhatItUnderstoodAndDid) {
   Process teach(teach_args());
   ASSERT_TRUE(teach.started());
-  std::string script;
-  for (const std::string& line : full_script()) script += line + "\n";
-  ASSERT_TRUE(teach.write(script));
+  ASSERT_TRUE(teach.write(lines(full_script())));
   int code = teach.wait();
   EXPECT_EQ(code, 0) << teach.out() << teach.err();
   EXPECT_EQ(teach.out(),
-            "Teaching in two-objects (inst+search4). Type 'status' to see the world, Ctrl-D to stop.\n"
-            "Agent: What task should I learn?\n"
-            "Instructor: Tidy kitchen.\n"
-            "Agent: What is the next goal or subtask of tidy?\n"
-            "Instructor: Repeat the following tasks while an object is on the table.\n"
-            "Agent: What is the next goal or subtask of tidy?\n"
-            "Instructor: Clear an object that is on the table.\n"
-            "Agent: What is the next goal or subtask of clear?\n"
-            "Instructor: " + std::string(kKetchupGoal) + "\n"
-            "Agent: What is the next goal or subtask of clear?\n"
-            "Instructor: You are done.\n"
-            "Agent: What is the next goal or subtask of tidy?\n"
-            "Instructor: Repeat.\n"
-            "Agent: What is the next goal or subtask of clear?\n"
-            "Instructor: " + std::string(kPaperPlateGoal) + "\n"
-            "Agent: What is the next goal or subtask of tidy?\n"
-            "Instructor: You are done.\n"
-            "The task is learned. 3 of 3 goal assertions hold; 8 instructions. Knowledge is in " +
-                knowledge().string() + ".\n");
+            std::string(kBanner) +
+                "Agent: What task should I learn?\n"
+                "Instructor: Tidy kitchen.\n"
+                "Agent: What should I do first to tidy the kitchen?\n"
+                "Instructor: Repeat the following tasks while an object is on the table.\n"
+                "Agent: So I repeat the next steps while something is on the table.\n"
+                "Agent: What should I do next to tidy the kitchen?\n"
+                "Instructor: Clear an object that is on the table.\n"
+                "Agent: So I clear one thing on the table at a time.\n"
+                "Agent: Where should the ketchup on the table go?\n"
+                "Instructor: " + kKetchupGoal + "\n"
+                "Agent: So the ketchup goes in the fridge, and the fridge ends closed.\n"
+                "Agent: I opened the fridge, put the ketchup in it, and closed it.\n"
+                "Agent: Is there more to clear on the table, or is that all?\n"
+                "Instructor: You are done.\n"
+                "Agent: So that is all there is to clear for one thing.\n"
+                "Agent: What should I do next to tidy the kitchen?\n"
+                "Instructor: Repeat.\n"
+                "Agent: So I clear everything else on the table the same way.\n"
+                "Agent: Where should the paper plate on the table go?\n"
+                "Instructor: " + kPaperPlateGoal + "\n"
+                "Agent: So the paper plate goes in the garbage.\n"
+                "Agent: I put the paper plate in the garbage.\n"
+                "Agent: There is nothing left on the table.\n"
+                "Agent: What should I do next to tidy the kitchen?\n"
+                "Instructor: You are done.\n"
+                "Agent: So the task is done.\n"
+                "The task is learned: 3 of 3 goal assertions hold, after 8 instructions.\n" + kept());
   Knowledge knowledge = stored();
   EXPECT_EQ(knowledge.goals.size(), 2u);
   ASSERT_EQ(knowledge.tasks.size(), 1u);
   EXPECT_EQ(knowledge.tasks[0].name, "tidy kitchen");
 }
 
-TEST_F(Teach, TheInstructorTeachesActionsWithoutSearch) {
+TEST_F(Teach, QuietKeepsOnlyTheQuestionsAndTheSummary) {
+  std::vector<std::string> args = teach_args();
+  args.push_back("--quiet");
+  Process teach(args);
+  ASSERT_TRUE(teach.write(lines(full_script())));
+  EXPECT_EQ(teach.wait(), 0) << teach.out() << teach.err();
+  EXPECT_THAT(teach.out(), Not(HasSubstr("Teaching in")));
+  EXPECT_THAT(teach.out(), Not(HasSubstr("Agent: So ")));
+  EXPECT_THAT(teach.out(), Not(HasSubstr("Agent: I opened")));
+  EXPECT_THAT(teach.out(), HasSubstr("Agent: Where should the ketchup on the table go?\nInstructor: "));
+  EXPECT_THAT(teach.out(), EndsWith("The task is learned: 3 of 3 goal assertions hold, after 8 instructions.\n" + kept()));
+}
+
+TEST_F(Teach, TheInstructorTeachesActionsWithoutSearchAndRefusalsArePlainEnglish) {
   Process teach(teach_args("instruction"));
   std::vector<std::string> script = {"Tidy kitchen.",
                                      "Repeat the following tasks while an object is on the table.",
                                      "Clear an object that is on the table.",
                                      kKetchupGoal,
+                                     "Put the ketchup in the fridge.",  // not holding it yet
                                      "Open the fridge.",
                                      "Pick up the ketchup.",
                                      "Put the ketchup in the fridge.",
@@ -109,24 +140,102 @@ TEST_F(Teach, TheInstructorTeachesActionsWithoutSearch) {
                                      "Pick up the paper-plate.",
                                      "Put the paper-plate in the garbage.",
                                      "You are done."};
-  for (const std::string& line : script) ASSERT_TRUE(teach.write(line + "\n"));
+  ASSERT_TRUE(teach.write(lines(script)));
   EXPECT_EQ(teach.wait(), 0) << teach.out() << teach.err();
-  EXPECT_THAT(teach.out(), HasSubstr("Agent: What do I do next for clear?\nInstructor: Open the fridge.\n"));
-  EXPECT_THAT(teach.out(), HasSubstr("The task is learned. 3 of 3 goal assertions hold; 14 instructions."));
+  EXPECT_THAT(teach.out(), HasSubstr("Agent: What should I do next so that the ketchup is in the fridge and the fridge "
+                                     "is closed?\nInstructor: Put the ketchup in the fridge.\n"
+                                     "Agent: I am not holding the ketchup, so I cannot put it in the fridge.\n"));
+  EXPECT_THAT(teach.out(), HasSubstr("Instructor: Close the fridge.\n"
+                                     "Agent: I opened the fridge, put the ketchup in it, and closed it.\n"));
+  EXPECT_THAT(teach.out(), HasSubstr("3 of 3 goal assertions hold, after 15 instructions."));
 }
 
-TEST_F(Teach, StatusShowsTheWorldAndIsNotAnInstruction) {
+TEST_F(Teach, HelpAndStatusAnswerThePersonAndAreNotInstructions) {
   Process teach(teach_args());
   std::vector<std::string> script = full_script();
-  script.insert(script.begin() + 3, "status");
-  for (const std::string& line : script) ASSERT_TRUE(teach.write(line + "\n"));
+  script.insert(script.begin() + 3, {"help", "status"});
+  ASSERT_TRUE(teach.write(lines(script)));
   EXPECT_EQ(teach.wait(), 0) << teach.out() << teach.err();
-  EXPECT_THAT(teach.out(), HasSubstr("Instructor: status\nWorld (kitchen):\n  fridge1 is closed\n"
-                                     "  on table1: ketchup1 paper-plate1\n"));
-  EXPECT_THAT(teach.out(), HasSubstr("3 of 3 goal assertions hold; 8 instructions."));
+  const std::string question = "Agent: Where should the ketchup on the table go?\n";
+  EXPECT_THAT(teach.out(), HasSubstr(question + "Instructor: help\n"
+                                     "Agent: I asked: Where should the ketchup on the table go?\n"
+                                     "Agent: Tell me where it goes, and anything else that should be so when it is put "
+                                     "away, for example "));
+  EXPECT_THAT(teach.out(), HasSubstr("Agent: You can also type: help; status (what I see and what I have learned); undo "
+                                     "(forget what your last answer taught me); forget <kind of object>"));
+  // After help, the question comes again.
+  EXPECT_THAT(teach.out(), HasSubstr(".\n" + question + "Instructor: status\n"
+                                     "Agent: I see this: the fridge is closed. On the table: the ketchup and the paper "
+                                     "plate.\n"
+                                     "Agent: I am learning to tidy the kitchen; now I clear what is on the table, asking "
+                                     "about the ketchup. So far I know 0 goals and 0 rules, after 3 instructions this "
+                                     "session.\n" +
+                                     question + "Instructor: " + kKetchupGoal + "\n"));
+  EXPECT_THAT(teach.out(), HasSubstr("3 of 3 goal assertions hold, after 8 instructions."));
 }
 
-TEST_F(Teach, CtrlDMidWayStopsCleanlyAndKeepsTheGoalsGivenSoFar) {
+TEST_F(Teach, UndoForgetsTheLastGoalInMemoryAndStoreAndPutsTheWorldBack) {
+  Process teach(teach_args());
+  const char* wrong = "If the object is a ketchup then the goal is that the object is in the garbage.";
+  std::vector<std::string> script = {"Tidy kitchen.",
+                                     "Repeat the following tasks while an object is on the table.",
+                                     "Clear an object that is on the table.",
+                                     wrong,
+                                     "undo",
+                                     kKetchupGoal,
+                                     "You are done.",
+                                     "Repeat.",
+                                     kPaperPlateGoal,
+                                     "You are done."};
+  ASSERT_TRUE(teach.write(lines(script)));
+  EXPECT_EQ(teach.wait(), 0) << teach.out() << teach.err();
+  EXPECT_THAT(teach.out(),
+              HasSubstr("Agent: I put the ketchup in the garbage.\n"
+                        "Agent: Is there more to clear on the table, or is that all?\n"
+                        "Instructor: undo\n"
+                        "Agent: I forgot what you told me last: \"" + std::string(wrong) + "\"\n"
+                        "Agent: To put things back as they were, I took the ketchup out of the garbage and put it on "
+                        "the table.\n"
+                        "Agent: Where should the ketchup on the table go?\n"));
+  // "undo" is not an instruction; the wrong goal was one.
+  EXPECT_THAT(teach.out(), HasSubstr("3 of 3 goal assertions hold, after 9 instructions."));
+  Knowledge knowledge = stored();
+  ASSERT_EQ(knowledge.goals.size(), 2u);
+  for (const GoalKnowledge& g : knowledge.goals.all()) {
+    if (g.key.category == "ketchup") {
+      EXPECT_THAT(g.provenance.source, HasSubstr("fridge"));
+    }
+  }
+}
+
+TEST_F(Teach, UndoOfAStepOfTheTaskStructureAsksForItAgain) {
+  Process teach(teach_args());
+  std::vector<std::string> script = full_script();
+  script.insert(script.begin() + 3, {"undo", "Clear an object that is on the table."});
+  ASSERT_TRUE(teach.write(lines(script)));
+  EXPECT_EQ(teach.wait(), 0) << teach.out() << teach.err();
+  EXPECT_THAT(teach.out(), HasSubstr("Agent: Where should the ketchup on the table go?\n"
+                                     "Instructor: undo\n"
+                                     "Agent: I forgot what you told me last: \"Clear an object that is on the table.\"\n"
+                                     "Agent: What should I do next to tidy the kitchen?\n"));
+  EXPECT_THAT(teach.out(), HasSubstr("3 of 3 goal assertions hold, after 9 instructions."));
+  EXPECT_EQ(stored().tasks.at(0).subtasks.size(), 1u);
+}
+
+TEST_F(Teach, ForgetAKindOfObjectForgetsWhereItGoes) {
+  // Teach the ketchup's goal, forget it, and end: the store no longer has it.
+  Process teach(teach_args());
+  std::vector<std::string> script = {full_script()[0], full_script()[1], full_script()[2], kKetchupGoal,
+                                     "forget ketchup", "forget zebra", "quit"};
+  ASSERT_TRUE(teach.write(lines(script)));
+  EXPECT_EQ(teach.wait(), 1) << teach.out() << teach.err();
+  EXPECT_THAT(teach.out(), HasSubstr("Agent: I forgot where a ketchup goes; I will ask when I meet one.\n"));
+  EXPECT_THAT(teach.out(), HasSubstr("Agent: I did not know where zebra goes, so there is nothing to forget.\n"));
+  EXPECT_THAT(teach.out(), HasSubstr("Stopped: 2 of 3 goal assertions hold, after 4 instructions.\n"));
+  EXPECT_EQ(stored().goals.size(), 0u);
+}
+
+TEST_F(Teach, CtrlDMidWayStopsCleanlyAndTeachingAgainAsksOnlyWhatIsNew) {
   Process teach(teach_args());
   std::vector<std::string> script = full_script();
   // Answer up to the ketchup's goal, wait for the agent to do it and ask
@@ -137,18 +246,16 @@ TEST_F(Teach, CtrlDMidWayStopsCleanlyAndKeepsTheGoalsGivenSoFar) {
     seen = teach.out().rfind("Instructor: ") + 1;
     ASSERT_TRUE(teach.write(script[i] + "\n"));
   }
-  ASSERT_TRUE(teach.read_until(kKetchupGoal)) << teach.out() << teach.err();
-  ASSERT_TRUE(teach.read_until("Agent: What is the next goal or subtask of clear?\nInstructor: ",
-                               teach.out().find(kKetchupGoal)))
+  ASSERT_TRUE(teach.read_until("Agent: Is there more to clear on the table, or is that all?\nInstructor: "))
       << teach.out() << teach.err();
   teach.close_stdin();
   int code = teach.wait();
   EXPECT_EQ(code, 1) << "the goal was not reached: " << teach.out() << teach.err();
-  // A clean message on its own line, no error.
-  EXPECT_THAT(teach.out(),
-              ::testing::EndsWith("Agent: What is the next goal or subtask of clear?\nInstructor: \n"
-                                  "Stopped. 2 of 3 goal assertions hold; 4 instructions. Knowledge is in " +
-                                  knowledge().string() + ".\n"));
+  // A clean message on its own line, naming what is not done, no error.
+  EXPECT_THAT(teach.out(), EndsWith("Agent: Is there more to clear on the table, or is that all?\nInstructor: \n"
+                                    "Stopped: 2 of 3 goal assertions hold, after 4 instructions.\n"
+                                    "Not done: the paper plate should be in the garbage.\n" +
+                                    kept()));
   EXPECT_THAT(teach.err(), Not(HasSubstr("rror")));
   // The ketchup's goal and the task's structure were kept.
   Knowledge knowledge = stored();
@@ -157,35 +264,89 @@ TEST_F(Teach, CtrlDMidWayStopsCleanlyAndKeepsTheGoalsGivenSoFar) {
   ASSERT_EQ(knowledge.tasks.size(), 1u);
   EXPECT_EQ(knowledge.tasks[0].subtasks.size(), 1u);
 
-  // Teaching again with that knowledge: the agent does not ask for the
-  // ketchup's goal again.
+  // Teaching again with that knowledge: the agent says it knows the task,
+  // does it, and asks only about the paper plate and what comes next.
   Process again(teach_args());
-  std::vector<std::string> rest = {script[0], script[1], script[2], "You are done.", "Repeat.", kPaperPlateGoal,
-                                   "You are done."};
-  for (const std::string& line : rest) ASSERT_TRUE(again.write(line + "\n"));
+  ASSERT_TRUE(again.write(lines({"Tidy kitchen.", kPaperPlateGoal, "You are done."})));
   EXPECT_EQ(again.wait(), 0) << again.out() << again.err();
-  EXPECT_THAT(again.out(), HasSubstr("The task is learned. 3 of 3 goal assertions hold; 7 instructions."));
+  EXPECT_THAT(again.out(), HasSubstr("Instructor: Tidy kitchen.\n"
+                                     "Agent: I know how to tidy the kitchen; I will ask only about what is new.\n"
+                                     "Agent: Next, the ketchup on the table: it goes in the fridge, and the fridge ends "
+                                     "closed.\n"
+                                     "Agent: I opened the fridge, put the ketchup in it, and closed it.\n"
+                                     "Agent: Where should the paper plate on the table go?\n"));
+  EXPECT_THAT(again.out(), HasSubstr("Agent: What should I do next to tidy the kitchen?\n"));
+  EXPECT_THAT(again.out(), HasSubstr("The task is learned: 3 of 3 goal assertions hold, after 3 instructions."));
   EXPECT_THAT(again.out(), Not(HasSubstr(kKetchupGoal)));
   EXPECT_EQ(stored().goals.size(), 2u);
 }
 
-TEST_F(Teach, EndOfInputBeforeAnythingIsStillClean) {
+TEST_F(Teach, EndOfInputBeforeAnythingIsStillCleanAndNamesWhatIsNotDone) {
   // Only the fridge's door holds already (it starts closed).
   Process teach(teach_args());
   EXPECT_EQ(teach.wait(), 1);
-  EXPECT_THAT(teach.out(), ::testing::EndsWith("Instructor: \nStopped. 1 of 3 goal assertions hold; 0 instructions. "
-                                               "Knowledge is in " + knowledge().string() + ".\n"));
+  EXPECT_THAT(teach.out(), EndsWith("Instructor: \nStopped: 1 of 3 goal assertions holds, after 0 instructions.\n"
+                                    "Not done: the ketchup should be in the fridge.\n"
+                                    "Not done: the paper plate should be in the garbage.\n" +
+                                    kept()));
 }
 
-TEST_F(Teach, RepliesTheAgentCannotUseAreSaidSo) {
+TEST_F(Teach, WithoutAStoreItSaysNothingWasSavedAndHowToKeepIt) {
+  Process teach({APPRENTICE_BINARY, "teach", "--scenario", scenario_.string()});
+  ASSERT_TRUE(teach.write(lines(full_script())));
+  EXPECT_EQ(teach.wait(), 0) << teach.out() << teach.err();
+  EXPECT_THAT(teach.out(), EndsWith("Nothing was saved. To keep what you teach, give a knowledge store: teach --scenario " +
+                                    scenario_.string() + " --knowledge FILE (for example kitchen.sqlite).\n"));
+}
+
+TEST_F(Teach, CtrlCSaysWhatWasKeptAndExits130) {
+  Process teach(teach_args());
+  ASSERT_TRUE(teach.write(lines({"Tidy kitchen.", "Repeat the following tasks while an object is on the table.",
+                                 "Clear an object that is on the table.", kKetchupGoal})));
+  ASSERT_TRUE(teach.read_until("Agent: Is there more to clear on the table, or is that all?\nInstructor: "))
+      << teach.out() << teach.err();
+  teach.interrupt();
+  EXPECT_EQ(teach.wait(), 130) << teach.out() << teach.err();
+  EXPECT_THAT(teach.out(), EndsWith("or is that all?\nInstructor: \nInterrupted. " + kept()));
+  EXPECT_EQ(teach.err(), "");
+  EXPECT_EQ(stored().goals.size(), 1u);
+}
+
+TEST_F(Teach, RepliesTheAgentCannotUseAreSaidSoWithExamplesAndAskedAgain) {
   Process teach(teach_args());
   std::vector<std::string> script = full_script();
   script.insert(script.begin() + 3, "If the object is a ketchup then the goal is that the object is in the moon.");
-  for (const std::string& line : script) ASSERT_TRUE(teach.write(line + "\n"));
+  ASSERT_TRUE(teach.write(lines(script)));
   EXPECT_EQ(teach.wait(), 0) << teach.out() << teach.err();
-  // The agent said why and asked again; the unusable reply still counts.
-  EXPECT_THAT(teach.out(), HasSubstr("in the moon.\nAgent: "));
-  EXPECT_THAT(teach.out(), HasSubstr("3 of 3 goal assertions hold; 9 instructions."));
+  // The agent said why, with replies that would work, and asked again; the
+  // unusable reply still counts.
+  EXPECT_THAT(teach.out(), ::testing::ContainsRegex("in the moon\\.\nAgent: [^\n]+ You could say, for example, \"[^\n]+\n"
+                                                    "Agent: Where should the ketchup on the table go\\?\n"));
+  EXPECT_THAT(teach.out(), HasSubstr("3 of 3 goal assertions hold, after 9 instructions."));
+}
+
+TEST_F(Teach, APersonIsNeverGivenUpOn) {
+  // Many more unusable replies than a program is allowed: the agent keeps
+  // asking, and the task is still learned.
+  Process teach(teach_args());
+  std::vector<std::string> script = full_script();
+  for (int i = 0; i < 6; ++i) script.insert(script.begin() + 3, "blah blah");
+  ASSERT_TRUE(teach.write(lines(script)));
+  EXPECT_EQ(teach.wait(), 0) << teach.out() << teach.err();
+  EXPECT_THAT(teach.out(), HasSubstr("3 of 3 goal assertions hold, after 14 instructions."));
+}
+
+TEST_F(Teach, AGoalAboutAnotherObjectIsAskedBackNotStored) {
+  Process teach(teach_args());
+  std::vector<std::string> script = full_script();
+  script.insert(script.begin() + 3, "the goal is that the paper-plate is in the garbage.");
+  ASSERT_TRUE(teach.write(lines(script)));
+  EXPECT_EQ(teach.wait(), 0) << teach.out() << teach.err();
+  EXPECT_THAT(teach.out(), HasSubstr("Agent: Where should the ketchup on the table go?\n"
+                                     "Instructor: the goal is that the paper-plate is in the garbage.\n"
+                                     "Agent: That says what becomes of the paper plate, but I asked about the ketchup on "
+                                     "the table."));
+  EXPECT_THAT(teach.out(), HasSubstr("3 of 3 goal assertions hold, after 9 instructions."));
 }
 
 }  // namespace

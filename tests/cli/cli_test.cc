@@ -74,7 +74,7 @@ TEST_F(Cli, PlanWithATinyNodeBudgetStopsAndExitsOne) {
 }
 
 TEST_F(Cli, PlanJson) {
-  Invocation r = run({"plan", "--scenario", tidy_kitchen(), "--goal", kKetchupGoal, "--json"});
+  Invocation r = run({"plan", "--scenario", tidy_kitchen(), "--goal", kKetchupGoal, "--json", "--depth", "4"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   auto json = nlohmann::json::parse(r.out, nullptr, false);
   ASSERT_FALSE(json.is_discarded()) << r.out;
@@ -83,8 +83,92 @@ TEST_F(Cli, PlanJson) {
                                           "(close fridge1)"}));
   EXPECT_GT(json["nodes_expanded"].get<int>(), 0);
   EXPECT_EQ(json["depth_limit"], 4);
+  EXPECT_EQ(json["planner"], "iterative-deepening");
   EXPECT_EQ(json["relevant_objects"], 12);
   EXPECT_TRUE(json["elapsed_ms"].is_number());
+}
+
+TEST_F(Cli, PlanWithoutDepthUsesGreedyBestFirstSearch) {
+  Invocation r = run({"plan", "--scenario", tidy_kitchen(), "--goal", kKetchupGoal, "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  auto json = nlohmann::json::parse(r.out, nullptr, false);
+  ASSERT_FALSE(json.is_discarded()) << r.out;
+  EXPECT_EQ(json["planner"], "greedy-best-first");
+  EXPECT_EQ(json["plan"].size(), 4u);
+  EXPECT_FALSE(json.contains("depth_limit"));
+  EXPECT_EQ(json["initial_heuristic"], 3);
+  EXPECT_EQ(json["relevant_objects"], 12);
+  EXPECT_THAT(json["relevance"][0].get<std::string>(), HasSubstr("12 of 41 objects can matter to the goal"));
+}
+
+TEST_F(Cli, PlanTheWholeIntent) {
+  Invocation r = run({"plan", "--scenario", tidy_kitchen(), "--goal", "intent"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::vector<std::string> lines = lines_of(r.out);
+  ASSERT_FALSE(lines.empty());
+  EXPECT_THAT(lines.back(), StartsWith(";; status solved, "));
+  EXPECT_GE(lines.size() - 1, 70u);  // the optimum
+  EXPECT_LE(lines.size() - 1, 77u);
+  // export-pddl writes the same goal: 35 assertions.
+  Invocation e = run({"export-pddl", "--scenario", tidy_kitchen(), "--goal", "intent", "--out", dir_.string()});
+  ASSERT_EQ(e.exit_code, 0) << e.err;
+  auto domain = read_domain_file(dir_ / "domain.pddl");
+  ASSERT_TRUE(domain.has_value()) << domain.error().describe();
+  auto problem = parse_problem(*domain, read_file(dir_ / "problem.pddl"), "problem.pddl");
+  ASSERT_TRUE(problem.has_value()) << problem.error().describe();
+  EXPECT_EQ(problem->goal.literals.size(), 35u);
+}
+
+TEST_F(Cli, PlanLimitsStopTheSearchAndExitOne) {
+  // Unsatisfiable, and the relaxation cannot tell: unpruned search would run for long.
+  const char* impossible = "(and (in ketchup1 fridge1) (in ketchup1 pantry1))";
+  Invocation timed = run({"plan", "--scenario", tidy_kitchen(), "--goal", impossible, "--no-pruning", "--json",
+                          "--time-limit", "0.2"});
+  EXPECT_EQ(timed.exit_code, 1);
+  EXPECT_EQ(nlohmann::json::parse(timed.out)["status"], "budget-exhausted");
+  Invocation counted = run({"plan", "--scenario", tidy_kitchen(), "--goal", impossible, "--no-pruning", "--json",
+                            "--node-limit", "50"});
+  EXPECT_EQ(counted.exit_code, 1);
+  auto json = nlohmann::json::parse(counted.out);
+  EXPECT_EQ(json["status"], "budget-exhausted");
+  EXPECT_EQ(json["nodes_expanded"], 50);
+  EXPECT_EQ(run({"plan", "--scenario", tidy_kitchen(), "--goal", kKetchupGoal, "--time-limit", "0"}).exit_code, 2);
+  // With pruning the same goal is proved impossible: exhausted, exit 1.
+  Invocation proved = run({"plan", "--scenario", tidy_kitchen(), "--goal", impossible, "--json"});
+  EXPECT_EQ(proved.exit_code, 1);
+  EXPECT_EQ(nlohmann::json::parse(proved.out)["status"], "exhausted");
+}
+
+TEST_F(Cli, PlanProgressGoesToTheTerminalOnly) {
+  if (std::system("command -v script >/dev/null 2>&1") != 0) GTEST_SKIP() << "no script(1) to give a terminal";
+  const std::string plan = shell_quote(APPRENTICE_BINARY) + " plan --scenario " + shell_quote(tidy_kitchen()) +
+                           " --goal '(and (in ketchup1 fridge1) (in ketchup1 pantry1))' --no-pruning --time-limit 1.6";
+  const fs::path out = dir_ / "terminal.txt";
+  const std::string command = "script -qec " + shell_quote(plan) + " /dev/null > " + shell_quote(out.string()) +
+                              " 2>&1 </dev/null";
+  ASSERT_EQ(std::system(command.c_str()) == -1, false);
+  const std::string text = read_file(out);
+  EXPECT_THAT(text, HasSubstr("searching: "));
+  EXPECT_THAT(text, HasSubstr(" nodes/s), best heuristic value "));
+  EXPECT_THAT(text, HasSubstr(";; status budget-exhausted"));
+  // Not a terminal: no progress lines.
+  Invocation piped = run({"plan", "--scenario", tidy_kitchen(), "--goal", "(and (in ketchup1 fridge1) (in ketchup1 pantry1))",
+                          "--no-pruning", "--time-limit", "1.2"});
+  EXPECT_EQ(piped.err, "");
+}
+
+TEST_F(Cli, PlanVerboseSaysWhatPruningDid) {
+  Invocation kitchen = run({"-v", "plan", "--scenario", tidy_kitchen(), "--goal", kKetchupGoal});
+  ASSERT_EQ(kitchen.exit_code, 0) << kitchen.err;
+  EXPECT_THAT(kitchen.err, HasSubstr("relevance: 12 of 41 objects can matter to the goal; 29 pruned"));
+  Invocation stacked = run({"-v", "plan", "--scenario", source("data/scenarios/stacked-dishes.yaml"), "--goal",
+                            "(in ceramic-plate1 cupboard1)"});
+  ASSERT_EQ(stacked.exit_code, 0) << stacked.err;
+  EXPECT_THAT(stacked.err, HasSubstr("are kept because they can interact with others"));
+  EXPECT_THAT(stacked.err, HasSubstr("because unstack changes (covered ?bottom)"));
+  Invocation tower = run({"-v", "plan", "--scenario", source("data/scenarios/dish-tower.yaml"), "--goal", "intent"});
+  ASSERT_EQ(tower.exit_code, 0) << tower.err;
+  EXPECT_THAT(tower.err, HasSubstr("0 pruned"));
 }
 
 TEST_F(Cli, PlanWithoutPruningFindsTheSamePlan) {
@@ -196,7 +280,7 @@ TEST_F(Cli, HelpExitsZeroForEverySubcommand) {
   for (const char* sub : {"world", "plan", "export-pddl"}) EXPECT_THAT(top.out, HasSubstr(sub));
   const std::vector<std::pair<std::string, std::vector<std::string>>> expected = {
       {"world", {"--scenario", "--json"}},
-      {"plan", {"--scenario", "--goal", "--depth", "--max-nodes", "--no-pruning", "--json"}},
+      {"plan", {"--scenario", "--goal", "--depth", "--node-limit", "--time-limit", "--no-pruning", "--json"}},
       {"export-pddl", {"--scenario", "--goal", "--out"}},
   };
   for (const auto& [sub, flags] : expected) {

@@ -136,7 +136,8 @@ TEST_F(ExperimentCli, EachConditionsTranscriptIsItsOwnFileAsThePaperPrintsDialog
     EXPECT_EQ(transcript, testing::run(scenario, name, testing::experiment_options()).transcript);
   }
   EXPECT_THAT(testing::read_text(dir / "instruction.txt"),
-              HasSubstr("Agent: What do I do next for clear?\nInstructor: Open the dishwasher.\n"));
+              HasSubstr("Agent: What should I do next so that the ceramic plate is in the dishwasher and the "
+                        "dishwasher is closed?\nInstructor: Open the dishwasher.\n"));
   // The human-readable table compares with the paper.
   EXPECT_THAT(run.out, HasSubstr("inst+search4       ours         100.0     30/30        --       40     603       0"));
   EXPECT_THAT(run.out, HasSubstr("                   paper        100.0                  --       40     603       0"));

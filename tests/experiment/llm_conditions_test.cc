@@ -73,7 +73,7 @@ TEST_F(SixConditions, SearchPlusLlmCostsOnlyTheTaskStructure) {
   EXPECT_GT(r.completion_rate, 0.0);
   // Nobody was asked about a goal or an action.
   EXPECT_THAT(r.transcript, Not(HasSubstr("[LM]")));
-  EXPECT_THAT(r.transcript, Not(HasSubstr("What do I do next")));
+  EXPECT_THAT(r.transcript, Not(HasSubstr("What should I do next so that")));
 }
 
 TEST_F(SixConditions, ActionsTheCorpusCannotAnswerFallBackToTheInstructor) {
@@ -81,19 +81,21 @@ TEST_F(SixConditions, ActionsTheCorpusCannotAnswerFallBackToTheInstructor) {
   for (const char* name : {"inst+llm", "inst+search2+llm"}) {
     const ConditionResult& r = result(name);
     SCOPED_TRACE(name);
-    EXPECT_THAT(r.transcript, HasSubstr("Agent: What do I do next for clear?\nInstructor: Open the fridge.\n"));
+    EXPECT_THAT(r.transcript, ::testing::ContainsRegex("Agent: What should I do next so that the [a-z ]+ is in the "
+                                                       "fridge and the fridge is closed\\?\nInstructor: Open the "
+                                                       "fridge\\.\n"));
     EXPECT_THAT(r.transcript, Not(HasSubstr("should I '")));
     // A corpus miss is not a failure of the LLM.
     EXPECT_THAT(r.transcript, Not(HasSubstr("could not reach")));
   }
-  EXPECT_THAT(result("inst+search4+llm").transcript, Not(HasSubstr("What do I do next")));
+  EXPECT_THAT(result("inst+search4+llm").transcript, Not(HasSubstr("What should I do next so that")));
 }
 
 TEST_F(SixConditions, RejectedGoalsAreFollowedByTheInstructorsDescription) {
   // "If 3 suggestions are rejected, the agent asks for a goal description."
   const std::string& t = result("inst+llm").transcript;
-  EXPECT_THAT(t, HasSubstr("?\nInstructor: no.\nAgent: What is the next goal or subtask of clear?\n"
-                           "Instructor: If the object is a "));
+  EXPECT_THAT(t, ::testing::ContainsRegex("\\?\nInstructor: no\\.\nAgent: Where should the [a-z ]+ on the table go\\?\n"
+                                           "Instructor: If the object is a "));
   // Relevance is the yes answers over the yes/no questions.
   const ConditionResult& r = result("inst+llm");
   ASSERT_TRUE(r.relevance.has_value());
@@ -106,7 +108,8 @@ TEST_F(SixConditions, TheSameInstructorForEveryCondition) {
     SCOPED_TRACE(name);
     const std::string& t = result(name).transcript;
     EXPECT_THAT(t, ::testing::StartsWith("Agent: What task should I learn?\nInstructor: Tidy kitchen.\n"));
-    EXPECT_THAT(t, ::testing::EndsWith("Agent: What is the next goal or subtask of tidy?\nInstructor: You are done.\n"));
+    EXPECT_THAT(t, ::testing::EndsWith("Agent: What should I do next to tidy the kitchen?\nInstructor: You are done.\n"
+                                       "Agent: So the task is done.\n"));
   }
 }
 

@@ -148,7 +148,7 @@ TEST(OneShotLimits, NewKindsOfObjectsNeedHelpAndExitOne) {
   Invocation r = run_cli(dir.path(), {"run", "--scenario", scenario_path("tidy-kitchen-35").string(), "--knowledge",
                                       l.store.string()});
   EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
-  EXPECT_THAT(r.out, HasSubstr("Would need help: a goal for "));
+  EXPECT_THAT(r.out, HasSubstr("Would need help: where the "));
   EXPECT_THAT(r.out, HasSubstr("0 instructions, 0 search nodes, 0 LLM calls"));
 }
 

@@ -136,6 +136,31 @@ intent:
   EXPECT_FALSE(instantiate_goal(w, plate_knowledge(), object(w, "ceramic-plate1")).has_value());
 }
 
+// Look-alike places told apart by their properties (issue 10): a goal
+// naming the top drawer is learned with the word that tells it apart, and
+// means the top drawer wherever there is one.
+TEST_F(GoalMemoryTest, PropertiesTellLookAlikePlacesApart) {
+  Scenario garage = load_or_die(scenario_path("tidy-garage"));
+  const World& w = garage.world;
+  const GoalKey key{"tidy garage", "clear", "hammer", "workbench"};
+  auto k = generalize_goal(w, key, object(w, "hammer1"), goal(w, "(and (in hammer1 drawer1) (closed drawer1))"), {});
+  ASSERT_TRUE(k.has_value()) << k.error().describe();
+  EXPECT_EQ(k->literals[0].arguments[1], (GoalTemplateArgument{false, "drawer", {"top"}}));
+  EXPECT_THAT(format_goal_knowledge(*k), HasSubstr("(in ?o [top drawer]) and (closed [top drawer])"));
+  auto bottom = generalize_goal(w, key, object(w, "hammer1"), goal(w, "(in hammer1 drawer2)"), {});
+  ASSERT_TRUE(bottom.has_value());
+  EXPECT_EQ(bottom->literals[0].arguments[1].properties, std::vector<std::string>{"bottom"});
+  // For another object, the same drawer.
+  EXPECT_EQ(text(w, instantiate_goal(w, *k, object(w, "wrench1"))), "(and (in wrench1 drawer1) (closed drawer1))");
+  EXPECT_EQ(text(w, instantiate_goal(w, *bottom, object(w, "wrench1"))), "(in wrench1 drawer2)");
+  // A unique place is kept by its category alone, whatever its properties.
+  auto shelf = generalize_goal(w, key, object(w, "paint-can1"), goal(w, "(on paint-can1 shelf1)"), {});
+  ASSERT_TRUE(shelf.has_value());
+  EXPECT_TRUE(shelf->literals[0].arguments[1].properties.empty());
+  // Where the properties name no place, or two, the template does not guess.
+  EXPECT_FALSE(instantiate_goal(world_, *k, object(world_, "ceramic-plate1")).has_value());
+}
+
 TEST_F(GoalMemoryTest, InstantiateFailsForAnAbsentCategoryOrUnknownPredicate) {
   GoalKnowledge k = plate_knowledge();
   GoalKnowledge absent = k;
@@ -145,10 +170,10 @@ TEST_F(GoalMemoryTest, InstantiateFailsForAnAbsentCategoryOrUnknownPredicate) {
   unknown.literals[1].predicate = "sparkling";
   EXPECT_FALSE(instantiate_goal(world_, unknown, object(world_, "ceramic-plate1")).has_value());
   GoalKnowledge arity = k;
-  arity.literals[1].arguments.push_back(GoalTemplateArgument{true, ""});
+  arity.literals[1].arguments.push_back(GoalTemplateArgument{true, "", {}});
   EXPECT_FALSE(instantiate_goal(world_, arity, object(world_, "ceramic-plate1")).has_value());
   GoalKnowledge ambiguous = k;  // two ceramic plates
-  ambiguous.literals[1].arguments[0] = GoalTemplateArgument{false, "ceramic-plate"};
+  ambiguous.literals[1].arguments[0] = GoalTemplateArgument{false, "ceramic-plate", {}};
   EXPECT_FALSE(instantiate_goal(world_, ambiguous, object(world_, "metal-fork1")).has_value());
 }
 

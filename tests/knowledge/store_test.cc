@@ -92,6 +92,21 @@ TEST_F(Store, RoundTripOfTasksGoalsAndRules) {
   expect_filled(*loaded);
 }
 
+// A goal naming one of two look-alike places keeps the properties that
+// tell it apart (the top drawer) through the store.
+TEST_F(Store, APlacesPropertiesSurviveTheStore) {
+  KnowledgeStore store = open_or_die(path_);
+  GoalKnowledge goal = plate_goal();
+  goal.key.category = "hammer";
+  goal.literals[0].arguments[1] = GoalTemplateArgument{false, "drawer", {"top"}};
+  ASSERT_TRUE(store.save_goal(goal));
+  auto loaded = store.load(domain_);
+  ASSERT_TRUE(loaded.has_value()) << loaded.error().describe();
+  ASSERT_EQ(loaded->goals.size(), 1u);
+  EXPECT_EQ(loaded->goals.all()[0], goal);
+  EXPECT_EQ(loaded->goals.all()[0].literals[0].arguments[1].properties, std::vector<std::string>{"top"});
+}
+
 TEST_F(Store, ANewStoreIsEmpty) {
   KnowledgeStore store = open_or_die(path_);
   auto loaded = store.load(domain_);
@@ -387,11 +402,17 @@ class StoreCli : public Store {
 };
 
 TEST_F(StoreCli, KnowledgePrintsWhatWasLearned) {
-  Invocation r = run_cli(dir_.path(), {"knowledge", "--knowledge", path_.string()});
+  Invocation r = run_cli(dir_.path(), {"knowledge", "--knowledge", path_.string(), "--pddl"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_THAT(r.out, HasSubstr("2 goals:"));
   EXPECT_THAT(r.out, HasSubstr("8 rules:"));
   EXPECT_THAT(r.out, HasSubstr("propose action open(?r) (4 steps to the goal)"));
+  // In English by default.
+  Invocation english = run_cli(dir_.path(), {"knowledge", "--knowledge", path_.string()});
+  ASSERT_EQ(english.exit_code, 0) << english.err;
+  EXPECT_THAT(english.out, HasSubstr("2 goals:"));
+  EXPECT_THAT(english.out, HasSubstr("8 rules:"));
+  EXPECT_THAT(english.out, HasSubstr(": open the receptacle (4 steps from the goal)."));
 }
 
 TEST_F(StoreCli, RefusedStoreExitsTwoNamingBothVersions) {

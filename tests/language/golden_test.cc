@@ -21,6 +21,7 @@
 #include <gtest/gtest.h>
 
 #include "language/logical_form.h"
+#include "golden_blocks.h"
 #include "language_fixtures.h"
 #include "util/text.h"
 
@@ -42,39 +43,20 @@ struct Case {
 
 // Reads the blocks; a malformed line fails the test and is skipped.
 std::vector<Case> read_cases(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  EXPECT_TRUE(in.good()) << "cannot read " << path;
   std::vector<Case> cases;
-  Case current;
-  bool open = false;
-  std::string text;
-  auto close = [&] {
-    if (open) cases.push_back(std::move(current));
-    current = Case{};
-    open = false;
-  };
-  for (std::size_t number = 1; std::getline(in, text); ++number) {
-    std::string_view line = trim(text);
-    if (line.empty()) {
-      close();
-      continue;
+  for (const testing::GoldenBlock& block : testing::read_golden_blocks(path)) {
+    Case c;
+    c.line = block.line;
+    c.comments = block.comments;
+    for (const auto& [key, value] : block.fields) {
+      if (key == "sentence") c.sentence = value;
+      else if (key == "object") c.object = value;
+      else if (key == "form") c.form = value;
+      else if (key == "result") c.result = value;
+      else ADD_FAILURE() << path.filename() << ":" << block.line << ": unknown key '" << key << "'";
     }
-    if (!open) current.line = number;
-    open = true;
-    if (line.front() == '#') {
-      current.comments.emplace_back(line);
-      continue;
-    }
-    auto colon = line.find(": ");
-    std::string key(line.substr(0, colon));
-    std::string value(colon == std::string_view::npos ? "" : line.substr(colon + 2));
-    if (key == "sentence") current.sentence = value;
-    else if (key == "object") current.object = value;
-    else if (key == "form") current.form = value;
-    else if (key == "result") current.result = value;
-    else ADD_FAILURE() << path.filename() << ":" << number << ": unknown key '" << key << "'";
+    cases.push_back(std::move(c));
   }
-  close();
   return cases;
 }
 

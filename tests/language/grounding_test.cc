@@ -36,6 +36,18 @@ TEST(Grounding, TheObjectOfInterestSettlesWhichOfSeveral) {
   EXPECT_EQ(meaning("Pick up the can."), "failure ungrounded-object can");
 }
 
+TEST(Grounding, TheKindsOfPlaceNameEveryPlaceOfThatKind) {
+  // The types are receptacle-place and surface-place; the words stay.
+  EXPECT_EQ(meaning("Open the receptacle.", id("fridge1")), "action (open fridge1)");
+  EXPECT_EQ(meaning("Open the receptacle."), "failure ungrounded-object receptacle");
+  EXPECT_EQ(meaning("Put the object on the surface.", id("ketchup1")), "failure ungrounded-object surface");
+  ReferenceContext context{world35(), grounder().lexicon(), id("counter1")};
+  Resolution r = resolve(NounPhrase{"the", {"surface"}}, Role::kPlace, context);
+  ASSERT_TRUE(std::holds_alternative<Reference>(r));
+  EXPECT_EQ(std::get<Reference>(r).object, id("counter1"));
+  EXPECT_EQ(std::get<Reference>(r).reason, "'surface' is the type surface-place");
+}
+
 TEST(Grounding, PickUpDependsOnWhereTheItemIs) {
   EXPECT_EQ(meaning("Pick up the paring-knife."), "action (pick-up-from paring-knife1 dish-rack1)");
   EXPECT_EQ(meaning("Pick up the corkscrew."), "action (pick-up corkscrew1 counter1)");
@@ -58,7 +70,7 @@ TEST(Grounding, Affordances) {
 TEST(Grounding, FailuresCarryASentenceToSay) {
   Interpretation in = grounder().interpret("Close the recycling bin.", world35(), std::nullopt);
   ASSERT_NE(in.failure(), nullptr);
-  EXPECT_EQ(in.failure()->message, "The recycling bin has no door to close.");
+  EXPECT_EQ(in.failure()->message, "The recycling bin has no lid, so it can't be closed.");
   in = grounder().interpret("the goal is that the sink is full of water", world35(), std::nullopt);
   ASSERT_NE(in.failure(), nullptr);
   EXPECT_EQ(in.failure()->kind, FailureKind::kUnknownPredicate);

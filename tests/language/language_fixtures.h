@@ -30,6 +30,12 @@ inline const Scenario& kitchen35() {
 
 inline const World& world35() { return kitchen35().world; }
 
+// The paper's 30-object kitchen, the world of `apprentice teach`.
+inline const Scenario& kitchen30() {
+  static const Scenario scenario = apprentice::testing::shipped_scenario("tidy-kitchen");
+  return scenario;
+}
+
 // WordNet decisions are logged at info; the tests keep stderr quiet.
 inline const Grounder& grounder() {
   static const Grounder instance = [] {

@@ -11,7 +11,9 @@
 
 #include "language/generation.h"
 #include "language/parser.h"
+#include "language/reply.h"
 #include "language_fixtures.h"
+#include "util/text.h"
 
 namespace apprentice::language {
 namespace {
@@ -88,6 +90,52 @@ TEST_F(InstructorScript, EverySentenceGroundsToTheIntendedMeaning) {
     ++goals;
   }
   EXPECT_EQ(goals, 35u);
+}
+
+// read_reply, at the question each line answers, gives every line the
+// meaning the grammar gives it.
+TEST_F(InstructorScript, EveryLineReadsAsTheGrammarReadsIt) {
+  const World& world = world35();
+  std::optional<ObjectId> place;
+  bool after_goal = false;
+  for (const std::string& line : lines_) {
+    SCOPED_TRACE(line);
+    auto form = parse(line);
+    ASSERT_TRUE(form.has_value());
+    ReplyContext context;
+    std::string expected;
+    if (std::holds_alternative<Answer>(*form)) {
+      context.asked = Asked::kYesNo;
+      expected = std::get<Answer>(*form).yes ? "yes" : "no";
+    } else if (const auto* task = std::get_if<TaskName>(&*form)) {
+      context.asked = Asked::kTask;
+      expected = "task " + join(task->words, " ");
+    } else if (const auto* goal = std::get_if<GoalDescription>(&*form)) {
+      context.asked = Asked::kGoal;
+      for (ObjectId id : world.universe->with_category(goal->category->text()))
+        if (world.state.holds(Fact(world.vocabulary.on, {id, *place})) ||
+            world.state.holds(Fact(world.vocabulary.in, {id, *place})))
+          context.object = id;
+      ASSERT_TRUE(context.object.has_value());
+      expected = format_grounding(world, grounder().ground(*form, world, context.object).result);
+      after_goal = true;
+    } else {
+      context.asked = after_goal ? Asked::kSubtaskEnd : Asked::kTaskStep;
+      after_goal = false;
+      Interpretation in = grounder().ground(*form, world, std::nullopt);
+      const auto& step = std::get<TaskStep>(in.result);
+      if (step.place) place = step.place;
+      std::string where = step.place ? std::string(to_string(step.relation)) + " " + world.universe->name(*step.place) : "";
+      switch (step.kind) {
+        case TaskStep::Kind::kRepeatWhile: expected = "loop " + where; break;
+        case TaskStep::Kind::kSubtask: expected = "subtask " + step.name + " " + where; break;
+        case TaskStep::Kind::kDone: expected = "finished"; break;
+        case TaskStep::Kind::kRepeat: expected = "proceed"; break;
+        default: FAIL() << "unexpected step";
+      }
+    }
+    EXPECT_EQ(format_reply(world, read_reply(grounder(), world, context, line)), expected);
+  }
 }
 
 // The simulated instructor speaks with the generators; they must say the

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <deque>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 #include <ostream>
@@ -28,18 +29,22 @@ namespace apprentice::testing {
 
 inline Scenario tidy_kitchen() { return shipped_scenario("tidy-kitchen"); }
 
-// The kitchen domain, read once.
-inline std::shared_ptr<const Domain> kitchen_domain() {
-  static const std::shared_ptr<const Domain> kDomain = [] {
-    auto domain = read_domain_file(source_path("data/domains/kitchen.pddl"));
+// A domain file of data/domains, read once.
+inline std::shared_ptr<const Domain> shipped_domain(const std::string& relative) {
+  static std::map<std::string, std::shared_ptr<const Domain>> cache;
+  auto& slot = cache[relative];
+  if (!slot) {
+    auto domain = read_domain_file(source_path(relative));
     if (!domain) {
       ADD_FAILURE() << domain.error().describe();
       std::abort();
     }
-    return std::make_shared<const Domain>(std::move(*domain));
-  }();
-  return kDomain;
+    slot = std::make_shared<const Domain>(std::move(*domain));
+  }
+  return slot;
 }
+
+inline std::shared_ptr<const Domain> kitchen_domain() { return shipped_domain("data/domains/kitchen.pddl"); }
 
 inline Goal goal_or_die(const World& world, std::string_view text) {
   auto goal = parse_goal(*world.domain, *world.universe, text);
@@ -54,6 +59,20 @@ inline std::vector<std::string> plan_text(const World& world, const std::vector<
   std::vector<std::string> out;
   for (const Action& a : plan) out.push_back(format_action(*world.domain, *world.universe, a));
   return out;
+}
+
+// Replays a plan in the simulator; true if every step is accepted and the
+// goal holds at the end (a refused step is also reported as a failure).
+inline bool plan_reaches(const World& world, const std::vector<Action>& plan, const Goal& goal) {
+  Simulator sim(world);
+  for (const Action& a : plan) {
+    Status status = sim.execute(a);
+    if (!status) {
+      ADD_FAILURE() << status.error().describe();
+      return false;
+    }
+  }
+  return goal.satisfied_by(sim.state());
 }
 
 // A small kitchen described by plain numbers, so that RapidCheck can
@@ -84,20 +103,28 @@ struct WorldSpec {
   GoalSpec goal;
 };
 
-inline std::ostream& operator<<(std::ostream& os, const WorldSpec& spec) {
+inline void print_places(std::ostream& os, const std::vector<PlaceSpec>& places) {
   os << "places:";
-  for (std::size_t i = 0; i < spec.places.size(); ++i) {
-    const PlaceSpec& p = spec.places[i];
+  for (std::size_t i = 0; i < places.size(); ++i) {
+    const PlaceSpec& p = places[i];
     os << " p" << i << "=" << (p.surface ? "surface" : "receptacle");
     if (p.door) os << (p.closed ? "[closed]" : "[open]");
   }
+}
+
+inline void print_goal(std::ostream& os, const GoalSpec& goal) {
+  os << "; goal: i" << goal.item << " at p" << goal.place;
+  if (goal.second_item >= 0) os << ", i" << goal.second_item << " at p" << goal.second_place;
+  if (goal.door_literal == 1) os << ", p" << goal.door_place << " closed";
+  if (goal.door_literal == 2) os << ", p" << goal.door_place << " open";
+}
+
+inline std::ostream& operator<<(std::ostream& os, const WorldSpec& spec) {
+  print_places(os, spec.places);
   os << "; items:";
   for (std::size_t i = 0; i < spec.item_at.size(); ++i)
     os << " i" << i << "@" << (spec.item_at[i] < 0 ? std::string("hand") : "p" + std::to_string(spec.item_at[i]));
-  os << "; goal: i" << spec.goal.item << " at p" << spec.goal.place;
-  if (spec.goal.second_item >= 0) os << ", i" << spec.goal.second_item << " at p" << spec.goal.second_place;
-  if (spec.goal.door_literal == 1) os << ", p" << spec.goal.door_place << " closed";
-  if (spec.goal.door_literal == 2) os << ", p" << spec.goal.door_place << " open";
+  print_goal(os, spec.goal);
   return os;
 }
 
@@ -120,7 +147,7 @@ inline Problem build_problem(const WorldSpec& spec) {
     std::string category = p.surface ? "shelf" : (p.door ? "cabinet" : "bin");
     ObjectKind kind = p.surface ? ObjectKind::kSurface : ObjectKind::kReceptacle;
     ObjectId id = universe.add(ObjectInfo{category + std::to_string(i), category, kind,
-                                          *domain->find_type(p.surface ? "surface" : "receptacle"), {}});
+                                          *domain->find_type(type_name(kind)), {}});
     places.push_back(id);
     facts.push_back(Fact(p.surface ? v.surface : v.receptacle, {id}));
     if (!p.surface && p.door) {

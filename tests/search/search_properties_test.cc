@@ -11,7 +11,7 @@
 #include <rapidcheck.h>
 #include <rapidcheck/gtest.h>
 
-#include "search_fixtures.h"
+#include "search_generators.h"
 
 namespace apprentice {
 namespace {
@@ -21,6 +21,7 @@ using testing::GoalSpec;
 using testing::PlaceSpec;
 using testing::Problem;
 using testing::shortest_plan_length;
+using testing::small_worlds;
 using testing::WorldSpec;
 
 // Depth limits. Unreachable goals make iterative deepening explore the
@@ -29,41 +30,6 @@ using testing::WorldSpec;
 // reference search whether a plan within its limit exists.
 constexpr int kMaxDepth = 6;
 constexpr int kOptimalityDepth = 8;
-
-// Sizes are fixed at RapidCheck's nominal size so that the choices below
-// are spread over their whole ranges from the first test on (shrinking
-// still makes counterexamples small).
-rc::Gen<WorldSpec> small_worlds() {
-  return rc::gen::resize(rc::kNominalSize, rc::gen::exec([] {
-    WorldSpec spec;
-    const int places = *rc::gen::inRange(1, 7);
-    for (int i = 0; i < places; ++i) {
-      PlaceSpec p;
-      p.surface = *rc::gen::arbitrary<bool>();
-      if (!p.surface) {
-        p.door = *rc::gen::arbitrary<bool>();
-        if (p.door) p.closed = *rc::gen::arbitrary<bool>();
-      }
-      spec.places.push_back(p);
-    }
-    const int items = *rc::gen::inRange(1, 4);
-    const int held = *rc::gen::inRange(-1, items);  // -1: the hand is empty
-    for (int i = 0; i < items; ++i) spec.item_at.push_back(i == held ? -1 : *rc::gen::inRange(0, places));
-    spec.goal.item = *rc::gen::inRange(0, items);
-    // Mostly somewhere the item is not yet, so that most goals need a plan.
-    const int start = spec.item_at[static_cast<std::size_t>(spec.goal.item)];
-    spec.goal.place = (places > 1 && start >= 0 && *rc::gen::inRange(0, 4) != 0)
-                          ? (start + *rc::gen::inRange(1, places)) % places
-                          : *rc::gen::inRange(0, places);
-    spec.goal.door_literal = *rc::gen::inRange(0, 3);
-    spec.goal.door_place = *rc::gen::inRange(0, places);
-    if (items > 1 && *rc::gen::inRange(0, 3) == 0) {
-      spec.goal.second_item = (spec.goal.item + *rc::gen::inRange(1, items)) % items;
-      spec.goal.second_place = *rc::gen::inRange(0, places);
-    }
-    return spec;
-  }));
-}
 
 PlanResult plan(const Problem& problem, int max_depth, bool prune = true) {
   SearchOptions options;

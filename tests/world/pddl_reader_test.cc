@@ -261,8 +261,11 @@ TEST(PddlReader, KitchenDomainHasTheExpectedShape) {
     EXPECT_TRUE(domain->is_static(domain->predicate(p))) << p;
   for (const char* p : {"on", "in", "holding", "handempty", "closed"})
     EXPECT_FALSE(domain->is_static(domain->predicate(p))) << p;
-  EXPECT_TRUE(domain->is_subtype(*domain->find_type("receptacle"), *domain->find_type("place")));
-  EXPECT_FALSE(domain->is_subtype(*domain->find_type("receptacle"), *domain->find_type("surface")));
+  const TypeId receptacle = *domain->find_type(type_name(ObjectKind::kReceptacle));
+  EXPECT_TRUE(domain->is_subtype(receptacle, *domain->find_type("place")));
+  EXPECT_FALSE(domain->is_subtype(receptacle, *domain->find_type(type_name(ObjectKind::kSurface))));
+  // No type shares its name with a predicate (PDDL tools warn about that).
+  for (const TypeInfo& type : domain->types) EXPECT_FALSE(domain->find_predicate(type.name).has_value()) << type.name;
   EXPECT_TRUE(domain->is_subtype(*domain->find_type("item"), kRootType));
 }
 

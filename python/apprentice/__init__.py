@@ -1,0 +1,91 @@
+"""apprentice: an agent that learns new tasks online, in one shot, from an
+instructor, its own search, an LLM and WordNet.
+
+    import apprentice
+    scenario = apprentice.Scenario.load("data/scenarios/tidy-kitchen.yaml")
+    results = apprentice.experiment("data/scenarios/tidy-kitchen.yaml", conditions=["inst+search4"])
+    agent = apprentice.Agent(scenario)
+    report = agent.learn(lambda question: input(question + " "))
+    store = apprentice.KnowledgeStore("kitchen.sqlite")
+
+Errors from apprentice raise apprentice.Error, whose `code` says what kind
+('not found', 'invalid input', ...). See docs/python.md.
+"""
+
+import json as _json
+import os as _os
+
+from ._apprentice import (  # noqa: F401  (re-exported)
+    Agent,
+    Error,
+    Goal,
+    Knowledge,
+    KnowledgeStore,
+    LearnedSubtask,
+    Object,
+    Rule,
+    Scenario,
+    Subtask,
+    Task,
+    TaskKnowledge,
+    __version__,
+    condition_names,
+    paper_row,
+)
+from ._apprentice import _experiment_json
+
+__all__ = [
+    "Agent", "Question", "Error", "Goal", "Knowledge", "KnowledgeStore", "LearnedSubtask", "Object", "Rule", "Scenario",
+    "Subtask", "Task", "TaskKnowledge", "condition_names", "experiment", "paper_row",
+]
+
+
+class Question(str):
+    """A question the agent asks its instructor: a str, the words a person
+    reads, that also says what it is about, so that a program can answer
+    from meaning.
+
+    kind: "task-name", "task-step", "subtask-step" (about `object`: its
+        goal; without one: is the subtask done?), "next-action",
+        "confirm-goal" or "confirm-action" (yes/no questions).
+    task, subtask: "tidy kitchen", "clear", once known ("" before).
+    object, category, place: the object of interest ("ketchup1",
+        "ketchup") and the id of the place it is on or in now, or None.
+    goal: the goal pursued ("next-action") or proposed ("confirm-goal"),
+        as PDDL; action: the action proposed ("confirm-action"); or None.
+    """
+
+    def __new__(cls, text, kind="", task="", subtask="", object=None, category=None, place=None, goal=None,
+                action=None):
+        self = super().__new__(cls, text)
+        self.kind, self.task, self.subtask = kind, task, subtask
+        self.object, self.category, self.place = object, category, place
+        self.goal, self.action = goal, action
+        return self
+
+    @property
+    def is_yes_no(self):
+        return self.kind in ("confirm-goal", "confirm-action")
+
+
+def experiment(scenario_path, conditions=None, llm=None, generalization="full", knowledge_in=None, use_rules=True):
+    """Runs the paper's experiment: each condition from empty knowledge, with
+    the simulated instructor, on a fresh copy of the scenario.
+
+    conditions: names such as "instruction", "inst+search4", "inst+llm";
+        None runs every condition of the paper's Table 3 that can run (the
+        LLM ones only with an LLM).
+    llm: an LLM backend spec ("openai:http://127.0.0.1:8080/v1",
+        "replay:FILE", "corpus:FILE", ...); None uses $APPRENTICE_LLM.
+    generalization: "full" (ours) or "paper" (the paper's chunks).
+
+    Returns a list with one dict per condition, with the keys that
+    `apprentice experiment --json` prints (condition, completion_rate,
+    instructions, words, yes_no, relevance, llm_calls, ...).
+    """
+    if isinstance(conditions, str):
+        conditions = [conditions]
+    if knowledge_in is not None:
+        knowledge_in = _os.fspath(knowledge_in)
+    text = _experiment_json(scenario_path, list(conditions or []), llm, generalization, knowledge_in, use_rules)
+    return _json.loads(text)

@@ -1,0 +1,173 @@
+"""apprentice.Agent taught by Python callables: scripted teachers, errors
+raised in the callback, threads."""
+import threading
+import traceback
+
+import pytest
+
+import apprentice
+from conftest import SCENARIOS, SOURCE_DIR
+
+TWO_OBJECTS = SOURCE_DIR / "tests" / "agent" / "data" / "two-objects.yaml"
+
+GOALS = {
+    "ketchup": "If the object is a ketchup then the goal is that the object is in the fridge and the fridge is closed.",
+    "paper-plate": "If the object is a paper-plate then the goal is that the object is in the garbage.",
+}
+STRUCTURE = ["Repeat the following tasks while an object is on the table.", "Clear an object that is on the table.",
+             "Repeat."]
+
+
+class KitchenTeacher:
+    """Teaches the two-object kitchen in the STARS script's words, from what
+    each question is about (apprentice.Question), not from its wording."""
+
+    def __init__(self):
+        self.structure = list(STRUCTURE)
+        self.questions = []
+        self.heard = []
+
+    def __call__(self, question):
+        assert isinstance(question, str) and isinstance(question, apprentice.Question)
+        self.questions.append(question)
+        if question.kind == "task-name":
+            return "Tidy kitchen."
+        if question.kind == "subtask-step":
+            if question.object is None:  # is there more to the subtask?
+                return "You are done."
+            assert question.place == "table1" and question.subtask == "clear"
+            return GOALS[question.category]
+        return self.structure.pop(0) if self.structure else "You are done."
+
+    def hear(self, statement):
+        self.heard.append(statement)
+
+
+def test_a_python_teacher_teaches_the_task_and_it_is_done():
+    agent = apprentice.Agent(apprentice.Scenario.load(TWO_OBJECTS), condition="inst+search4")
+    teacher = KitchenTeacher()
+    report = agent.learn(teacher)
+    assert report["task_finished"] is True
+    assert report["completion_rate"] == 100.0
+    assert report["assertions_total"] == 3
+    assert report["instructions"] == len(teacher.questions)
+    assert teacher.questions[0] == "What task should I learn?"
+    assert report["transcript"].startswith("Agent: What task should I learn?\nInstructor: Tidy kitchen.\n")
+    assert sorted(o["object"] for o in report["objects"]) == ["ketchup1", "paper-plate1"]
+    assert all(o["achieved"] and o["goal_source"] == "instructor" for o in report["objects"])
+    assert "(in ketchup1 fridge1)" in report["facts"]
+    knowledge = agent.knowledge
+    assert [t.name for t in knowledge.tasks] == ["tidy kitchen"]
+    assert sorted(g.category for g in knowledge.goals) == ["ketchup", "paper-plate"]
+    assert knowledge.rules, "search's plans were learned as rules"
+
+
+def test_what_was_learned_is_kept_in_the_store_and_performed_alone(tmp_path):
+    store = tmp_path / "kitchen.sqlite"
+    agent = apprentice.Agent(str(TWO_OBJECTS), knowledge=store)
+    agent.learn(KitchenTeacher())
+    performed = agent.perform()
+    assert performed["completion_rate"] == 100.0
+    assert performed["help_needed"] == []
+    # A new agent from the store needs no teacher at all.
+    again = apprentice.Agent(TWO_OBJECTS, knowledge=store).perform()
+    assert again["completion_rate"] == 100.0
+    read = apprentice.KnowledgeStore(store)
+    goal = next(g for g in read.goals if g.category == "ketchup")
+    assert (goal.task, goal.subtask, goal.place) == ("tidy kitchen", "clear", "table")
+    assert goal.literals == ["(closed fridge)", "(in ?o fridge)"] or goal.literals == ["(in ?o fridge)",
+                                                                                       "(closed fridge)"]
+
+
+class Refusal(Exception):
+    pass
+
+
+def refusing_teacher(question):
+    if question.kind == "task-name":
+        return "Tidy kitchen."
+    raise Refusal("I will not say: " + question)
+
+
+def test_an_exception_in_the_callback_reaches_the_caller_with_its_traceback():
+    agent = apprentice.Agent(TWO_OBJECTS)
+    with pytest.raises(Refusal, match="I will not say: ") as raised:
+        agent.learn(refusing_teacher)
+    frames = [entry.name for entry in raised.traceback]
+    assert "refusing_teacher" in frames
+    text = "".join(traceback.format_exception(raised.value))
+    assert 'raise Refusal("I will not say: " + question)' in text
+    # The agent is usable again, and kept the task it had been told.
+    assert agent.learn(KitchenTeacher())["completion_rate"] == 100.0
+
+
+def test_a_reply_that_is_not_a_string_is_a_type_error():
+    agent = apprentice.Agent(TWO_OBJECTS)
+    with pytest.raises(TypeError, match="must return a str"):
+        agent.learn(lambda question: 42)
+    with pytest.raises(TypeError, match="callable"):
+        agent.learn("Tidy kitchen.")
+
+
+def test_returning_none_stops_the_lesson_and_keeps_what_was_learned(tmp_path):
+    store = tmp_path / "partial.sqlite"
+    replies = iter(["Tidy kitchen.", STRUCTURE[0], STRUCTURE[1]])
+    report = apprentice.Agent(TWO_OBJECTS, knowledge=store).learn(lambda question: next(replies, None))
+    assert "stopped" in report
+    assert report["instructions"] == 3
+    assert [t.name for t in apprentice.KnowledgeStore(store).tasks] == ["tidy kitchen"]
+
+
+def test_learning_from_inside_its_own_callback_is_refused():
+    agent = apprentice.Agent(TWO_OBJECTS)
+
+    def reentrant(question):
+        agent.learn(KitchenTeacher())
+
+    with pytest.raises(RuntimeError, match="already learning"):
+        agent.learn(reentrant)
+
+
+def test_agents_learn_in_threads_at_once():
+    """The GIL is released while the agent works and taken again for each
+    callback: two agents taught from two threads both finish."""
+    reports = {}
+    errors = []
+
+    def teach(name):
+        try:
+            reports[name] = apprentice.Agent(TWO_OBJECTS).learn(KitchenTeacher())
+        except Exception as error:  # reported below
+            errors.append(error)
+
+    threads = [threading.Thread(target=teach, args=(name,)) for name in ("a", "b")]
+    for thread in threads:
+        thread.start()
+    for thread in threads:
+        thread.join(timeout=120)
+    assert not any(thread.is_alive() for thread in threads), "a teaching thread hung"
+    assert errors == []
+    assert [reports[n]["completion_rate"] for n in ("a", "b")] == [100.0, 100.0]
+
+
+def test_perform_in_a_kitchen_it_has_never_seen(tmp_path):
+    store = tmp_path / "kitchen.sqlite"
+    kitchen = SCENARIOS / "tidy-kitchen.yaml"
+    teacher_results = apprentice.experiment(kitchen, conditions=["inst+search4"])
+    assert teacher_results[0]["completion_rate"] == 100.0
+    agent = apprentice.Agent(TWO_OBJECTS, knowledge=store)
+    agent.learn(KitchenTeacher())
+    similar = apprentice.Scenario.load(SCENARIOS / "tidy-kitchen-similar.yaml")
+    report = agent.perform(similar)
+    # Only the ketchup and paper plate kinds were taught: the rest needs help.
+    assert report["help_needed"]
+    assert all("goal for" in h or "which" in h for h in report["help_needed"])
+
+
+def test_a_condition_with_an_llm_needs_one(monkeypatch):
+    monkeypatch.delenv("APPRENTICE_LLM", raising=False)
+    with pytest.raises(apprentice.Error, match="needs an LLM"):
+        apprentice.Agent(TWO_OBJECTS, condition="inst+llm")
+    with pytest.raises(apprentice.Error) as raised:
+        apprentice.Agent(TWO_OBJECTS, condition="telepathy")
+    assert raised.value.code == "invalid input"

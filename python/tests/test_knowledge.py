@@ -1,0 +1,73 @@
+"""apprentice.KnowledgeStore: goals and rules as Python objects, read-only."""
+import hashlib
+import subprocess
+
+import pytest
+
+import apprentice
+from conftest import BINARY, KITCHEN
+
+
+@pytest.fixture(scope="module")
+def kitchen_store(tmp_path_factory):
+    """The stores `apprentice experiment --knowledge-out` keeps."""
+    out = tmp_path_factory.mktemp("knowledge")
+    subprocess.run([str(BINARY), "experiment", "--scenario", str(KITCHEN), "--conditions", "inst+search4",
+                    "--knowledge-out", str(out)], check=True, capture_output=True)
+    return out / "inst+search4.sqlite"
+
+
+def test_reads_tasks_goals_and_rules(kitchen_store):
+    store = apprentice.KnowledgeStore(kitchen_store)
+    assert store.path == str(kitchen_store)
+    assert [t.name for t in store.tasks] == ["tidy kitchen"]
+    assert [(s.verb, s.relation, s.place) for s in store.tasks[0].subtasks] == [
+        ("clear", "on", "table"), ("store", "on", "counter"), ("unload", "in", "dish-rack")]
+    # One goal per (subtask, category): the paper's 26 goal types.
+    assert len(store.goals) == 26
+    plate = next(g for g in store.goals if g.category == "ceramic-plate" and g.subtask == "clear")
+    assert sorted(plate.literals) == ["(closed dishwasher)", "(in ?o dishwasher)"]
+    assert plate.text.startswith("If the task is tidy kitchen, the subtask is clear and the object is a ceramic-plate")
+    assert plate.learned_on.startswith("ceramic-plate")
+    assert plate.source.startswith("instructor")
+    assert store.rules
+    actions = {r.action for r in store.rules}
+    assert {"open", "close"} <= actions
+    assert all(r.signature.startswith(r.action + "(") for r in store.rules)
+    assert all(r.text.startswith("If ") for r in store.rules)
+    assert repr(store).endswith("1 tasks, 26 goals, %d rules>" % len(store.rules))
+
+
+def test_the_same_as_the_knowledge_command(kitchen_store):
+    import json
+    cli = json.loads(subprocess.run([str(BINARY), "knowledge", "--knowledge", str(kitchen_store), "--json"],
+                                    check=True, capture_output=True, text=True).stdout)
+    store = apprentice.KnowledgeStore(kitchen_store)
+    assert [g.text for g in store.goals] == [g["text"] for g in cli["goals"]]
+    assert [r.signature for r in store.rules] == [r["signature"] for r in cli["rules"]]
+
+
+def test_reading_never_writes_the_store(kitchen_store):
+    before = hashlib.sha256(kitchen_store.read_bytes()).hexdigest()
+    apprentice.KnowledgeStore(kitchen_store)
+    assert hashlib.sha256(kitchen_store.read_bytes()).hexdigest() == before
+
+
+def test_a_missing_store_is_not_created(tmp_path):
+    missing = tmp_path / "none.sqlite"
+    with pytest.raises(apprentice.Error) as raised:
+        apprentice.KnowledgeStore(missing)
+    assert raised.value.code == "not found"
+    assert not missing.exists()
+
+
+def test_a_file_that_is_not_a_store_is_refused(tmp_path):
+    junk = tmp_path / "junk.sqlite"
+    junk.write_bytes(b"this is not a database at all" * 10)
+    with pytest.raises(apprentice.Error) as raised:
+        apprentice.KnowledgeStore(junk)
+    assert raised.value.code == "data loss"
+    empty = tmp_path / "empty.sqlite"
+    empty.write_bytes(b"")
+    with pytest.raises(apprentice.Error, match="empty"):
+        apprentice.KnowledgeStore(empty)

@@ -1,0 +1,258 @@
+// The conversation with the teacher: every question is asked through
+// converse(), which reads each reply in the context of the question
+// (language/reply.h) and handles what is not an answer there: commands
+// (help, status, undo, forget, quit), a phrase that fits several things
+// (it asks which), and a reply it cannot use (it says why, with replies
+// that would work, and asks again).
+#include <algorithm>
+
+#include "agent/session.h"
+#include "language/generation.h"
+#include "language/narration.h"
+#include "util/log.h"
+#include "util/text.h"
+
+namespace apprentice {
+
+namespace {
+
+std::string kinds_of_answer(language::Asked asked) {
+  switch (asked) {
+    case language::Asked::kTask: return "Tell me the task you want me to learn";
+    case language::Asked::kTaskStep:
+      return "Tell me the next step of the task: a subtask with the place it is about, or that the task is done";
+    case language::Asked::kSubtaskEnd: return "Tell me whether there is more to this subtask, or that it is done";
+    case language::Asked::kGoal:
+      return "Tell me where it goes, and anything else that should be so when it is put away";
+    case language::Asked::kAction: return "Tell me one thing to do next";
+    case language::Asked::kYesNo: return "Answer yes or no";
+    case language::Asked::kWhich: return "Tell me which one you mean";
+  }
+  return "Answer the question";
+}
+
+std::string quoted_examples(const std::vector<std::string>& examples, std::size_t most) {
+  std::vector<std::string> shown;
+  for (std::size_t i = 0; i < examples.size() && i < most; ++i) shown.push_back("\"" + examples[i] + "\"");
+  std::string out;
+  for (std::size_t i = 0; i < shown.size(); ++i) out += (i == 0 ? "" : (i + 1 == shown.size() ? " or " : ", ")) + shown[i];
+  return out;
+}
+
+}  // namespace
+
+std::string with_period(std::string text) {
+  // A quotation that ends a sentence with its own period needs no other.
+  std::size_t end = text.size();
+  if (end >= 2 && text[end - 1] == '"' && (text[end - 2] == '.' || text[end - 2] == '?' || text[end - 2] == '!'))
+    return text;
+  return text + ".";
+}
+
+Question TaskLearningAgent::Session::question(QuestionKind kind, std::string text, std::optional<ObjectId> object,
+                                             std::optional<Goal> goal, std::optional<Action> action) const {
+  Question q;
+  q.kind = kind;
+  q.text = std::move(text);
+  q.task = progress_.task.name;
+  if (progress_.current) q.subtask = progress_.current->verb;
+  q.object = object;
+  q.goal = std::move(goal);
+  q.action = action;
+  return q;
+}
+
+language::ReplyContext TaskLearningAgent::Session::context(language::Asked asked, std::optional<ObjectId> object) const {
+  language::ReplyContext c;
+  c.asked = asked;
+  c.object = object;
+  c.recent_place = recent_place_;
+  return c;
+}
+
+void TaskLearningAgent::Session::say(const std::string& statement, Voice voice) {
+  if (dialogue_) dialogue_->say(statement, voice);
+}
+
+TaskLearningAgent::Session::Flow<TaskLearningAgent::Session::Heard> TaskLearningAgent::Session::converse(
+    const Question& asked, language::ReplyContext context, const Accept& accept) {
+  APPRENTICE_CHECK(dialogue_ != nullptr);
+  int unusable = 0;
+  for (;;) {
+    auto text = dialogue_->ask_uncounted(asked, world());
+    if (!text) return stop(text.error());
+    language::Reply reply = agent_.understanding_.reply(world(), context, *text);
+    if (const auto* command = std::get_if<language::Command>(&reply)) {
+      // Commands are not instructions and teach nothing.
+      if (auto s = obey(*command, asked, context); !s) return tl::unexpected(s.error());
+      continue;
+    }
+    dialogue_->count_reply(asked, *text);
+    if (const auto* ambiguous = std::get_if<language::Ambiguous>(&reply)) {
+      auto settled = settle(*ambiguous, asked, context, *text);
+      if (!settled) return tl::unexpected(settled.error());
+      reply = *settled;
+    }
+    std::optional<std::string> why;
+    if (const auto* u = std::get_if<language::Unusable>(&reply)) why = u->reason;
+    else why = accept(reply);
+    if (!why) return Heard{reply, *text};
+    explain(*why, context);
+    if (!person() && ++unusable > agent_.options_.max_retries) return Heard{std::nullopt, *text};
+  }
+}
+
+TaskLearningAgent::Session::Flow<language::Reply> TaskLearningAgent::Session::settle(
+    const language::Ambiguous& first, const Question& asked, language::ReplyContext& context,
+    const std::string& text) {
+  language::Ambiguous ambiguous = first;
+  // Each phrase is asked about once; a reader that still finds a settled
+  // phrase ambiguous gets an honest "I still cannot tell".
+  for (;;) {
+    for (const auto& s : context.settled)
+      if (s.phrase == ambiguous.phrase)
+        return language::Reply(language::Unusable{"I still cannot tell which " + ambiguous.phrase + " you mean.",
+                                                  agent_.understanding_.example_replies(world(), context), {}});
+    language::ReplyContext which = this->context(language::Asked::kWhich, context.object);
+    which.choices = ambiguous.candidates;
+    Question q = question(QuestionKind::kWhich, ambiguous.question, asked.object, asked.goal, asked.action);
+    q.choices = ambiguous.candidates;
+    auto heard = converse(q, which, [&](const language::Reply& r) -> std::optional<std::string> {
+      if (const auto* chosen = std::get_if<language::Chosen>(&r))
+        if (std::find(ambiguous.candidates.begin(), ambiguous.candidates.end(), chosen->object) !=
+            ambiguous.candidates.end())
+          return std::nullopt;
+      return "I asked which one you mean.";
+    });
+    if (!heard) return tl::unexpected(heard.error());
+    if (!heard->reply)
+      return language::Reply(language::Unusable{"I could not tell which " + ambiguous.phrase + " you mean.", {}, {}});
+    context.settled.push_back({ambiguous.phrase, std::get<language::Chosen>(*heard->reply).object});
+    language::Reply again = agent_.understanding_.reply(world(), context, text);
+    const auto* still = std::get_if<language::Ambiguous>(&again);
+    if (still == nullptr) return again;
+    ambiguous = *still;
+  }
+}
+
+TaskLearningAgent::Session::Flow<bool> TaskLearningAgent::Session::confirm(const Question& asked) {
+  auto heard = converse(asked, context(language::Asked::kYesNo, asked.object),
+                        [](const language::Reply& r) -> std::optional<std::string> {
+                          if (std::holds_alternative<language::YesNo>(r)) return std::nullopt;
+                          return "I asked a yes-or-no question.";
+                        });
+  if (!heard) return tl::unexpected(heard.error());
+  if (!heard->reply) return false;
+  bool yes = std::get<language::YesNo>(*heard->reply).yes;
+  if (yes) begin_lesson(heard->text);
+  return yes;
+}
+
+void TaskLearningAgent::Session::explain(const std::string& reason, const language::ReplyContext& context) {
+  std::vector<std::string> examples = agent_.understanding_.example_replies(world(), context);
+  std::string text = reason;
+  if (!text.empty() && text.back() != '.' && text.back() != '?' && text.back() != '!') text += ".";
+  if (!examples.empty()) text += " You could say, for example, " + with_period(quoted_examples(examples, 2));
+  say(text, Voice::kResponse);
+}
+
+TaskLearningAgent::Session::Step TaskLearningAgent::Session::obey(const language::Command& command,
+                                                                  const Question& asked,
+                                                                  const language::ReplyContext& context) {
+  switch (command.kind) {
+    case language::Command::Kind::kHelp: help(asked, context); return {};
+    case language::Command::Kind::kStatus: status(asked); return {};
+    case language::Command::Kind::kUndo: return undo();
+    case language::Command::Kind::kForget:
+      if (auto s = forget(command.argument); !s) return stop(s.error());
+      return {};
+    case language::Command::Kind::kQuit: return stop(Error{ErrorCode::kCancelled, "the instructor quit"});
+  }
+  return {};
+}
+
+void TaskLearningAgent::Session::help(const Question& asked, const language::ReplyContext& context) {
+  say("I asked: " + asked.text, Voice::kResponse);
+  std::vector<std::string> examples = agent_.understanding_.example_replies(world(), context);
+  std::string kinds = kinds_of_answer(context.asked);
+  say(kinds + (examples.empty() ? "." : ", for example " + with_period(quoted_examples(examples, 3))), Voice::kResponse);
+  say("You can also type: help; status (what I see and what I have learned); undo (forget what your last answer "
+      "taught me); forget <kind of object> (forget where that kind of thing goes); quit, or Ctrl-D (stop; what I "
+      "learned is kept).",
+      Voice::kResponse);
+}
+
+void TaskLearningAgent::Session::status(const Question& asked) {
+  const World& w = world();
+  const Universe& u = *w.universe;
+  const Vocabulary& v = w.vocabulary;
+  std::vector<std::string> doors;
+  for (ObjectId p : u.of_kind(ObjectKind::kReceptacle)) {
+    if (!w.state.holds(Fact(v.openable, {p}))) continue;
+    doors.push_back(language::spoken_name(w, p) + " is " + (w.state.holds(Fact(v.closed, {p})) ? "closed" : "open"));
+  }
+  std::string seen = "I see this: " + (doors.empty() ? std::string() : language::list_phrase(doors) + ".");
+  for (ObjectId place = 0; place < u.size(); ++place) {
+    if (u.info(place).kind == ObjectKind::kItem) continue;
+    std::vector<std::string> items;
+    for (const Fact& f : w.state.facts())
+      if ((f.predicate == v.on || f.predicate == v.in) && f.arity == 2 && f.args[1] == place)
+        items.push_back(language::spoken_name(w, f.args[0]));
+    if (!items.empty())
+      seen += " " + language::capitalize(std::string(language::relation_word(w, place))) + " " +
+              language::spoken_name(w, place) + ": " + language::list_phrase(items) + ".";
+  }
+  for (const Fact& f : w.state.facts())
+    if (f.predicate == v.holding && f.arity == 1) seen += " I am holding " + language::spoken_name(w, f.args[0]) + ".";
+  say(seen, Voice::kResponse);
+  std::string doing = "I am learning ";
+  if (progress_.task.name.empty()) doing = "I have not been given a task yet";
+  else doing += "to " + language::task_phrase(progress_.task.name);
+  if (progress_.current)
+    doing += "; now I " + progress_.current->verb + " what is " + progress_.current->relation + " " +
+             language::spoken_places(w, progress_.current->places);
+  if (progress_.in_progress) doing += ", working on " + language::spoken_name(w, progress_.in_progress->object);
+  else if (asked.object) doing += ", asking about " + language::spoken_name(w, *asked.object);
+  const DialogueCounts& counts = dialogue_->counts();
+  doing += ". So far I know " + language::count_phrase(static_cast<long long>(agent_.knowledge_.goals.size()), "goal") +
+           " and " + language::count_phrase(static_cast<long long>(agent_.knowledge_.rules.size()), "rule") +
+           ", after " + language::count_phrase(counts.instructions, "instruction") + " this session.";
+  say(doing, Voice::kResponse);
+}
+
+Status TaskLearningAgent::Session::forget(const std::string& kind) {
+  std::optional<std::string> category = agent_.understanding_.category(world(), kind);
+  if (!category) {
+    // A kind that is not here may still be known.
+    std::string key = to_lower(trim(kind));
+    std::replace(key.begin(), key.end(), ' ', '-');
+    for (const GoalKnowledge& g : agent_.knowledge_.goals.all())
+      if (g.key.category == key) category = key;
+  }
+  std::vector<GoalKey> keys;
+  if (category)
+    for (const GoalKnowledge& g : agent_.knowledge_.goals.all())
+      if (g.key.category == *category) keys.push_back(g.key);
+  if (keys.empty()) {
+    say("I did not know where " +
+            (category ? std::string(language::article_for(*category)) + " " + language::spoken_category(*category)
+                      : std::string(trim(kind))) +
+            " goes, so there is nothing to forget.",
+        Voice::kResponse);
+    return {};
+  }
+  for (const GoalKey& key : keys) {
+    agent_.knowledge_.goals.remove(key);
+    // An undo must not bring it back either.
+    for (Lesson& lesson : lessons_) lesson.knowledge.goals.remove(key);
+    if (agent_.store_) {
+      if (auto s = agent_.store_->remove_goal(key); !s) return s;
+    }
+  }
+  say("I forgot where " + std::string(language::article_for(*category)) + " " + language::spoken_category(*category) +
+          " goes; I will ask when I meet one.",
+      Voice::kResponse);
+  return {};
+}
+
+}  // namespace apprentice

@@ -1,0 +1,154 @@
+#include "agent/explanation.h"
+
+#include <algorithm>
+
+#include "language/generation.h"
+#include "language/narration.h"
+#include "util/text.h"
+
+namespace apprentice {
+
+namespace {
+
+using language::spoken_category;
+
+// A fact about things named in words, in the present tense: "the fridge is
+// closed", "I am holding the object".
+std::string fact_words(const std::string& predicate, bool positive, const std::vector<std::string>& args) {
+  auto arg = [&](std::size_t i) { return i < args.size() ? args[i] : std::string("something"); };
+  std::string is = positive ? " is " : " is not ";
+  if ((predicate == "in" || predicate == "on") && args.size() == 2) return arg(0) + is + predicate + " " + arg(1);
+  if (predicate == "closed") return arg(0) + (positive ? " is closed" : " is open");
+  if (predicate == "holding") return std::string("I am ") + (positive ? "" : "not ") + "holding " + arg(0);
+  if (predicate == "handempty") return positive ? "my hand is empty" : "my hand is full";
+  if (predicate == "openable") return arg(0) + (positive ? " has a door" : " has no door");
+  if (predicate == "grabbable") return arg(0) + (positive ? " can be picked up" : " cannot be picked up");
+  if (predicate == "receptacle" || predicate == "surface")
+    return arg(0) + is + std::string(language::article_for(predicate)) + " " + predicate;
+  std::string out = "\"" + spoken_category(predicate) + "\"" + (positive ? " holds" : " does not hold");
+  if (!args.empty()) out += " for " + language::list_phrase(args);
+  return out;
+}
+
+std::vector<std::string> template_arguments(const GoalTemplateLiteral& literal, const std::string& category) {
+  std::vector<std::string> args;
+  for (const GoalTemplateArgument& a : literal.arguments)
+    args.push_back(a.object_of_interest ? std::string(language::article_for(category)) + " " + spoken_category(category)
+                                        : "the " + spoken_category(a.category));
+  return args;
+}
+
+// How the rule's variables are spoken: "the object", "the fridge", "the
+// receptacle", "the second receptacle", "the other item".
+std::vector<std::string> variable_names(const Rule& rule) {
+  std::vector<std::string> names;
+  for (const RuleVariable& v : rule.variables) {
+    if (v.object_of_interest) {
+      names.push_back(v.category ? "the object (" + std::string(language::article_for(*v.category)) + " " +
+                                       spoken_category(*v.category) + ")"
+                                 : "the object");
+      continue;
+    }
+    if (v.category) {
+      names.push_back("the " + spoken_category(*v.category));
+      continue;
+    }
+    std::string base = v.name.size() > 1 && v.name[1] == 'r'   ? "receptacle"
+                       : v.name.size() > 1 && v.name[1] == 's' ? "surface"
+                                                               : "item";
+    bool numbered = v.name.size() > 2;
+    std::string name = base == "item" ? "the other item" : "the " + base;
+    if (numbered) name = "the " + std::string(base == "item" ? "other item " : base + " ") + v.name.substr(2);
+    names.push_back(name);
+  }
+  return names;
+}
+
+std::string pattern_words(const Domain& domain, const LiteralPattern& literal, const std::vector<std::string>& names) {
+  std::vector<std::string> args;
+  for (std::uint8_t i = 0; i < literal.atom.arity; ++i) args.push_back(names.at(literal.atom.args[i]));
+  return fact_words(domain.predicates.at(literal.atom.predicate).name, literal.positive, args);
+}
+
+std::string action_words(const Domain& domain, const Rule& rule, const std::vector<std::string>& names) {
+  const std::string& schema = domain.actions.at(rule.action).name;
+  std::vector<std::string> args;
+  for (VariableId v : rule.action_args) args.push_back(names.at(v));
+  auto arg = [&](std::size_t i) { return i < args.size() ? args[i] : std::string("it"); };
+  if (schema == "open") return "open " + arg(0);
+  if (schema == "close") return "close " + arg(0);
+  if (schema == "pick-up") return "pick up " + arg(0) + " from " + arg(1);
+  if (schema == "pick-up-from") return "take " + arg(0) + " out of " + arg(1);
+  if (schema == "put-in") return "put " + arg(0) + " in " + arg(1);
+  if (schema == "put-on") return "put " + arg(0) + " on " + arg(1);
+  return spoken_category(schema) + (args.empty() ? "" : " " + language::list_phrase(args));
+}
+
+std::string subtask_phrase(const LearnedSubtask& s) {
+  return s.verb + " what is " + s.relation + " the " + spoken_category(s.place_category);
+}
+
+}  // namespace
+
+std::string explain_task(const TaskKnowledge& task) {
+  std::vector<std::string> steps;
+  for (const LearnedSubtask& s : task.subtasks) steps.push_back(subtask_phrase(s));
+  std::string out = "To " + language::task_phrase(task.name) + ":";
+  if (steps.empty()) return out + " nothing is known yet.";
+  for (std::size_t i = 0; i < steps.size(); ++i) out += (i == 0 ? " " : ", then ") + steps[i];
+  return out + ".";
+}
+
+std::string explain_goal(const GoalKnowledge& goal) {
+  const GoalKey& key = goal.key;
+  std::string subject = std::string(language::article_for(key.category)) + " " + spoken_category(key.category);
+  std::vector<std::string> parts;
+  // What becomes of the object comes first, as the agent reads goals back.
+  std::vector<GoalTemplateLiteral> ordered = goal.literals;
+  std::stable_partition(ordered.begin(), ordered.end(), [](const GoalTemplateLiteral& l) {
+    return (l.predicate == "in" || l.predicate == "on") && !l.arguments.empty() && l.arguments[0].object_of_interest;
+  });
+  for (const GoalTemplateLiteral& l : ordered) {
+    std::vector<std::string> args = template_arguments(l, key.category);
+    bool about_object = !l.arguments.empty() && l.arguments[0].object_of_interest;
+    if ((l.predicate == "in" || l.predicate == "on") && args.size() == 2) {
+      std::string where = l.positive ? l.predicate : (l.predicate == "in" ? "out of" : "off");
+      parts.push_back((about_object ? subject + (l.positive ? " goes " : " ends ") : args[0] + " ends ") + where + " " + args[1]);
+    } else if (l.predicate == "closed" && args.size() == 1) {
+      parts.push_back(args[0] + " ends " + (l.positive ? "closed" : "open"));
+    } else {
+      parts.push_back(fact_words(l.predicate, l.positive, args) + " at the end");
+    }
+  }
+  std::string outcome = parts.size() == 2 ? parts[0] + ", and " + parts[1] : language::list_phrase(parts);
+  return "When I " + key.subtask + " the " + spoken_category(key.place) + " (to " + language::task_phrase(key.task) +
+         "), " + outcome + ".";
+}
+
+std::string explain_rule(const Domain& domain, const Rule& rule) {
+  std::vector<std::string> names = variable_names(rule);
+  std::vector<std::string> goal, state;
+  for (const LiteralPattern& l : rule.goal) goal.push_back(pattern_words(domain, l, names));
+  for (const LiteralPattern& l : rule.conditions) {
+    // "the receptacle is a receptacle" says nothing a person needs.
+    const std::string& predicate = domain.predicates.at(l.atom.predicate).name;
+    if (l.positive && (predicate == "receptacle" || predicate == "surface")) continue;
+    state.push_back(pattern_words(domain, l, names));
+  }
+  std::string out = rule.subtask ? "While I " + *rule.subtask + ", when" : "When";
+  out += " the goal is that " + join(goal, " and ");
+  if (!state.empty()) out += ", and " + language::list_phrase(state);
+  out += ": " + action_words(domain, rule, names) + " (" + language::count_phrase(rule.steps_to_goal, "step") +
+         " from the goal).";
+  return language::capitalize(out);
+}
+
+std::string explain_provenance(const Provenance& provenance) {
+  std::string source = provenance.source;
+  if (source.rfind("instructor: ", 0) == 0) source = "the instructor: " + source.substr(12);
+  else if (source.rfind("llm: ", 0) == 0) source = "the language model: " + source.substr(5);
+  else if (source.rfind("corpus: ", 0) == 0) source = "recorded language-model answers: " + source.substr(8);
+  return "learned on " + provenance.object + " from " + source;
+}
+
+}  // namespace apprentice

@@ -1,0 +1,107 @@
+#include "experiment/runner.h"
+
+#include <algorithm>
+
+#include <nlohmann/json.hpp>
+
+#include "util/json.h"
+
+#include "util/log.h"
+
+namespace apprentice {
+
+std::string per_condition_llm_spec(const std::string& spec, const std::string& condition) {
+  return llm::spec_for_condition(spec, condition);
+}
+
+Result<bool> check_llm_before_run(const std::string& spec, const llm::LlmOptions& options, bool optional) {
+  auto reachable = llm::check_llm_connection(spec, options);
+  if (reachable) return true;
+  if (!optional) {
+    Error error = reachable.error();
+    error.message += " (--llm-optional goes on without it)";
+    return tl::unexpected(std::move(error));
+  }
+  spdlog::warn("{}; going on without the LLM (--llm-optional)", reachable.error().message);
+  return false;
+}
+
+namespace {
+
+LlmFactory make_factory(std::string spec, llm::LlmOptions options, ExperimentObserver* observer) {
+  return [spec = std::move(spec), options = std::move(options), observer]() -> Result<std::unique_ptr<llm::LlmClient>> {
+    auto client = llm::make_llm_client(spec, options);
+    if (!client) return tl::unexpected(client.error());
+    if (observer) return observe_llm(std::move(*client), *observer);
+    return std::move(*client);
+  };
+}
+
+}  // namespace
+
+Result<ExperimentResults> run_experiment(const Scenario& scenario, const ExperimentRequest& request) {
+  ExperimentResults out;
+  std::vector<Condition> conditions;
+  if (request.conditions.empty()) {
+    for (const std::string& name : paper_condition_names()) {
+      auto condition = parse_condition(name);
+      if (!condition) return tl::unexpected(condition.error());
+      if (condition->llm && !request.llm_spec) out.skipped.push_back(name);
+      else conditions.push_back(*condition);
+    }
+  } else {
+    for (const std::string& name : request.conditions) {
+      auto condition = parse_condition(name);
+      if (!condition) return tl::unexpected(condition.error());
+      conditions.push_back(*condition);
+    }
+  }
+  ExperimentOptions options = request.options;
+  if (request.llm_spec && std::any_of(conditions.begin(), conditions.end(), [](const Condition& c) { return c.llm; })) {
+    auto reachable = check_llm_before_run(*request.llm_spec, request.llm_options, request.llm_optional);
+    if (!reachable) return tl::unexpected(reachable.error());
+    options.llm_disabled = !*reachable;
+  }
+  const int count = static_cast<int>(conditions.size());
+  for (int i = 0; i < count; ++i) {
+    const Condition& condition = conditions[i];
+    if (request.llm_spec) {
+      std::string spec = count > 1 ? per_condition_llm_spec(*request.llm_spec, condition.name) : *request.llm_spec;
+      options.llm = make_factory(spec, request.llm_options, request.observer);
+    }
+    if (request.observer) request.observer->condition_started(condition.name, i, count);
+    spdlog::info("running condition {}", condition.name);
+    auto result = run_condition(scenario, condition, options);
+    if (!result) return tl::unexpected(prefix_error(result.error(), "condition " + condition.name));
+    if (request.observer) request.observer->condition_finished(*result);
+    if (request.on_result) {
+      if (auto status = request.on_result(*result); !status) return tl::unexpected(status.error());
+    }
+    out.results.push_back(std::move(*result));
+  }
+  return out;
+}
+
+std::string results_json(const std::vector<ConditionResult>& results) {
+  nlohmann::json all = nlohmann::json::array();
+  for (const ConditionResult& r : results)
+    all.push_back(nlohmann::json{{"condition", r.condition},
+                                 {"llm_failures", r.llm_failures},
+                                 {"llm_ensemble", r.llm_ensemble},
+                                 {"completion_rate", r.completion_rate},
+                                 {"assertions_achieved", r.assertions_achieved},
+                                 {"assertions_total", r.assertions_total},
+                                 {"objects_done", r.objects_done},
+                                 {"objects_total", r.objects_total},
+                                 {"instructions", r.counts.instructions},
+                                 {"words", r.counts.words},
+                                 {"yes_no", r.counts.yes_no},
+                                 {"relevance", r.relevance ? nlohmann::json(*r.relevance) : nlohmann::json(nullptr)},
+                                 {"llm_calls", r.llm_calls},
+                                 {"llm_tokens", r.llm_tokens},
+                                 {"search_nodes", r.search_nodes},
+                                 {"wall_ms", r.wall_ms}});
+  return dump_json(all, 2);
+}
+
+}  // namespace apprentice

@@ -1,0 +1,391 @@
+#include "language/narration.h"
+
+#include <algorithm>
+#include <set>
+#include <variant>
+
+#include "language/generation.h"
+#include "util/text.h"
+
+namespace apprentice::language {
+namespace {
+
+// A clause whose noun phrases are still objects, so that one already
+// mentioned can become "it".
+struct Clause {
+  std::vector<std::variant<std::string, ObjectId>> parts;
+
+  Clause& word(std::string w) {
+    parts.emplace_back(std::move(w));
+    return *this;
+  }
+  Clause& thing(ObjectId o) {
+    parts.emplace_back(o);
+    return *this;
+  }
+  std::optional<ObjectId> last_thing() const {
+    for (auto it = parts.rbegin(); it != parts.rend(); ++it)
+      if (const ObjectId* o = std::get_if<ObjectId>(&*it)) return *o;
+    return std::nullopt;
+  }
+  std::optional<ObjectId> first_thing() const {
+    for (const auto& part : parts)
+      if (const ObjectId* o = std::get_if<ObjectId>(&part)) return *o;
+    return std::nullopt;
+  }
+  bool mentions(ObjectId o) const {
+    return std::any_of(parts.begin(), parts.end(), [&](const auto& p) {
+      const ObjectId* id = std::get_if<ObjectId>(&p);
+      return id && *id == o;
+    });
+  }
+  // What "it" can stand for in this clause after `previous`: the last thing
+  // `previous` named, else the first, if this clause names it too.
+  std::optional<ObjectId> pronoun_after(const Clause& previous) const {
+    for (auto candidate : {previous.last_thing(), previous.first_thing()})
+      if (candidate && mentions(*candidate)) return candidate;
+    return std::nullopt;
+  }
+  // The words, with the first mention of `it` (if any) said as "it".
+  std::string render(const World& world, std::optional<ObjectId> it = std::nullopt) const {
+    std::vector<std::string> words;
+    bool pronoun_used = false;
+    for (const auto& part : parts) {
+      if (const std::string* w = std::get_if<std::string>(&part)) {
+        words.push_back(*w);
+      } else {
+        ObjectId o = std::get<ObjectId>(part);
+        if (it && *it == o && !pronoun_used) {
+          words.emplace_back("it");
+          pronoun_used = true;
+        } else {
+          words.push_back(spoken_name(world, o));
+        }
+      }
+    }
+    return join(words, " ");
+  }
+};
+
+bool is_placement(const World& world, const Fact& f) {
+  return (f.predicate == world.vocabulary.in || f.predicate == world.vocabulary.on) && f.arity == 2;
+}
+
+std::string predicate_words(const World& world, PredicateId predicate) {
+  return spoken_category(world.domain->predicates.at(predicate).name);
+}
+
+// "the ketchup is in the fridge" with `be` = {"is", "is not"} or {"should
+// be", "should not be"}.
+std::string fact_sentence(const World& world, const Literal& literal, std::string_view be, std::string_view be_not) {
+  const Vocabulary& v = world.vocabulary;
+  const Fact& f = literal.fact;
+  std::string is = " " + std::string(literal.positive ? be : be_not) + " ";
+  if (is_placement(world, f))
+    return spoken_name(world, f.args[0]) + is + (f.predicate == v.in ? "in " : "on ") + spoken_name(world, f.args[1]);
+  if (f.predicate == v.closed && f.arity == 1) return spoken_name(world, f.args[0]) + " " + std::string(be) + (literal.positive ? " closed" : " open");
+  if (f.predicate == v.holding && f.arity == 1) {
+    std::string am = be == "is" ? "am" : std::string(be);
+    return "I " + am + (literal.positive ? " " : " not ") + "holding " + spoken_name(world, f.args[0]);
+  }
+  if (f.predicate == v.handempty) return std::string("my hand ") + std::string(be) + (literal.positive ? " empty" : " full");
+  std::string words = predicate_words(world, f.predicate);
+  if (f.arity == 0) return "it" + is + words;
+  std::string out = spoken_name(world, f.args[0]) + is + words;
+  for (std::uint16_t i = 1; i < f.arity; ++i) out += (i == 1 ? " " : " and ") + spoken_name(world, f.args[i]);
+  return out;
+}
+
+std::vector<Literal> placements_first(const World& world, const Goal& goal) {
+  std::vector<Literal> ordered = goal.literals;
+  std::stable_partition(ordered.begin(), ordered.end(),
+                        [&](const Literal& l) { return is_placement(world, l.fact); });
+  return ordered;
+}
+
+// "goes in the fridge" / "ends closed": one literal as an outcome.
+std::string outcome(const World& world, ObjectId object, const Literal& literal, std::string_view subject) {
+  const Vocabulary& v = world.vocabulary;
+  const Fact& f = literal.fact;
+  if (is_placement(world, f)) {
+    std::string where = (f.predicate == v.in ? "in " : "on ") + spoken_name(world, f.args[1]);
+    if (!literal.positive) where = (f.predicate == v.in ? "out of " : "off ") + spoken_name(world, f.args[1]);
+    if (f.args[0] == object) return std::string(subject) + (literal.positive ? " goes " : " ends ") + where;
+    return spoken_name(world, f.args[0]) + " ends " + where;
+  }
+  if (f.predicate == v.closed && f.arity == 1)
+    return spoken_name(world, f.args[0]) + " ends " + (literal.positive ? "closed" : "open");
+  if (f.predicate == v.holding && f.arity == 1)
+    return std::string("I end up ") + (literal.positive ? "" : "not ") + "holding " + spoken_name(world, f.args[0]);
+  if (f.predicate == v.handempty) return std::string("my hand ends ") + (literal.positive ? "empty" : "full");
+  return fact_sentence(world, literal, "is", "is not") + " at the end";
+}
+
+std::string join_outcomes(const std::vector<std::string>& parts) {
+  if (parts.size() == 2) return parts[0] + ", and " + parts[1];
+  return list_phrase(parts);
+}
+
+bool is_vowel(char c) { return c == 'a' || c == 'e' || c == 'i' || c == 'o' || c == 'u'; }
+
+// "opened", "put", "wiped": the past tense of a verb, for reports.
+std::string past_tense(const std::string& verb) {
+  static const std::pair<const char*, const char*> kIrregular[] = {
+      {"put", "put"},     {"set", "set"},     {"take", "took"},   {"throw", "threw"}, {"get", "got"},
+      {"hang", "hung"},   {"make", "made"},   {"sweep", "swept"}, {"feed", "fed"},    {"shut", "shut"},
+      {"cut", "cut"},     {"bring", "brought"}, {"lay", "laid"},  {"hold", "held"},   {"give", "gave"}};
+  for (const auto& [base, past] : kIrregular)
+    if (verb == base) return past;
+  if (verb.empty()) return verb;
+  if (verb.back() == 'e') return verb + "d";
+  if (verb.size() > 1 && verb.back() == 'y' && !is_vowel(verb[verb.size() - 2]))
+    return verb.substr(0, verb.size() - 1) + "ied";
+  return verb + "ed";
+}
+
+std::string schema_name(const World& world, const Action& action) {
+  return world.domain->actions.at(action.schema).name;
+}
+
+// The action as a clause, in the past tense (`past`) or as a command.
+Clause action_clause(const World& world, const Action& action, bool past) {
+  const std::string schema = schema_name(world, action);
+  auto args = action.arguments();
+  Clause c;
+  if (schema == "open" && args.size() == 1) return c.word(past ? "opened" : "open").thing(args[0]);
+  if (schema == "close" && args.size() == 1) return c.word(past ? "closed" : "close").thing(args[0]);
+  if (schema == "pick-up" && !args.empty()) return c.word(past ? "picked up" : "pick up").thing(args[0]);
+  if (schema == "pick-up-from" && args.size() == 2)
+    return c.word(past ? "took" : "take").thing(args[0]).word("out of").thing(args[1]);
+  if ((schema == "put-in" || schema == "put-on") && args.size() == 2)
+    return c.word("put").thing(args[0]).word(schema == "put-in" ? "in" : "on").thing(args[1]);
+  std::vector<std::string> words = split_words(spoken_category(schema));
+  if (past && !words.empty()) words[0] = past_tense(words[0]);
+  c.word(join(words, " "));
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    if (i > 0) c.word("and");
+    c.thing(args[i]);
+  }
+  return c;
+}
+
+// Why a precondition fails, as a clause about the things involved.
+Clause failed_precondition(const World& world, const State& state, const Literal& literal) {
+  const Vocabulary& v = world.vocabulary;
+  const Fact& f = literal.fact;
+  Clause c;
+  if (f.predicate == v.holding && f.arity == 1 && literal.positive) return c.word("I am not holding").thing(f.args[0]);
+  if (f.predicate == v.handempty && literal.positive) {
+    for (const Fact& held : state.facts())
+      if (held.predicate == v.holding && held.arity == 1) return c.word("I am holding").thing(held.args[0]);
+    return c.word("my hand is not empty");
+  }
+  if (f.predicate == v.closed && f.arity == 1)
+    return c.thing(f.args[0]).word(literal.positive ? "is already open" : "is closed");
+  if (f.predicate == v.openable && f.arity == 1) return c.thing(f.args[0]).word("has no door");
+  if (f.predicate == v.grabbable && f.arity == 1) return c.thing(f.args[0]).word("cannot be picked up");
+  if (f.predicate == v.surface && f.arity == 1) return c.thing(f.args[0]).word("is not something to put things on");
+  if (f.predicate == v.receptacle && f.arity == 1) return c.thing(f.args[0]).word("is not something to put things in");
+  if (is_placement(world, f)) {
+    std::string where = f.predicate == v.in ? "in" : "on";
+    return c.thing(f.args[0]).word(literal.positive ? "is not " + where : "is already " + where).thing(f.args[1]);
+  }
+  return c.word("it is not so that " + fact_sentence(world, literal, "is", "is not"));
+}
+
+}  // namespace
+
+// --- Words -------------------------------------------------------------------
+
+std::string spoken_category(std::string_view category) {
+  std::string out(category);
+  std::replace(out.begin(), out.end(), '-', ' ');
+  return out;
+}
+
+std::string spoken_name(const World& world, ObjectId object) {
+  const ObjectInfo& info = world.universe->info(object);
+  std::string name = spoken_category(info.category);
+  if (!info.properties.empty() && world.universe->with_category(info.category).size() > 1)
+    name = join(info.properties, " ") + " " + name;
+  return "the " + name;
+}
+
+std::string spoken_location(const World& world, ObjectId object) {
+  const Vocabulary& v = world.vocabulary;
+  for (const Fact& f : world.state.facts()) {
+    if (f.arity == 0 || f.args[0] != object) continue;
+    if (f.predicate == v.on && f.arity == 2) return "on " + spoken_name(world, f.args[1]);
+    if (f.predicate == v.in && f.arity == 2) return "in " + spoken_name(world, f.args[1]);
+    if (f.predicate == v.holding && f.arity == 1) return "in my hand";
+  }
+  return "";
+}
+
+std::string spoken_name_and_location(const World& world, ObjectId object) {
+  std::string where = spoken_location(world, object);
+  return spoken_name(world, object) + (where.empty() ? "" : " " + where);
+}
+
+std::string spoken_places(const World& world, std::span<const ObjectId> places) {
+  if (places.size() == 1) return spoken_name(world, places[0]);
+  if (!places.empty()) {
+    const std::string& category = world.universe->info(places[0]).category;
+    bool one_category = std::all_of(places.begin(), places.end(), [&](ObjectId p) {
+      return world.universe->info(p).category == category;
+    });
+    if (one_category && world.universe->with_category(category).size() == places.size())
+      return "every " + spoken_category(category);
+  }
+  std::vector<std::string> names;
+  for (ObjectId p : places) names.push_back(spoken_name(world, p));
+  return list_phrase(names);
+}
+
+std::string_view relation_word(const World& world, ObjectId place) {
+  return world.universe->info(place).kind == ObjectKind::kSurface ? "on" : "in";
+}
+
+std::string task_phrase(std::string_view task_name) {
+  static const std::set<std::string> kDeterminers = {"the", "a", "an", "my", "your", "our", "this", "that",
+                                                     "these", "those", "all", "every", "some", "his", "her", "their"};
+  static const std::set<std::string> kParticles = {"up", "away", "out", "off", "down"};
+  std::vector<std::string> words = split_words(task_name);
+  if (words.size() < 2) return join(words, " ");
+  std::size_t object_start = kParticles.count(words[1]) && words.size() > 2 ? 2 : 1;
+  if (kDeterminers.count(words[object_start])) return join(words, " ");
+  words.insert(words.begin() + static_cast<std::ptrdiff_t>(object_start), "the");
+  return join(words, " ");
+}
+
+std::string count_phrase(long long n, std::string_view singular, std::string_view plural) {
+  std::string many = plural.empty() ? std::string(singular) + "s" : std::string(plural);
+  return std::to_string(n) + " " + (n == 1 ? std::string(singular) : many);
+}
+
+std::string list_phrase(const std::vector<std::string>& items) {
+  if (items.empty()) return "";
+  if (items.size() == 1) return items[0];
+  if (items.size() == 2) return items[0] + " and " + items[1];
+  std::string out;
+  for (std::size_t i = 0; i + 1 < items.size(); ++i) out += items[i] + ", ";
+  return out + "and " + items.back();
+}
+
+std::string capitalize(std::string text) {
+  if (!text.empty() && text[0] >= 'a' && text[0] <= 'z') text[0] = static_cast<char>(text[0] - 'a' + 'A');
+  return text;
+}
+
+// --- Questions ---------------------------------------------------------------
+
+std::string ask_task() { return "What task should I learn?"; }
+
+std::string ask_task_step(std::string_view task_name, bool first) {
+  return std::string("What should I do ") + (first ? "first" : "next") + " to " + task_phrase(task_name) + "?";
+}
+
+std::string ask_goal(const World& world, ObjectId object) {
+  return "Where should " + spoken_name_and_location(world, object) + " go?";
+}
+
+std::string ask_subtask_end(std::string_view verb, const World& world, std::span<const ObjectId> places) {
+  std::string where = places.empty() ? "" : " " + std::string(relation_word(world, places[0])) + " " + spoken_places(world, places);
+  return "Is there more to " + std::string(verb) + where + ", or is that all?";
+}
+
+std::string ask_next_action(const World& world, const Goal& goal) {
+  return "What should I do next so that " + goal_facts(world, goal) + "?";
+}
+
+// --- Goals -------------------------------------------------------------------
+
+std::string goal_facts(const World& world, const Goal& goal) {
+  std::vector<std::string> parts;
+  for (const Literal& l : placements_first(world, goal)) parts.push_back(fact_sentence(world, l, "is", "is not"));
+  return join(parts, " and ");
+}
+
+std::string goal_outcome(const World& world, ObjectId object, const Goal& goal, std::string_view subject) {
+  std::vector<Literal> ordered = placements_first(world, goal);
+  // What becomes of the object itself comes first.
+  std::stable_partition(ordered.begin(), ordered.end(), [&](const Literal& l) {
+    return is_placement(world, l.fact) && l.fact.args[0] == object;
+  });
+  std::vector<std::string> parts;
+  for (const Literal& l : ordered) parts.push_back(outcome(world, object, l, subject));
+  return join_outcomes(parts);
+}
+
+std::string read_back_goal(const World& world, ObjectId object, const Goal& goal) {
+  return "So " + goal_outcome(world, object, goal, spoken_name(world, object)) + ".";
+}
+
+std::string announce_known_goal(const World& world, ObjectId object, const Goal& goal) {
+  return "Next, " + spoken_name_and_location(world, object) + ": " + goal_outcome(world, object, goal, "it") + ".";
+}
+
+std::string expected_fact(const World& world, const Literal& literal) {
+  return fact_sentence(world, literal, "should be", "should not be");
+}
+
+// --- What was done -------------------------------------------------------------
+
+std::string report_actions(const World& world, std::span<const Action> actions) {
+  std::vector<Clause> clauses;
+  for (std::size_t i = 0; i < actions.size(); ++i) {
+    const Action& a = actions[i];
+    // Picking up from a surface and then putting down is one step to say.
+    if (schema_name(world, a) == "pick-up" && i + 1 < actions.size()) {
+      const Action& next = actions[i + 1];
+      std::string next_schema = schema_name(world, next);
+      if ((next_schema == "put-in" || next_schema == "put-on") && next.arity > 0 && a.arity > 0 &&
+          next.args[0] == a.args[0])
+        continue;
+    }
+    clauses.push_back(action_clause(world, a, true));
+  }
+  if (clauses.empty()) return "";
+  std::vector<std::string> said;
+  const Clause* previous = nullptr;
+  for (const Clause& c : clauses) {
+    said.push_back(c.render(world, previous ? c.pronoun_after(*previous) : std::nullopt));
+    previous = &c;
+  }
+  return "I " + list_phrase(said) + ".";
+}
+
+std::string action_phrase(const World& world, const Action& action) {
+  return action_clause(world, action, false).render(world);
+}
+
+std::string refusal(const World& world, const Action& action) {
+  const Domain& domain = *world.domain;
+  if (!why_not_applicable(domain, *world.universe, world.state, action)) return "";
+  Clause reason;
+  bool found = false;
+  const ActionSchema& schema = domain.actions.at(action.schema);
+  for (std::size_t i = 0; i < action.arity && i < schema.parameters.size(); ++i) {
+    TypeId type = world.universe->info(action.args[i]).type;
+    if (!domain.is_subtype(type, schema.parameters[i].type)) {
+      reason.thing(action.args[i]).word("is not " + std::string(article_for(domain.types[schema.parameters[i].type].name)) +
+                                        " " + spoken_category(domain.types[schema.parameters[i].type].name));
+      found = true;
+      break;
+    }
+  }
+  if (!found) {
+    for (const Literal& l : preconditions_of(domain, action)) {
+      if (world.state.satisfies(l)) continue;
+      reason = failed_precondition(world, world.state, l);
+      found = true;
+      break;
+    }
+  }
+  Clause act = action_clause(world, action, false);
+  if (!found) return "I cannot " + act.render(world) + ".";
+  // "it" stands for what the reason is about.
+  return capitalize(reason.render(world)) + ", so I cannot " + act.render(world, reason.first_thing()) + ".";
+}
+
+}  // namespace apprentice::language

@@ -1,0 +1,87 @@
+// Inside read_reply (language/reply.h): the readers of each kind of
+// question, and the resolution of a reply's noun phrases in the world.
+// Not for use outside the language module.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "language/grounding.h"
+#include "language/reference.h"
+#include "language/reply.h"
+#include "language/reply_clauses.h"
+
+namespace apprentice::language {
+
+// A reply, read once into words, with what it is read against.
+struct ReplyInput {
+  const Grounder& grounder;
+  const World& world;
+  const ReplyContext& context;
+  std::vector<std::string> words;  // reply_words, then join_world_names
+  ReplyVocabulary vocabulary;
+
+  ReplyInput(const Grounder& g, const World& w, const ReplyContext& c, std::vector<std::string> ws);
+};
+
+// Why a reply cannot be used: the reason in plain English, and the
+// grounder's failure where there is one.
+struct Problem {
+  std::string reason;
+  std::optional<GroundingFailure> failure;
+};
+
+Unusable unusable(const ReplyInput& in, const Problem& problem);
+
+// What a noun phrase of the reply names.
+using Choice = std::variant<ObjectId, Ambiguous, Problem>;
+
+class Resolver {
+ public:
+  explicit Resolver(const ReplyInput& in);
+
+  // Every object the phrase may name. A pronoun is the object asked about
+  // (a place pronoun, or any pronoun when `role` is a place, the place named
+  // last); door words name the door's receptacle; "the mug on the counter"
+  // keeps only what is there.
+  std::variant<std::vector<ObjectId>, Problem> candidates(const Chunk& chunk, Role role) const;
+  // The one thing a phrase names: the object asked about if it fits, else
+  // the only candidate, else the first of look-alikes no one can tell apart
+  // (same kind, place and properties), else the question which.
+  Choice choose(const Chunk& chunk, Role role) const;
+  Choice choose(const std::vector<ObjectId>& objects, const std::string& phrase, Role role) const;
+
+  // Whether the phrase, which names something else first, may also name
+  // the object asked about: its name ends with the phrase's noun as a
+  // closed compound ("the paper" for the newspaper) or WordNet relates them.
+  bool fits_asked(const Chunk& chunk) const;
+
+  // The place named last: in this reply, else the conversation's.
+  std::optional<ObjectId> last_place() const { return last_place_ ? last_place_ : in_.context.recent_place; }
+  void named_place(ObjectId place) { last_place_ = place; }
+  ReferenceContext reference_context() const;
+
+ private:
+  std::variant<std::vector<ObjectId>, Problem> located(std::vector<ObjectId> objects, const Chunk& chunk) const;
+
+  const ReplyInput& in_;
+  std::optional<ObjectId> last_place_;
+};
+
+Reply read_task(const ReplyInput& in);
+Reply read_structure(const ReplyInput& in);  // kTaskStep and kSubtaskEnd
+Reply read_goal(const ReplyInput& in);
+Reply read_action(const ReplyInput& in);
+Reply read_yes_no(const ReplyInput& in);
+Reply read_which(const ReplyInput& in);
+
+// The finished / go-on expressions of task-structure questions.
+bool says_finished(const std::vector<std::string>& words, const ReplyInput& in);
+bool says_proceed(const std::vector<std::string>& words);
+
+// "clear", "put away": a verb and its particle as a subtask's name.
+std::string verb_name(const std::string& verb, const std::string& particle);
+
+}  // namespace apprentice::language

@@ -1,0 +1,541 @@
+// The task, its structure, and yes/no in everyday English
+// (language/reply_reading.h).
+#include <algorithm>
+
+#include "language/generation.h"
+#include "language/reply_reading.h"
+#include "language/utterance.h"
+#include "util/text.h"
+
+namespace apprentice::language {
+namespace {
+
+using Words = std::vector<std::string>;
+
+bool is_one_of(std::string_view word, std::initializer_list<std::string_view> set) {
+  return std::find(set.begin(), set.end(), word) != set.end();
+}
+
+bool contains(const Words& words, const std::vector<std::string_view>& phrase) {
+  if (phrase.empty() || words.size() < phrase.size()) return false;
+  for (std::size_t i = 0; i + phrase.size() <= words.size(); ++i)
+    if (std::equal(phrase.begin(), phrase.end(), words.begin() + static_cast<std::ptrdiff_t>(i))) return true;
+  return false;
+}
+
+bool has_word(const Words& words, std::initializer_list<std::string_view> set) {
+  return std::any_of(words.begin(), words.end(), [&](const std::string& w) { return is_one_of(w, set); });
+}
+
+// Splits at "," only.
+std::vector<Words> pieces(const Words& words) {
+  std::vector<Words> out(1);
+  for (const std::string& w : words) {
+    if (w == ",") {
+      if (!out.back().empty()) out.emplace_back();
+    } else {
+      out.back().push_back(w);
+    }
+  }
+  if (out.back().empty()) out.pop_back();
+  return out;
+}
+
+// --- The task's name ---------------------------------------------------------
+
+// Words that only frame a request: "I want you to", "your job is", "let's".
+bool is_frame_word(std::string_view w) {
+  return is_one_of(w, {"i", "you", "we", "me", "us", "want", "would", "like", "need", "needs", "is", "am", "are",
+                       "going", "learn", "how", "time", "it", "teach", "show", "job", "task", "your", "my", "our",
+                       "the", "have", "has", "got", "today", "now", "will", "shall", "should", "must", "can",
+                       "could", "let", "help", "please", "ok", "so", "first", "about", "ready", "able", "try",
+                       "goal", "tonight", "to", "then", "here", "what", "next", "gonna", "going", "be", "this",
+                       "learning", "teaching", "want", "wanted", "new", "a"});
+}
+
+// The words after the frame: from the first word that is not a frame word.
+Words after_frame(const Words& words) {
+  std::size_t cut = 0;
+  while (cut < words.size() && is_frame_word(words[cut])) ++cut;
+  if (cut == words.size()) cut = 0;
+  Words rest(words.begin() + static_cast<std::ptrdiff_t>(cut), words.end());
+  for (const std::vector<std::string_view>& lead : std::vector<std::vector<std::string_view>>{
+           {"let", "us"}, {"help", "me"}, {"help", "us"}, {"please"}, {"we", "will"}, {"you", "will"}, {"i", "will"}})
+    if (rest.size() > lead.size() && std::equal(lead.begin(), lead.end(), rest.begin()))
+      rest.erase(rest.begin(), rest.begin() + static_cast<std::ptrdiff_t>(lead.size()));
+  while (!rest.empty() && is_one_of(rest.back(), {"today", "now", "please", "again", "tonight", "for", "us", "me"}))
+    rest.pop_back();
+  return rest;
+}
+
+bool verb_like(const std::string& word, const ReplyInput& in, std::string& base) {
+  base = in.vocabulary.any_verb(word);
+  if (!base.empty()) return true;
+  // Without WordNet, any plain word that is not a function word.
+  if (in.grounder.lexicon().has_wordnet()) return false;
+  if (word.empty() || is_determiner(word) || is_object_pronoun(word) || is_copula(word) || is_auxiliary(word) ||
+      is_filler(word) || is_clause_break(word) || !std::all_of(word.begin(), word.end(), [](char c) {
+        return (c >= 'a' && c <= 'z') || c == '-';
+      }))
+    return false;
+  base = word;
+  return true;
+}
+
+// "the kitchen needs tidying", "kitchen tidying", "the kitchen needs to be
+// tidied": the verb's form after what it is done to.
+std::optional<TaskNamed> gerund_task(const Words& words, const ReplyInput& in) {
+  for (std::size_t i = 1; i < words.size(); ++i) {
+    const std::string& w = words[i];
+    std::string base;
+    if (w.ends_with("ing") || w.ends_with("ed")) base = in.vocabulary.any_verb(w);
+    // "kitchen cleanup": a verb run together with its particle.
+    if (base.empty() && w.size() > 4 && w.ends_with("up")) base = in.vocabulary.any_verb(w.substr(0, w.size() - 2));
+    if (base.empty() || base == w) continue;
+    std::string name = base;
+    for (std::size_t k = 0; k < words.size(); ++k) {
+      const std::string& o = words[k];
+      if (k == i || is_determiner(o) || is_copula(o) || is_auxiliary(o) || is_particle(o)) continue;
+      name += " " + o;
+    }
+    return TaskNamed{name};
+  }
+  return std::nullopt;
+}
+
+// --- The structure -----------------------------------------------------------
+
+// "done", "that is all", "we are finished", "nothing else", "that's it for
+// the table".
+bool finished_words(const Words& words) {
+  if (has_word(words, {"done", "finished", "complete", "completed"}) && !has_word(words, {"not"})) return true;
+  for (const std::vector<std::string_view>& phrase : std::vector<std::vector<std::string_view>>{
+           {"that", "is", "all"}, {"that", "is", "it"}, {"that", "is", "everything"}, {"will", "be", "all"},
+           {"would", "be", "all"}, {"nothing", "else"}, {"nothing", "more"}, {"no", "more"}, {"all", "set"},
+           {"that", "is", "enough"}, {"that", "should", "be", "it"}, {"that", "should", "do", "it"},
+           {"that", "does", "it"}, {"that", "was", "it"}, {"that", "was", "all"}, {"nothing", "left"},
+           {"the", "end"}, {"are", "through"}, {"is", "clear"}, {"is", "empty"}, {"is", "clean"}, {"is", "tidy"},
+           {"are", "clear"}, {"are", "empty"}, {"is", "cleared"}, {"is", "emptied"}, {"is", "tidied"},
+           {"is", "cleaned"}, {"are", "cleared"}, {"is", "clear", "now"}, {"whole", "task"}, {"whole", "thing"}, {"whole", "job"},
+           {"entire", "task"}, {"nothing", "to", "do"}})
+    if (contains(words, phrase)) return true;
+  return words.size() == 1 && is_one_of(words[0], {"nothing", "enough", "stop"});
+}
+
+bool proceed_words(const Words& words) {
+  if (has_word(words, {"next", "continue", "proceed", "repeat", "again", "rest", "others", "other", "remaining",
+                       "onward", "onwards"}))
+    return true;
+  for (const std::vector<std::string_view>& phrase : std::vector<std::vector<std::string_view>>{
+           {"keep", "going"}, {"keep", "on"}, {"go", "on"}, {"carry", "on"}, {"move", "on"}, {"keep", "at", "it"}, {"go", "ahead"},
+           {"keep", "it", "up"}, {"same", "way"}, {"the", "same"}, {"same", "for"}, {"same", "with"},
+           {"all", "of", "them"}, {"one", "more"}, {"not", "yet"}, {"not", "done"}, {"not", "finished"},
+           {"there", "is", "more"}})
+    if (contains(words, phrase)) return true;
+  return words.size() == 1 && is_one_of(words[0], {"more", "go", "same"});
+}
+
+// Whether the reply asks for a loop: "repeat this for everything on the
+// table", "keep doing that until the table is empty", "do this for every
+// object on the table".
+bool loop_words(const Words& words) {
+  bool verb = has_word(words, {"repeat", "keep", "do", "continue", "loop", "iterate"});
+  bool cue = has_word(words, {"while", "until", "till"}) || contains(words, {"as", "long", "as"}) ||
+             contains(words, {"for", "every"}) || contains(words, {"for", "each"}) || contains(words, {"for", "all"}) ||
+             contains(words, {"for", "everything"}) || contains(words, {"for", "anything"});
+  return (verb && cue) || (!words.empty() && words[0] == "repeat" && words.size() > 1);
+}
+
+// The longest yes or no phrase the words start with (below).
+std::optional<std::pair<std::size_t, bool>> answer_prefix(const Words& words);
+
+struct Places {
+  std::vector<ObjectId> objects;
+  std::string phrase;
+};
+
+class StructureReader {
+ public:
+  explicit StructureReader(const ReplyInput& in) : in_(in), resolver_(in) {}
+
+  Reply read() {
+    Words words = without_fillers(in_.words, in_.vocabulary);
+    if (loop_words(in_.words)) {
+      auto places = first_places(read_clauses(in_.words, in_.vocabulary));
+      if (places) return LoopNamed{relation(places->objects.front()), places->objects};
+      if (problem_) return outcome();
+    }
+    std::vector<Clause> clauses = read_clauses(in_.words, in_.vocabulary);
+    for (const Clause& clause : clauses) {
+      if (auto subtask = read_subtask(clause)) return *subtask;
+      if (problem_ || ambiguous_) break;
+    }
+    if (!problem_ && !ambiguous_ && !item_named_)
+      if (auto subtask = across_clauses(clauses)) return *subtask;
+    bool finished = false, proceed = false;
+    for (const Words& piece : pieces(in_.words)) {
+      Words kept = without_fillers(piece, in_.vocabulary);
+      if (finished_words(kept)) finished = true;
+      else if (proceed_words(piece)) proceed = true;
+    }
+    if (finished) return Finished{};
+    // "the counter next", "same with the counter": the last subtask's verb
+    // at a place named without one.
+    std::optional<Places> named;
+    if (!problem_ && !ambiguous_ && !item_named_) named = first_places(clauses);
+    if (named && !in_.context.taught_subtasks.empty()) {
+      std::vector<ObjectId> holding = holding_items(named->objects);
+      if (!holding.empty())
+        return SubtaskNamed{in_.context.taught_subtasks.back(), relation(holding.front()), holding};
+    }
+    if (proceed && !named) return Proceed{};
+    if (problem_ || ambiguous_) return outcome();
+    if (in_.context.asked == Asked::kSubtaskEnd && answer_prefix(in_.words))
+      return unusable(in_, Problem{"Please say it in words: \"that's all\" if this part is done, or \"keep going\" "
+                                   "if there is more to it.",
+                                   std::nullopt});
+    if (item_named_)
+      return unusable(in_, Problem{"First tell me the parts of the task, such as \"" + first_example() +
+                                       "\"; I will ask where each thing goes when I come to it.",
+                                   std::nullopt});
+    // A place and no verb: "the table first".
+    if (named) {
+      std::string place = distinct_noun_for(in_.world, named->objects.front());
+      return unusable(in_, Problem{"What should I do with the things " +
+                                       std::string(relation(named->objects.front()) == Relation::kOn ? "on " : "in ") +
+                                       place + "? For example: \"clear " + place + "\".",
+                                   std::nullopt});
+    }
+    return unusable(in_, Problem{"I didn't catch what comes next in the task in \"" + join(in_.words, " ") + "\".",
+                                 std::nullopt});
+  }
+
+ private:
+  Reply outcome() {
+    if (ambiguous_) return *ambiguous_;
+    return unusable(in_, *problem_);
+  }
+
+  std::string first_example() const {
+    std::vector<std::string> examples = example_replies(in_.world, in_.context);
+    return examples.empty() ? "clear the table" : examples.front();
+  }
+
+  Relation relation(ObjectId place) const {
+    return in_.world.universe->info(place).kind == ObjectKind::kSurface ? Relation::kOn : Relation::kIn;
+  }
+
+  bool holds_items(ObjectId place) const {
+    for (const Fact& f : in_.world.state.facts())
+      if ((f.predicate == in_.world.vocabulary.on || f.predicate == in_.world.vocabulary.in) && f.arity == 2 &&
+          f.args[1] == place)
+        return true;
+    return false;
+  }
+
+  std::vector<ObjectId> holding_items(const std::vector<ObjectId>& places) const {
+    std::vector<ObjectId> holding;
+    for (ObjectId id : places)
+      if (holds_items(id)) holding.push_back(id);
+    return holding;
+  }
+
+  // The verb a subtask is named by: "do" after others were taught ("then
+  // do the counter") is the last one's.
+  std::string subtask_verb(const Clause& c) const {
+    if (c.verb == "do" && !in_.context.taught_subtasks.empty()) return in_.context.taught_subtasks.back();
+    return verb_name(c.verb, c.particle);
+  }
+
+  // The places a phrase names: one, or every place of one kind ("the bags").
+  std::optional<Places> places(const Chunk& chunk) {
+    auto found = resolver_.candidates(chunk, Role::kPlace);
+    if (auto* problem = std::get_if<Problem>(&found)) {
+      if (!problem_) problem_ = *problem;
+      return std::nullopt;
+    }
+    std::vector<ObjectId> objects;
+    for (ObjectId id : std::get<std::vector<ObjectId>>(found))
+      if (in_.world.universe->info(id).kind != ObjectKind::kItem) objects.push_back(id);
+    if (objects.empty()) return std::nullopt;
+    const Universe& u = *in_.world.universe;
+    bool one_kind = std::all_of(objects.begin(), objects.end(),
+                                [&](ObjectId id) { return u.info(id).category == u.info(objects.front()).category; });
+    if (!one_kind) {
+      ambiguous_ = Ambiguous{chunk.text(), objects, say_which_question(in_.world, objects)};
+      return std::nullopt;
+    }
+    return Places{objects, chunk.text()};
+  }
+
+  std::optional<Places> location_places(const Chunk& chunk) {
+    if (!chunk.located_by || chunk.location.empty()) return std::nullopt;
+    return places(Chunk::of_words(chunk.location));
+  }
+
+  // A phrase that names something in particular: not "it", not "the things".
+  static bool specific(const Chunk& chunk) {
+    return !chunk.pronoun && !chunk.place_pronoun && !chunk.words.empty() &&
+           !std::all_of(chunk.words.begin(), chunk.words.end(), [](const std::string& w) { return is_generic_noun(w); });
+  }
+
+  // The first places a reply names, for a loop.
+  std::optional<Places> first_places(const std::vector<Clause>& clauses) {
+    for (const Clause& c : clauses) {
+      std::vector<const Chunk*> chunks;
+      if (c.subject) chunks.push_back(&*c.subject);
+      if (c.object) chunks.push_back(&*c.object);
+      for (const Chunk& other : c.others) chunks.push_back(&other);
+      for (const Chunk* chunk : chunks) {
+        if (auto found = location_places(*chunk)) return found;
+        if (specific(*chunk) && in_.vocabulary.is_name_word(chunk->words.back()))
+          if (auto found = places(*chunk)) return found;
+      }
+      for (const PrepPhrase& p : c.phrases) {
+        if (auto found = location_places(p.noun)) return found;
+        if (specific(p.noun))
+          if (auto found = places(p.noun)) return found;
+      }
+    }
+    return std::nullopt;
+  }
+
+  static bool has_place_pronoun(const Clause& c) {
+    auto there = [](const std::optional<Chunk>& chunk) { return chunk && chunk->place_pronoun; };
+    return there(c.subject) || there(c.object) ||
+           std::any_of(c.others.begin(), c.others.end(), [](const Chunk& o) { return o.place_pronoun; }) ||
+           std::any_of(c.phrases.begin(), c.phrases.end(), [](const PrepPhrase& p) { return p.noun.place_pronoun; });
+  }
+
+  // The places named last before clause `k`, for "there".
+  std::optional<Places> last_places(const std::vector<Clause>& clauses, std::size_t k) {
+    for (std::size_t at = k; at-- > 0;)
+      if (auto found = first_places({clauses[at]})) return found;
+    return std::nullopt;
+  }
+
+  // "go through the dish rack and put everything away": the verb in one
+  // clause, over everything, and the place in another.
+  std::optional<Reply> across_clauses(const std::vector<Clause>& clauses) {
+    for (std::size_t k = 0; k < clauses.size(); ++k) {
+      const Clause& c = clauses[k];
+      if (names_no_subtask(c) || c.verb == "do") continue;
+      if (c.verb_class() == VerbClass::kOpen || c.verb_class() == VerbClass::kClose) continue;
+      if (c.object && specific(*c.object)) continue;
+      // The place nearest the verb: its own clause ("store the things
+      // there": the place named just before), then the ones before it,
+      // then after.
+      std::optional<Places> found;
+      for (std::size_t d = 0; !found && !problem_ && !ambiguous_ && d < 2 * clauses.size(); ++d) {
+        std::size_t at = d <= k ? k - d : d;
+        if (d > k && at >= clauses.size()) break;
+        if (at == k && d > 0) continue;
+        found = first_places({clauses[at]});
+        if (!found && at == k && k > 0 && has_place_pronoun(c)) found = last_places(clauses, k);
+      }
+      if (!found || problem_ || ambiguous_) return std::nullopt;
+      std::vector<ObjectId> holding = holding_items(found->objects);
+      if (holding.empty()) return std::nullopt;
+      return SubtaskNamed{subtask_verb(c), relation(holding.front()), holding};
+    }
+    return std::nullopt;
+  }
+
+  // "clear the table", "store the things on the counter", "put the stuff on
+  // the counter away", "the dishes in the dish rack need to be unloaded".
+  // Verbs that say when or how, not what: no subtask is named by them.
+  static bool names_no_subtask(const Clause& c) {
+    return c.verb.empty() || c.adjective() ||
+           is_one_of(c.verb, {"be", "repeat", "keep", "continue", "go", "finish", "end", "stop", "start", "begin",
+                              "move", "come", "think", "know", "want", "need", "let", "say", "mean", "see", "look"});
+  }
+
+  std::optional<Reply> read_subtask(const Clause& c) {
+    if (names_no_subtask(c)) return std::nullopt;
+    if (c.verb_class() == VerbClass::kOpen || c.verb_class() == VerbClass::kClose) return std::nullopt;
+    std::optional<Places> found;
+    for (const std::optional<Chunk>* chunk : {&c.object, &c.subject})
+      if (!found && *chunk && specific(Chunk::of_words((*chunk)->location))) found = location_places(**chunk);
+    // The object unresolved ("the crumbs") may only describe what is at a
+    // place named after it; then it is no problem.
+    std::optional<Problem> unresolved;
+    if (!found && c.object && specific(*c.object)) {
+      auto objects = resolver_.candidates(*c.object, Role::kPlace);
+      auto* ids = std::get_if<std::vector<ObjectId>>(&objects);
+      bool place = ids && std::any_of(ids->begin(), ids->end(), [&](ObjectId id) {
+                     return in_.world.universe->info(id).kind != ObjectKind::kItem;
+                   });
+      if (place) {
+        found = places(*c.object);
+      } else if (ids) {
+        item_named_ = true;  // a particular thing: a goal or an action, not a part of the task
+        return std::nullopt;
+      } else {
+        unresolved = std::get<Problem>(objects);
+      }
+    }
+    if (!found) {
+      for (const PrepPhrase& p : c.phrases) {
+        if (!specific(p.noun) || p.preposition == Preposition::kTo) continue;
+        if (auto candidate = places(p.noun)) {
+          found = candidate;
+          break;
+        }
+      }
+    }
+    if (!found && unresolved && !problem_) problem_ = unresolved;
+    if (!found || problem_ || ambiguous_) return std::nullopt;
+    std::vector<ObjectId> holding = holding_items(found->objects);
+    if (holding.empty()) {
+      item_named_ = true;  // a place where things go, not where they are
+      return std::nullopt;
+    }
+    return SubtaskNamed{subtask_verb(c), relation(holding.front()), holding};
+  }
+
+  const ReplyInput& in_;
+  Resolver resolver_;
+  std::optional<Problem> problem_;
+  std::optional<Ambiguous> ambiguous_;
+  bool item_named_ = false;
+};
+
+// --- Yes and no ----------------------------------------------------------------
+
+const std::vector<std::vector<std::string_view>>& yes_phrases() {
+  static const std::vector<std::vector<std::string_view>> kYes{
+      {"yes"}, {"y"}, {"yeah"}, {"yea"}, {"yep"}, {"yup"}, {"ya"}, {"sure"}, {"correct"}, {"right"},
+      {"exactly"}, {"absolutely"}, {"definitely"}, {"indeed"}, {"of", "course"}, {"ok"}, {"sounds", "good"},
+      {"sounds", "right"}, {"that", "works"}, {"go", "ahead"}, {"do", "it"}, {"please", "do"}, {"affirmative"},
+      {"mhm"}, {"uh", "huh"}, {"you", "got", "it"}, {"perfect"}, {"good"}, {"great"}, {"fine"}, {"true"},
+      {"certainly"}, {"totally"}, {"you", "bet"}, {"i", "think", "so"}, {"looks", "good"}, {"looks", "right"},
+      {"agreed"}, {"precisely"}, {"alright"}, {"that", "is", "right"}, {"that", "is", "correct"},
+      {"that", "is", "it"}, {"that", "is", "true"}, {"that", "is", "the", "one"}, {"it", "is"}, {"it", "does"},
+      {"sure", "thing"}, {"yes", "please"}, {"please"}, {"why", "not"}, {"that", "one"}, {"correct", "answer"},
+      {"that", "is", "fine"}, {"that", "is", "good"}, {"very", "good"}, {"spot", "on"}};
+  return kYes;
+}
+
+const std::vector<std::vector<std::string_view>>& no_phrases() {
+  static const std::vector<std::vector<std::string_view>> kNo{
+      {"no"}, {"n"}, {"nope"}, {"nah"}, {"nay"}, {"not", "quite"}, {"not", "really"}, {"wrong"},
+      {"that", "is", "wrong"}, {"that", "is", "not", "right"}, {"that", "is", "not", "it"}, {"not", "right"},
+      {"incorrect"}, {"that", "is", "incorrect"}, {"no", "way"}, {"negative"}, {"do", "not"}, {"please", "do", "not"},
+      {"absolutely", "not"}, {"definitely", "not"}, {"of", "course", "not"}, {"i", "do", "not", "think", "so"},
+      {"not", "at", "all"}, {"not", "exactly"}, {"not", "that"}, {"never"}, {"no", "thanks"}, {"false"},
+      {"that", "is", "false"}, {"it", "is", "not"}, {"it", "does", "not"}, {"not", "that", "one"}, {"wrong", "one"},
+      {"not", "correct"}, {"that", "is", "not", "correct"}, {"not", "at", "all"}, {"no", "thank", "you"},
+      {"that", "is", "not", "what", "i", "meant"}, {"not", "this", "one"}, {"hardly"}};
+  return kNo;
+}
+
+// The longest yes or no phrase the words start with: its length, and the answer.
+std::optional<std::pair<std::size_t, bool>> answer_prefix(const Words& words) {
+  std::optional<std::pair<std::size_t, bool>> best;
+  for (bool yes : {true, false})
+    for (const auto& phrase : yes ? yes_phrases() : no_phrases())
+      if (phrase.size() <= words.size() && std::equal(phrase.begin(), phrase.end(), words.begin()) &&
+          (!best || phrase.size() > best->first))
+        best = std::pair{phrase.size(), yes};
+  return best;
+}
+
+// Whether words only repeat an answer or thank: "exactly", "that's right", "thanks".
+bool only_confirms(Words words) {
+  while (!words.empty()) {
+    if (words.front() == "," ||
+        is_one_of(words.front(), {"thanks", "thank", "you", "please", "ok", "so", "then", "place", "spot", "one",
+                                  "answer", "guess", "idea", "choice", "sir", "maam", "boss", "mate", "buddy"})) {
+      words.erase(words.begin());
+      continue;
+    }
+    auto answer = answer_prefix(words);
+    if (!answer) return false;
+    words.erase(words.begin(), words.begin() + static_cast<std::ptrdiff_t>(answer->first));
+  }
+  return true;
+}
+
+}  // namespace
+
+Reply read_task(const ReplyInput& in) {
+  // The piece that says what to do ("The kitchen is a mess, please tidy
+  // it." has two), without its frame.
+  std::vector<Words> said;
+  for (const Words& piece : pieces(without_fillers(in.words, in.vocabulary))) said.push_back(after_frame(piece));
+  std::string verb;
+  const Words* words = nullptr;
+  for (const Words& piece : said)
+    if (!piece.empty() && !is_determiner(piece.front()) && !is_object_pronoun(piece.front()) &&
+        verb_like(piece.front(), in, verb)) {
+      words = &piece;
+      break;
+    }
+  if (!words) {
+    Words all;
+    for (const Words& piece : said) all.insert(all.end(), piece.begin(), piece.end());
+    if (auto named = gerund_task(all, in)) return *named;
+    return unusable(in, Problem{"I need the name of a task, said as what to do, such as \"" +
+                                    example_replies(in.world, in.context).front() + "\".",
+                                std::nullopt});
+  }
+  std::string particle;
+  Words object;
+  for (std::size_t i = 1; i < words->size(); ++i) {
+    const std::string& w = (*words)[i];
+    if (is_particle(w)) {
+      if (w != "up" && particle.empty()) particle = w;  // "tidy up" is "tidy"
+    } else if (!is_determiner(w)) {
+      object.push_back(w);
+    }
+  }
+  // "a bit", "for me", "right now" say nothing about the task.
+  while (!object.empty() && is_one_of(object.back(), {"bit", "little", "quickly", "now", "today", "please", "me"}))
+    object.pop_back();
+  // "tidy it": what "it" is, from another piece ("the kitchen is a mess").
+  if (object.size() == 1 && is_object_pronoun(object.front())) {
+    for (const Words& piece : said) {
+      if (&piece == words) continue;
+      Words noun;
+      for (const std::string& w : piece) {
+        if (is_copula(w) || is_auxiliary(w)) break;
+        if (!is_determiner(w)) noun.push_back(w);
+      }
+      if (!noun.empty()) {
+        object = noun;
+        break;
+      }
+    }
+  }
+  std::string name = verb_name(verb, particle);
+  if (particle == "off" || particle == "down" || particle == "over" || particle == "aside") name = verb + " " + particle;
+  for (const std::string& w : object) name += " " + w;
+  return TaskNamed{name};
+}
+
+Reply read_structure(const ReplyInput& in) { return StructureReader(in).read(); }
+
+bool says_finished(const std::vector<std::string>& words, const ReplyInput& in) {
+  return finished_words(without_fillers(words, in.vocabulary));
+}
+
+bool says_proceed(const std::vector<std::string>& words) { return proceed_words(words); }
+
+Reply read_yes_no(const ReplyInput& in) {
+  Words words = in.words;
+  while (!words.empty() && is_one_of(words.front(), {"oh", "well", "um", "uh", "hmm", ",", "so"}))
+    words.erase(words.begin());
+  auto answer = answer_prefix(words);
+  if (!answer)
+    return unusable(in, Problem{"Please answer yes or no.", std::nullopt});
+  Words rest(words.begin() + static_cast<std::ptrdiff_t>(answer->first), words.end());
+  YesNo reply{answer->second, ""};
+  if (!only_confirms(rest)) {
+    while (!rest.empty() && is_one_of(rest.front(), {",", "but", "and", "so", "then", "just", "though"}))
+      rest.erase(rest.begin());
+    reply.rest = join(rest, " ");
+  }
+  return reply;
+}
+
+}  // namespace apprentice::language

@@ -1,0 +1,130 @@
+// Which of the things offered is meant (language/reply_reading.h): "the
+// one on the counter", "the first one", "the top one", "the plastic one",
+// "the mug in the dish rack", "trash".
+#include <algorithm>
+#include <set>
+
+#include "language/generation.h"
+#include "language/reply_reading.h"
+#include "language/utterance.h"
+#include "util/text.h"
+
+namespace apprentice::language {
+namespace {
+
+bool is_one_of(std::string_view word, std::initializer_list<std::string_view> set) {
+  return std::find(set.begin(), set.end(), word) != set.end();
+}
+
+// The words a person may use for a choice: its name's words, its
+// properties and id, and the same of where it is.
+std::set<std::string> words_for(const World& world, ObjectId id) {
+  std::set<std::string> out{world.universe->name(id)};
+  auto add = [&](ObjectId object) {
+    const ObjectInfo& info = world.universe->info(object);
+    for (std::string& part : name_parts(info.category)) out.insert(std::move(part));
+    for (const std::string& p : info.properties) out.insert(p);
+  };
+  add(id);
+  if (auto where = place_of(world, id)) add(*where);
+  return out;
+}
+
+bool said_for(const std::string& word, const std::set<std::string>& words) {
+  if (words.count(word)) return true;
+  if (word.size() > 3 && word.back() == 's' && words.count(word.substr(0, word.size() - 1))) return true;
+  return false;
+}
+
+// Words that carry nothing about which one: "the one that is on the".
+bool empty_word(std::string_view w) {
+  return is_determiner(w) || is_copula(w) || is_filler(w) || is_generic_noun(w) ||
+         is_one_of(w, {",", "that", "which", "one", "ones", "in", "on", "into", "inside", "from", "at", "of", "off",
+                       "out", "i", "mean", "meant", "want", "the", "please", "by", "near", "sitting", "lying",
+                       "standing", "over", "there", "here"});
+}
+
+}  // namespace
+
+Reply read_which(const ReplyInput& in) {
+  const World& world = in.world;
+  const std::vector<ObjectId>& choices = in.context.choices;
+  if (choices.empty()) return unusable(in, Problem{"I have nothing to choose from.", std::nullopt});
+  std::vector<std::string> words = in.words;
+  auto has = [&](std::initializer_list<std::string_view> set) {
+    return std::any_of(words.begin(), words.end(), [&](const std::string& w) { return is_one_of(w, set); });
+  };
+  std::string said = join(words, " ");
+  if (has({"either", "whichever", "any", "matter", "care"}))
+    return Chosen{choices.front()};  // the teacher says it makes no difference
+  if (has({"neither", "none"}))
+    return unusable(in, Problem{"Then please tell me what you meant another way.", std::nullopt});
+  // "not the one in the dish rack": the words after a negation exclude.
+  std::vector<std::string> content, excluded;
+  bool negated = false;
+  for (const std::string& w : words) {
+    if (is_negation(w)) negated = true;
+    else if (w == "," || w == "but") negated = false;
+    else if (!empty_word(w) || in.vocabulary.is_property(w)) (negated ? excluded : content).push_back(w);
+  }
+  // "the first one", "the second", "the last one".
+  if (content.size() <= 1) {
+    constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+    std::string only = content.empty() ? "" : content.front();
+    std::size_t index = only.empty() ? kNone : ordinal(only).value_or(kNone);
+    if (index == kNone && has({"first", "former"})) index = 0;
+    if (index == kNone && has({"second"})) index = 1;
+    if (index == kNone && has({"third"})) index = 2;
+    if (has({"last", "latter"})) index = choices.size() - 1;
+    bool only_ordinal = content.empty() || ordinal(only).has_value() || only == "last" || only == "latter";
+    if (index < choices.size() && only_ordinal) return Chosen{choices[index]};
+  }
+  if (content.empty() && excluded.empty())
+    return unusable(in, Problem{"Which one? " + say_which_question(world, choices), std::nullopt});
+  Resolver resolver(in);
+  // The choices a word fits, by name, property or place; a word the world
+  // knows in other terms ("trash") by what it names; nullopt for a word
+  // that names nothing here ("dirty"), which then says nothing about which.
+  auto fitting = [&](const std::string& word, const std::vector<ObjectId>& among) -> std::optional<std::vector<ObjectId>> {
+    std::vector<ObjectId> fit;
+    for (ObjectId id : among)
+      if (said_for(word, words_for(world, id))) fit.push_back(id);
+    if (!fit.empty()) return fit;
+    auto named = resolver.candidates(Chunk::of_words({word}), Role::kAny);
+    if (!std::holds_alternative<std::vector<ObjectId>>(named))
+      named = resolver.candidates(Chunk::of_words({word}), Role::kPlace);
+    const auto* objects = std::get_if<std::vector<ObjectId>>(&named);
+    if (!objects) return std::nullopt;
+    for (ObjectId id : among) {
+      auto where = place_of(world, id);
+      bool is = std::find(objects->begin(), objects->end(), id) != objects->end();
+      bool at = where && std::find(objects->begin(), objects->end(), *where) != objects->end();
+      if (is || at) fit.push_back(id);
+    }
+    return fit;
+  };
+  std::vector<ObjectId> kept = choices;
+  bool said_something = false;
+  for (const std::string& word : excluded) {
+    auto fit = fitting(word, kept);
+    if (!fit) continue;
+    said_something = true;
+    std::erase_if(kept, [&](ObjectId id) { return std::find(fit->begin(), fit->end(), id) != fit->end(); });
+  }
+  for (const std::string& word : content) {
+    auto fit = fitting(word, kept);
+    if (!fit) continue;
+    said_something = true;
+    if (fit->empty())
+      return unusable(in, Problem{"None of them is \"" + said + "\". " + say_which_question(world, choices),
+                                  std::nullopt});
+    kept = std::move(*fit);
+  }
+  if (!said_something || kept.empty())
+    return unusable(in, Problem{"I can't tell which one \"" + said + "\" is. " + say_which_question(world, choices),
+                                std::nullopt});
+  if (kept.size() == 1) return Chosen{kept.front()};
+  return Ambiguous{join(content, " "), kept, say_which_question(world, kept)};
+}
+
+}  // namespace apprentice::language

@@ -1,0 +1,265 @@
+// The agent in conversation, in process: what it asks and says, how it
+// treats replies it cannot use (a program gets a bounded number of tries, a
+// person never runs out), undo of goals and of taught actions, leaving an
+// object, quitting, resuming a known task, and subtasks over several places.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "agent_fixtures.h"
+#include "common/scratch.h"
+#include "knowledge/store.h"
+#include "util/text.h"
+
+namespace apprentice {
+namespace {
+
+using testing::CallbackInstructor;
+using testing::load_or_die;
+using testing::replies;
+using testing::source_path;
+using ::testing::Contains;
+using ::testing::HasSubstr;
+
+using testing::kKetchupGoal;
+using testing::kPaperPlateGoal;
+const std::vector<std::string> kStructure = {"Tidy kitchen.", "Repeat the following tasks while an object is on the table.",
+                                             "Clear an object that is on the table."};
+
+std::vector<std::string> with_structure(std::vector<std::string> rest) {
+  std::vector<std::string> all = kStructure;
+  all.insert(all.end(), rest.begin(), rest.end());
+  return all;
+}
+
+// One session with `instructor`, from `knowledge`.
+struct Session {
+  Result<AgentReport> report = make_error(ErrorCode::kCancelled, "not run");
+  DialogueCounts counts;
+  std::string transcript;
+  State final_state;
+  Knowledge knowledge;
+};
+
+Session teach(const Scenario& scenario, Instructor& instructor, const std::string& condition = "inst+search4",
+              Knowledge knowledge = {}, KnowledgeStore* store = nullptr) {
+  AgentOptions options;
+  options.condition = *parse_condition(condition);
+  TaskLearningAgent agent(options, std::move(knowledge), Understanding(), store, nullptr);
+  Simulator simulator(scenario.world);
+  Dialogue dialogue(instructor);
+  Session s;
+  s.report = agent.learn(simulator, dialogue);
+  s.counts = dialogue.counts();
+  s.transcript = dialogue.transcript_text();
+  s.final_state = simulator.state();
+  s.knowledge = agent.knowledge();
+  return s;
+}
+
+bool holds(const Scenario& scenario, const State& state) {
+  for (const Literal& l : scenario.goal_assertions())
+    if (!state.satisfies(l)) return false;
+  return true;
+}
+
+class Conversation : public ::testing::Test {
+ protected:
+  Scenario two_ = load_or_die(source_path("tests/agent/data/two-objects.yaml"));
+};
+
+TEST_F(Conversation, EveryQuestionIsOneLineEndingInAQuestionMarkAndGoalQuestionsNameTheObjectAndPlace) {
+  CallbackInstructor instructor(replies(with_structure({kKetchupGoal, "You are done.", "Repeat.", kPaperPlateGoal,
+                                                        "You are done."})),
+                                true);
+  Session s = teach(two_, instructor);
+  ASSERT_TRUE(s.report.has_value()) << s.report.error().describe();
+  for (const Question& q : instructor.questions) {
+    EXPECT_EQ(q.text.find('\n'), std::string::npos) << q.text;
+    EXPECT_EQ(q.text.back(), '?') << q.text;
+  }
+  std::vector<std::string> texts;
+  for (const Question& q : instructor.questions) texts.push_back(q.text);
+  EXPECT_THAT(texts, Contains("Where should the ketchup on the table go?"));
+  EXPECT_THAT(texts, Contains("Where should the paper plate on the table go?"));
+  // It reads back, reports, and says which object it moves to.
+  EXPECT_THAT(instructor.heard, Contains("So the ketchup goes in the fridge, and the fridge ends closed."));
+  EXPECT_THAT(instructor.heard, Contains("I opened the fridge, put the ketchup in it, and closed it."));
+  EXPECT_TRUE(holds(two_, s.final_state));
+}
+
+TEST_F(Conversation, AProgramThatKeepsSayingSomethingUnusableIsGivenUpOnAfterItsRetries) {
+  // Whatever it is asked about an object, the program says the same
+  // useless thing: the agent tries 1 + max_retries times per object, skips
+  // it, and the session still ends.
+  auto program = [](const Question& q, const World&) -> std::optional<std::string> {
+    switch (q.kind) {
+      case QuestionKind::kTaskName: return "Tidy kitchen.";
+      case QuestionKind::kTaskStep: return "You are done.";
+      default: return "blah blah";
+    }
+  };
+  // "You are done." at the first task step ends the task at once; teach a
+  // subtask first.
+  int steps = 0;
+  CallbackInstructor instructor(
+      [&](const Question& q, const World& w) -> std::optional<std::string> {
+        if (q.kind == QuestionKind::kTaskStep && steps++ == 0) return "Clear an object that is on the table.";
+        return program(q, w);
+      },
+      false);
+  Session s = teach(two_, instructor);
+  ASSERT_TRUE(s.report.has_value()) << s.report.error().describe();
+  // Two objects, four tries each, plus the task, the subtask and the end.
+  EXPECT_EQ(s.counts.instructions, 2 * 4 + 3);
+  ASSERT_EQ(s.report->objects.size(), 2u);
+  EXPECT_EQ(s.report->objects[0].note, "no usable goal from the instructor");
+  EXPECT_FALSE(s.report->objects[0].achieved);
+}
+
+TEST_F(Conversation, APersonIsAskedAgainUntilTheReplyCanBeUsed) {
+  std::vector<std::string> lines = kStructure;
+  for (int i = 0; i < 12; ++i) lines.push_back("blah blah");
+  for (const char* l : {kKetchupGoal, "You are done.", "Repeat.", kPaperPlateGoal, "You are done."}) lines.push_back(l);
+  CallbackInstructor instructor(replies(lines), true);
+  Session s = teach(two_, instructor);
+  ASSERT_TRUE(s.report.has_value()) << s.report.error().describe();
+  EXPECT_TRUE(holds(two_, s.final_state));
+  EXPECT_EQ(s.counts.instructions, static_cast<int>(lines.size()));
+}
+
+TEST_F(Conversation, CommandsAreNeverInstructions) {
+  std::vector<std::string> lines = with_structure({"help", "status", "undo", "Clear an object that is on the table.",
+                                                   kKetchupGoal, "forget paper plate", "You are done.", "Repeat.",
+                                                   kPaperPlateGoal, "You are done."});
+  CallbackInstructor instructor(replies(lines), true);
+  Session s = teach(two_, instructor);
+  ASSERT_TRUE(s.report.has_value()) << s.report.error().describe();
+  int instructions = 0, words = 0;
+  for (const std::string& line : lines) {
+    if (line == "help" || line == "status" || line == "undo" || line.rfind("forget", 0) == 0) continue;
+    ++instructions;
+    words += count_words(line);
+  }
+  EXPECT_EQ(instructions, 9);
+  EXPECT_EQ(s.counts.instructions, instructions);
+  EXPECT_EQ(s.counts.words, words);
+}
+
+TEST_F(Conversation, UndoOfATaughtActionPutsTheWorldBackAndAsksForThatStepAgain) {
+  std::vector<std::string> lines = with_structure({kKetchupGoal, "Open the fridge.", "Pick up the ketchup.", "undo",
+                                                   "Pick up the ketchup.", "Put the ketchup in the fridge.",
+                                                   "Close the fridge.", "You are done.", "Repeat.", kPaperPlateGoal,
+                                                   "Pick up the paper-plate.", "Put the paper-plate in the garbage.",
+                                                   "You are done."});
+  CallbackInstructor instructor(replies(lines), true);
+  Session s = teach(two_, instructor, "instruction");
+  ASSERT_TRUE(s.report.has_value()) << s.report.error().describe();
+  EXPECT_TRUE(holds(two_, s.final_state));
+  EXPECT_THAT(s.transcript, HasSubstr("Instructor: undo\n"
+                                      "Agent: I forgot what you told me last: \"Pick up the ketchup.\"\n"
+                                      "Agent: To put things back as they were, I put the ketchup on the table.\n"
+                                      "Agent: What should I do next so that the ketchup is in the fridge and the fridge "
+                                      "is closed?\n"
+                                      "Instructor: Pick up the ketchup.\n"));
+  // The episode kept the open before the undone step: the rules learned
+  // from it still start with opening.
+  EXPECT_GT(s.report->rules_learned, 0);
+}
+
+TEST_F(Conversation, UndoTwiceGoesBackTwoLessonsAndNothingToUndoIsSaid) {
+  std::vector<std::string> lines = {"undo",
+                                    "Tidy kitchen.",
+                                    "Repeat the following tasks while an object is on the table.",
+                                    "Clear an object that is on the table.",
+                                    "undo",
+                                    "undo",
+                                    "Repeat the following tasks while an object is on the table.",
+                                    "Clear an object that is on the table.",
+                                    kKetchupGoal,
+                                    "You are done.",
+                                    "Repeat.",
+                                    kPaperPlateGoal,
+                                    "You are done."};
+  CallbackInstructor instructor(replies(lines), true);
+  Session s = teach(two_, instructor);
+  ASSERT_TRUE(s.report.has_value()) << s.report.error().describe();
+  EXPECT_EQ(instructor.heard.front(), "There is nothing to undo yet.");
+  EXPECT_TRUE(holds(two_, s.final_state));
+  ASSERT_EQ(s.knowledge.tasks.size(), 1u);
+  EXPECT_EQ(s.knowledge.tasks[0].subtasks.size(), 1u);
+}
+
+TEST_F(Conversation, UndoRevertsTheStoreToo) {
+  testing::ScratchDir dir;
+  auto store = KnowledgeStore::open(dir / "knowledge.sqlite");
+  ASSERT_TRUE(store.has_value()) << store.error().describe();
+  std::vector<std::string> lines = with_structure({"If the object is a ketchup then the goal is that the object is in "
+                                                   "the garbage.",
+                                                   "undo", "quit"});
+  CallbackInstructor instructor(replies(lines), true);
+  Session s = teach(two_, instructor, "inst+search4", {}, &*store);
+  ASSERT_FALSE(s.report.has_value());
+  EXPECT_EQ(s.report.error().code, ErrorCode::kCancelled);
+  auto loaded = store->load(*two_.world.domain);
+  ASSERT_TRUE(loaded.has_value());
+  EXPECT_EQ(loaded->goals.size(), 0u);
+  EXPECT_EQ(loaded->rules.size(), 0u);
+  // The structure taught before the undone goal is kept.
+  ASSERT_EQ(loaded->tasks.size(), 1u);
+  EXPECT_EQ(loaded->tasks[0].subtasks.size(), 1u);
+}
+
+TEST_F(Conversation, SayingDoneAtAGoalQuestionLeavesTheObject) {
+  CallbackInstructor instructor(replies(with_structure({"You are done.", "You are done.", "Repeat.", kPaperPlateGoal,
+                                                        "You are done."})),
+                                true);
+  Session s = teach(two_, instructor);
+  ASSERT_TRUE(s.report.has_value()) << s.report.error().describe();
+  EXPECT_THAT(instructor.heard, Contains("I will leave the ketchup on the table as it is."));
+  ASSERT_EQ(s.report->objects.size(), 2u);
+  EXPECT_EQ(s.report->objects[0].note, "left where it is, as the instructor said");
+  EXPECT_EQ(s.knowledge.goals.size(), 1u);
+}
+
+TEST_F(Conversation, AKnownTaskIsDoneAndOnlyWhatIsNewIsAsked) {
+  Knowledge known;
+  {
+    CallbackInstructor first(replies(with_structure({kKetchupGoal, "quit"})), true);
+    Session s = teach(two_, first);
+    known = s.knowledge;
+  }
+  CallbackInstructor instructor(replies({"Tidy kitchen.", kPaperPlateGoal, "You are done."}), true);
+  Session s = teach(two_, instructor, "inst+search4", known);
+  ASSERT_TRUE(s.report.has_value()) << s.report.error().describe();
+  EXPECT_TRUE(holds(two_, s.final_state));
+  EXPECT_EQ(s.counts.instructions, 3);
+  EXPECT_THAT(instructor.heard, Contains("I know how to tidy the kitchen; I will ask only about what is new."));
+}
+
+TEST_F(Conversation, PerformingAKnownSubtaskCoversEveryPlaceOfItsKind) {
+  CallbackInstructor instructor(replies(with_structure({kKetchupGoal, "You are done.", "Repeat.", kPaperPlateGoal,
+                                                        "You are done."})),
+                                true);
+  Session learned = teach(two_, instructor);
+  ASSERT_TRUE(learned.report.has_value());
+  Scenario two_tables = load_or_die(source_path("tests/agent/data/two-tables.yaml"));
+  AgentOptions options;
+  options.condition = Condition{"knowledge-only", false, 0, false};
+  TaskLearningAgent agent(options, learned.knowledge, Understanding(), nullptr, nullptr);
+  Simulator simulator(two_tables.world);
+  auto report = agent.perform(simulator, "tidy kitchen");
+  ASSERT_TRUE(report.has_value()) << report.error().describe();
+  EXPECT_TRUE(report->help_needed.empty()) << ::testing::PrintToString(report->help_needed);
+  EXPECT_TRUE(holds(two_tables, simulator.state()));
+}
+
+TEST_F(Conversation, QuitEndsTheSessionAndKeepsWhatWasLearned) {
+  CallbackInstructor instructor(replies(with_structure({kKetchupGoal, "quit"})), true);
+  Session s = teach(two_, instructor);
+  ASSERT_FALSE(s.report.has_value());
+  EXPECT_EQ(s.report.error().code, ErrorCode::kCancelled);
+  EXPECT_EQ(s.knowledge.goals.size(), 1u);
+}
+
+}  // namespace
+}  // namespace apprentice

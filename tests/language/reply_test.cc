@@ -1,0 +1,351 @@
+// read_reply beyond the kitchen's corpus: look-alikes told apart by
+// properties, a kind of place that names every place of it, names with
+// function words, phrasal verbs, the reasons and examples of unusable
+// replies, and that the reader is total, in an office world of its own.
+#include <algorithm>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include "language/generation.h"
+#include "language/reply.h"
+#include "language_fixtures.h"
+
+namespace apprentice::language {
+namespace {
+
+using testing::grounder;
+using testing::kitchen30;
+using testing::source_path;
+
+constexpr std::string_view kOffice = R"(
+name: test-office
+domain: ../domains/kitchen.pddl
+location: office
+places:
+  - {category: desk, kind: surface}
+  - {category: counter, kind: surface}
+  - {category: drawer, kind: receptacle, door: closed, properties: [top]}
+  - {category: drawer, kind: receptacle, door: closed, properties: [bottom]}
+  - {category: bookshelf, kind: receptacle}
+  - {category: walk-in-pantry, kind: receptacle, door: closed}
+  - {category: bag, kind: receptacle, properties: [blue]}
+  - {category: bag, kind: receptacle, properties: [red]}
+  - {category: bag, kind: receptacle, properties: [green]}
+  - {category: garbage, kind: receptacle}
+  - {category: toy-box, kind: receptacle}
+objects:
+  - {category: stapler, at: desk1}
+  - {category: book, at: desk1}
+  - {category: apple-core, at: desk1}
+  - {category: mug, at: desk1}
+  - {category: mug, at: counter1}
+  - {category: half-and-half, at: bag1}
+  - {category: jack-in-the-box, at: bag2}
+  - {category: crackers, at: bag3}
+task:
+  name: organize office
+  subtasks:
+    - {verb: clear, place: desk1}
+intent:
+  - {subtask: clear, category: stapler, receptacle: drawer1, closed: true}
+  - {subtask: clear, category: book, receptacle: bookshelf1}
+  - {subtask: clear, category: apple-core, receptacle: garbage1}
+  - {subtask: clear, category: mug, receptacle: drawer2, closed: true}
+)";
+
+// The office, with the properties people tell its look-alikes by.
+const World& office() {
+  static const World world = [] {
+    auto loaded = parse_scenario(kOffice, source_path("data/scenarios/test-office.yaml"));
+    if (!loaded) {
+      ADD_FAILURE() << loaded.error().describe();
+      std::abort();
+    }
+    return loaded->world;
+  }();
+  return world;
+}
+
+ObjectId in(const World& world, std::string_view name) {
+  auto id = world.universe->find(name);
+  EXPECT_TRUE(id.has_value()) << name;
+  return id.value_or(0);
+}
+
+ReplyContext asking(Asked asked, std::optional<ObjectId> object = std::nullopt) {
+  ReplyContext context;
+  context.asked = asked;
+  context.object = object;
+  return context;
+}
+
+std::string read(const World& world, const ReplyContext& context, std::string_view text) {
+  return format_reply(world, read_reply(grounder(), world, context, text));
+}
+
+std::string office_goal(std::string_view object, std::string_view text) {
+  return read(office(), asking(Asked::kGoal, in(office(), object)), text);
+}
+
+// --- Properties as adjectives (issue 10, item 2) --------------------------------
+
+TEST(ReplyProperties, TellLookAlikesApart) {
+  EXPECT_EQ(office_goal("stapler1", "put it in the top drawer"), "goal (in stapler1 drawer1)");
+  EXPECT_EQ(office_goal("stapler1", "the bottom drawer, and close it"),
+            "goal (and (in stapler1 drawer2) (closed drawer2))");
+  EXPECT_EQ(office_goal("stapler1", "the stapler goes in the top drawer with the door shut"),
+            "goal (and (in stapler1 drawer1) (closed drawer1))");
+  // The grammar's sentences take them too.
+  Interpretation grammar = grounder().interpret(
+      "the goal is that the stapler is in the top drawer and the top drawer is closed", office(), std::nullopt);
+  EXPECT_EQ(format_grounding(office(), grammar.result), "goal (and (in stapler1 drawer1) (closed drawer1))");
+}
+
+TEST(ReplyProperties, StillAmbiguousAsksWhich) {
+  Reply reply = read_reply(grounder(), office(), asking(Asked::kGoal, in(office(), "stapler1")), "in the drawer");
+  const auto* ambiguous = std::get_if<Ambiguous>(&reply);
+  ASSERT_NE(ambiguous, nullptr) << format_reply(office(), reply);
+  EXPECT_EQ(ambiguous->question, "Which drawer: the top drawer or the bottom drawer?");
+  EXPECT_EQ(ambiguous->candidates, (std::vector<ObjectId>{in(office(), "drawer1"), in(office(), "drawer2")}));
+  // The answer to that question.
+  ReplyContext which = asking(Asked::kWhich);
+  which.choices = ambiguous->candidates;
+  EXPECT_EQ(read(office(), which, "the top one"), "chosen drawer1");
+  EXPECT_EQ(read(office(), which, "bottom"), "chosen drawer2");
+  EXPECT_EQ(read(office(), which, "the bottom drawer please"), "chosen drawer2");
+  EXPECT_EQ(read(office(), which, "drawer1"), "chosen drawer1");
+  // A property nothing here has is not a guess.
+  EXPECT_EQ(read(office(), which, "the left one"), "unusable");
+  // The reply read again with the answer.
+  ReplyContext again = asking(Asked::kGoal, in(office(), "stapler1"));
+  again.settled = {{ambiguous->phrase, in(office(), "drawer2")}};
+  EXPECT_EQ(read(office(), again, "in the drawer"), "goal (in stapler1 drawer2)");
+  EXPECT_EQ(read(office(), again, "the goal is that the stapler is in the drawer"), "goal (in stapler1 drawer2)");
+  // "left" is no drawer's property: the question again, not either drawer.
+  EXPECT_EQ(office_goal("stapler1", "put it in the left drawer"), "ambiguous left drawer: drawer1 drawer2");
+}
+
+TEST(ReplyProperties, ExamplesAndQuestionsUseThem) {
+  EXPECT_EQ(distinct_noun_for(office(), in(office(), "drawer2")), "the bottom drawer");
+  EXPECT_EQ(distinct_noun_for(office(), in(office(), "bookshelf1")), "the bookshelf");
+  ReplyContext which = asking(Asked::kWhich);
+  which.choices = {in(office(), "bag1"), in(office(), "bag3")};
+  EXPECT_EQ(example_replies(office(), which), (std::vector<std::string>{"the blue bag", "the green bag"}));
+}
+
+// --- A kind of place names every place of it (item 3) ------------------------------
+
+TEST(ReplyCategoryPlaces, EveryBag) {
+  ReplyContext step = asking(Asked::kTaskStep);
+  EXPECT_EQ(read(office(), step, "Repeat the following tasks while an object is in a bag."), "loop in bag1 bag2 bag3");
+  EXPECT_EQ(read(office(), step, "Unload an object that is in a bag."), "subtask unload in bag1 bag2 bag3");
+  EXPECT_EQ(read(office(), step, "unload the bags"), "subtask unload in bag1 bag2 bag3");
+  EXPECT_EQ(read(office(), step, "unload the bag"), "subtask unload in bag1 bag2 bag3");
+  EXPECT_EQ(read(office(), step, "empty everything out of the bags"), "subtask empty in bag1 bag2 bag3");
+  EXPECT_EQ(read(office(), step, "empty the blue bag"), "subtask empty in bag1");
+  // The grounder says so too.
+  Interpretation grammar =
+      grounder().interpret("Unload an object that is in a bag.", office(), std::nullopt);
+  EXPECT_EQ(format_grounding(office(), grammar.result), "subtask unload in bag1");
+  const auto& step_grounded = std::get<TaskStep>(grammar.result);
+  EXPECT_EQ(step_grounded.places.size(), 3u);
+}
+
+// --- Names with function words (item 4) ---------------------------------------------
+
+TEST(ReplyNames, FunctionWordsInsideNames) {
+  EXPECT_EQ(office_goal("half-and-half1", "put it in the walk in pantry"), "goal (in half-and-half1 walk-in-pantry1)");
+  EXPECT_EQ(office_goal("half-and-half1", "the half and half goes in the walk-in pantry and the walk-in pantry is closed"),
+            "goal (and (in half-and-half1 walk-in-pantry1) (closed walk-in-pantry1))");
+  EXPECT_EQ(office_goal("jack-in-the-box1", "the jack in the box goes in the toy box"),
+            "goal (in jack-in-the-box1 toy-box1)");
+  for (std::string_view sentence :
+       {"the goal is that the half and half is in the walk in pantry and the walk in pantry is closed",
+        "If the object is a half-and-half then the goal is that the object is in the walk-in pantry and the walk in "
+        "pantry is closed."}) {
+    Interpretation grammar = grounder().interpret(sentence, office(), in(office(), "half-and-half1"));
+    EXPECT_EQ(format_grounding(office(), grammar.result),
+              "goal (and (in half-and-half1 walk-in-pantry1) (closed walk-in-pantry1))")
+        << sentence;
+  }
+  Interpretation open = grounder().interpret("Open the walk in pantry.", office(), std::nullopt);
+  EXPECT_EQ(format_grounding(office(), open.result), "action (open walk-in-pantry1)");
+  Interpretation put = grounder().interpret("Put the jack in the box in the toy box.", office(), std::nullopt);
+  EXPECT_EQ(format_grounding(office(), put.result), "action (put-in jack-in-the-box1 toy-box1)");
+}
+
+// --- Phrasal verbs (item 4) -----------------------------------------------------------
+
+TEST(ReplyPhrasalVerbs, AsSubtaskVerbsAndInSentences) {
+  ReplyContext step = asking(Asked::kTaskStep);
+  EXPECT_EQ(read(office(), step, "Put away an object that is on the desk."), "subtask put away on desk1");
+  EXPECT_EQ(read(office(), step, "put away the things on the desk"), "subtask put away on desk1");
+  EXPECT_EQ(read(office(), step, "put the stuff on the desk away"), "subtask put away on desk1");
+  Interpretation grammar = grounder().interpret("Put away an object that is on the desk.", office(), std::nullopt);
+  EXPECT_EQ(format_grounding(office(), grammar.result), "subtask put away on desk1");
+  EXPECT_EQ(office_goal("apple-core1", "throw away the apple core"), "goal (in apple-core1 garbage1)");
+  EXPECT_EQ(office_goal("book1", "put the book away in the bookshelf"), "goal (in book1 bookshelf1)");
+  EXPECT_EQ(office_goal("book1", "put the book back on the bookshelf"), "goal (in book1 bookshelf1)");
+  Interpretation put_away = grounder().interpret("Put the book away in the bookshelf.", office(), std::nullopt);
+  EXPECT_EQ(format_grounding(office(), put_away.result), "action (put-in book1 bookshelf1)");
+  Interpretation pick = grounder().interpret("Pick the book up.", office(), std::nullopt);
+  EXPECT_EQ(format_grounding(office(), pick.result), "action (pick-up book1 desk1)");
+  // Without a place it is a question, not a guess.
+  Reply away = read_reply(grounder(), office(), asking(Asked::kAction, in(office(), "book1")), "put the book away");
+  ASSERT_TRUE(std::holds_alternative<Unusable>(away));
+  EXPECT_NE(std::get<Unusable>(away).reason.find("Where"), std::string::npos);
+}
+
+// --- The structure, after a first subtask -------------------------------------------------
+
+TEST(ReplyStructure, APlaceWithoutAVerbTakesTheLastSubtasksVerb) {
+  const World& kitchen = kitchen30().world;
+  ReplyContext step = asking(Asked::kTaskStep);
+  Reply bare = read_reply(grounder(), kitchen, step, "the counter next");
+  ASSERT_TRUE(std::holds_alternative<Unusable>(bare)) << format_reply(kitchen, bare);
+  EXPECT_EQ(std::get<Unusable>(bare).reason,
+            "What should I do with the things on the counter? For example: \"clear the counter\".");
+  step.taught_subtasks = {"clear"};
+  EXPECT_EQ(read(kitchen, step, "the counter next"), "subtask clear on counter1");
+  EXPECT_EQ(read(kitchen, step, "now do the same with the counter"), "subtask clear on counter1");
+  EXPECT_EQ(read(kitchen, step, "then do the dish rack"), "subtask clear in dish-rack1");
+  EXPECT_EQ(read(kitchen, step, "now unload the dish rack"), "subtask unload in dish-rack1");
+  EXPECT_EQ(read(kitchen, step, "that's all for the table"), "finished");
+}
+
+// --- References and reasons (issue 9) --------------------------------------------------
+
+TEST(ReplyReferences, PronounsPartialNamesAndDoors) {
+  const World& kitchen = kitchen30().world;
+  ObjectId ketchup = in(kitchen, "ketchup1");
+  ReplyContext goal = asking(Asked::kGoal, ketchup);
+  EXPECT_EQ(read(kitchen, goal, "put that one in the fridge"), "goal (in ketchup1 fridge1)");
+  EXPECT_EQ(read(kitchen, goal, "this goes in the pantry"), "goal (in ketchup1 pantry1)");
+  // "the door" is the door of the receptacle just named, else the recent place.
+  EXPECT_EQ(read(kitchen, goal, "in the pantry and shut the door"), "goal (and (in ketchup1 pantry1) (closed pantry1))");
+  ReplyContext action = asking(Asked::kAction, ketchup);
+  action.recent_place = in(kitchen, "dishwasher1");
+  EXPECT_EQ(read(kitchen, action, "close the door"), "action (close dishwasher1)");
+  EXPECT_EQ(read(kitchen, action, "close it"), "action (close dishwasher1)");
+  // Partial names, when one kind of thing fits.
+  ReplyContext pick = asking(Asked::kAction, in(kitchen, "milk1"));
+  EXPECT_EQ(read(kitchen, pick, "pick up the pop tarts"), "action (pick-up pop-tart-box1 table1)");
+  EXPECT_EQ(read(kitchen, pick, "grab the cereal"), "action (pick-up cereal-box1 table1)");
+  // Two of a kind in different places: the question names both.
+  Reply mug = read_reply(grounder(), kitchen, pick, "pick up the mug");
+  ASSERT_TRUE(std::holds_alternative<Ambiguous>(mug)) << format_reply(kitchen, mug);
+  EXPECT_EQ(std::get<Ambiguous>(mug).question, "Which do you mean: the mug on the counter or the mug in the dish rack?");
+  // Two soda cans on the table: no one can tell them apart, so either will do.
+  EXPECT_EQ(read(kitchen, pick, "pick up a soda can"), "action (pick-up soda-can1 table1)");
+}
+
+TEST(ReplyReasons, PlainEnglish) {
+  const World& kitchen = kitchen30().world;
+  ReplyContext bottle = asking(Asked::kGoal, in(kitchen, "plastic-bottle1"));
+  Reply lid = read_reply(grounder(), kitchen, bottle, "put it in the recycling bin and close the lid");
+  ASSERT_TRUE(std::holds_alternative<Unusable>(lid));
+  EXPECT_EQ(std::get<Unusable>(lid).reason, "The recycling bin has no lid, so it can't be closed.");
+  // The messages users found ungrammatical.
+  Interpretation glass =
+      grounder().interpret("the goal is that the glass is in the dishwasher", kitchen, std::nullopt);
+  ASSERT_NE(glass.failure(), nullptr);
+  EXPECT_EQ(glass.failure()->message, "I don't see a glass; do you mean the glass tumbler?");
+  Interpretation shelf =
+      grounder().interpret("the goal is that the ketchup is on the dish rack", kitchen, std::nullopt);
+  ASSERT_NE(shelf.failure(), nullptr);
+  EXPECT_EQ(shelf.failure()->message, "Things go in the dish rack, not on it.");
+  Reply it = read_reply(grounder(), kitchen, asking(Asked::kGoal), "put it in the fridge");
+  ASSERT_TRUE(std::holds_alternative<Unusable>(it));
+  EXPECT_EQ(std::get<Unusable>(it).reason.find("the it"), std::string::npos) << std::get<Unusable>(it).reason;
+  // A goal about another object is a question back, never that object's goal.
+  Reply milk = read_reply(grounder(), kitchen, asking(Asked::kGoal, in(kitchen, "ketchup1")), "the milk goes in the fridge");
+  ASSERT_TRUE(std::holds_alternative<Unusable>(milk));
+  EXPECT_EQ(std::get<Unusable>(milk).reason, "I asked about the ketchup, not the milk. Where should the ketchup go?");
+}
+
+TEST(ReplyReasons, YesNoKeepsTheCorrection) {
+  const World& kitchen = kitchen30().world;
+  Reply no = read_reply(grounder(), kitchen, asking(Asked::kYesNo), "no, it goes in the pantry");
+  ASSERT_TRUE(std::holds_alternative<YesNo>(no));
+  EXPECT_FALSE(std::get<YesNo>(no).yes);
+  EXPECT_EQ(std::get<YesNo>(no).rest, "it goes in the pantry");
+}
+
+TEST(ReplyCommands, AreReadAtEveryQuestion) {
+  const World& kitchen = kitchen30().world;
+  for (Asked asked : {Asked::kTask, Asked::kGoal, Asked::kYesNo}) {
+    EXPECT_EQ(read(kitchen, asking(asked), "help"), "command help");
+    EXPECT_EQ(read(kitchen, asking(asked), "undo that"), "command undo");
+    EXPECT_EQ(read(kitchen, asking(asked), "quit"), "command quit");
+    EXPECT_EQ(read(kitchen, asking(asked), "forget the glasses"), "command forget glass-tumbler");
+    EXPECT_EQ(read(kitchen, asking(asked), "forget ketchup"), "command forget ketchup");
+  }
+}
+
+// --- Examples that work -------------------------------------------------------------------
+
+// Every question's examples, in both worlds, read back to an answer there.
+TEST(ReplyExamples, WorkAtTheirQuestion) {
+  const World& kitchen = kitchen30().world;
+  for (const World* world : {&kitchen, &office()}) {
+    std::vector<ReplyContext> contexts;
+    for (Asked asked : {Asked::kTask, Asked::kTaskStep, Asked::kSubtaskEnd, Asked::kYesNo}) contexts.push_back(asking(asked));
+    for (ObjectId id = 0; id < world->universe->size(); ++id) {
+      if (world->universe->info(id).kind != ObjectKind::kItem) continue;
+      contexts.push_back(asking(Asked::kGoal, id));
+      contexts.push_back(asking(Asked::kAction, id));
+    }
+    ReplyContext which = asking(Asked::kWhich);
+    which.choices = {0, 1};
+    contexts.push_back(which);
+    for (const ReplyContext& context : contexts) {
+      std::vector<std::string> examples = example_replies(*world, context);
+      EXPECT_GE(examples.size(), 2u) << to_string(context.asked);
+      for (const std::string& example : examples) {
+        Reply reply = read_reply(grounder(), *world, context, example);
+        SCOPED_TRACE(std::string(to_string(context.asked)) + ": " + example);
+        EXPECT_FALSE(std::holds_alternative<Unusable>(reply)) << std::get<Unusable>(reply).reason;
+        EXPECT_FALSE(std::holds_alternative<Ambiguous>(reply));
+        EXPECT_FALSE(std::holds_alternative<Command>(reply));
+      }
+    }
+  }
+}
+
+// --- Total and bounded ------------------------------------------------------------------------
+
+// Whatever the words, at whatever question, a reply gets a meaning; an
+// unusable one carries a reason and two examples.
+RC_GTEST_PROP(ReplyProperty, TotalOnAnyWords, ()) {
+  static const std::vector<std::string> kWords{
+      "put", "it", "in", "the", "fridge", "and", "close", "door", "that's", "all", "done", "next", "mug", "on",
+      "counter", "a", "bag", "bags", "top", "drawer", "walk", "pantry", "half", "not", "no", "yes", ",", ".",
+      "away", "throw", "recycle", "clear", "table", "repeat", "while", "until", "every", "object", "is", "goes",
+      "which", "one", "first", "the", "it's", "don't", "xyzzy", "of", "box", "jack", "-", "'s", "?", "with"};
+  const auto length = *rc::gen::inRange(0, 30);
+  std::string text;
+  for (int i = 0; i < length; ++i) text += kWords[*rc::gen::inRange<std::size_t>(0, kWords.size())] + " ";
+  const auto asked = *rc::gen::element(Asked::kTask, Asked::kTaskStep, Asked::kSubtaskEnd, Asked::kGoal,
+                                       Asked::kAction, Asked::kYesNo, Asked::kWhich);
+  const World& world = **rc::gen::element(&kitchen30().world, &office());
+  ReplyContext context = asking(asked, *rc::gen::element<std::optional<ObjectId>>(std::nullopt, ObjectId{0}, ObjectId{12}));
+  if (asked == Asked::kWhich) context.choices = {0, 1};
+  Reply reply = read_reply(grounder(), world, context, text);
+  if (const auto* unusable = std::get_if<Unusable>(&reply)) {
+    RC_ASSERT(!unusable->reason.empty());
+    RC_ASSERT(unusable->examples.size() >= 2u);
+  }
+  if (const auto* ambiguous = std::get_if<Ambiguous>(&reply)) RC_ASSERT(ambiguous->candidates.size() >= 2u);
+  RC_ASSERT(!format_reply(world, reply).empty());
+}
+
+TEST(ReplyProperty, LongRepliesAreRefusedUnread) {
+  std::string text(5000, 'a');
+  Reply reply = read_reply(grounder(), kitchen30().world, asking(Asked::kGoal), text);
+  ASSERT_TRUE(std::holds_alternative<Unusable>(reply));
+}
+
+}  // namespace
+}  // namespace apprentice::language
