@@ -16,6 +16,7 @@
 #include "progress.h"
 #include "util/json.h"
 #include "util/log.h"
+#include "util/text.h"
 #include "world/pddl.h"
 
 #ifndef APPRENTICE_DATA_DIR
@@ -44,6 +45,7 @@ llm::LlmOptions llm_options(const LlmFlags& flags) {
   options.model = flags.model;
   options.api_key = flags.api_key;
   if (flags.timeout_ms) options.request_timeout = std::chrono::milliseconds(*flags.timeout_ms);
+  if (flags.connect_timeout_ms) options.connect_timeout = std::chrono::milliseconds(*flags.connect_timeout_ms);
   return options;
 }
 
@@ -93,6 +95,12 @@ CommandResult run_experiment(const ExperimentOptions& options, const std::string
   request.conditions = options.conditions;
   request.llm_spec = llm::resolve_llm_spec(options.llm.spec);
   request.llm_options = llm_options(options.llm);
+  request.llm_optional = options.llm.optional;
+  auto repair = parse_goal_repair(options.llm.goal_repair);
+  if (!repair) return tl::unexpected(repair.error());
+  request.options.goal_repair = *repair;
+  request.options.offer_ungrounded = options.llm.offer_ungrounded;
+  request.options.goal_responses = options.llm.goal_responses;
   request.options.generalization = *generalization;
   request.options.use_rules = !options.no_rules;
   request.options.prompts_dir = data_dir() / "prompts";
@@ -136,6 +144,13 @@ CommandResult run_experiment(const ExperimentOptions& options, const std::string
     if (auto status = plot_results(json, options.plot, scenario->reference == "table3"); !status) return tl::unexpected(status.error());
     if (!options.json && !options.quiet) out << "The figure is in " << options.plot << ".\n";
   }
+  std::vector<std::string> degraded;
+  for (const ConditionResult& r : results)
+    if (r.degraded()) degraded.push_back(r.condition);
+  if (!degraded.empty() && !options.llm.optional)
+    return make_error(ErrorCode::kUnavailable, "the LLM failed in " + join(degraded, ", ") +
+                                                   ": those figures are degraded (marked '*'; --llm-optional "
+                                                   "accepts a run without it)");
   return Outcome::kSuccess;
 }
 
@@ -195,13 +210,22 @@ CommandResult run_teach(const TeachOptions& options, const std::string& program,
     if (!client) return tl::unexpected(client.error());
     auto templates = llm::PromptTemplates::load(data_dir() / "prompts");
     if (!templates) return tl::unexpected(templates.error());
+    auto reachable = check_llm_before_run(*spec, llm_options(options.llm), options.llm.optional);
+    if (!reachable) return tl::unexpected(reachable.error());
+    LlmAdvisorOptions advice;
+    advice.disabled = !*reachable;
+    advice.goal_responses = options.llm.goal_responses;
     std::unique_ptr<llm::LlmClient> observed = std::move(*client);
     if (progress.active()) observed = observe_llm(std::move(observed), progress);
-    advisor = std::make_unique<LlmAdvisor>(std::move(observed), std::move(*templates));
+    advisor = std::make_unique<LlmAdvisor>(std::move(observed), std::move(*templates), advice);
   }
+  auto repair = parse_goal_repair(options.llm.goal_repair);
+  if (!repair) return tl::unexpected(repair.error());
   AgentOptions agent_options;
   agent_options.condition = *condition;
   agent_options.generalization = *generalization;
+  agent_options.goal_repair = *repair;
+  agent_options.offer_ungrounded = options.llm.offer_ungrounded;
   TaskLearningAgent agent(agent_options, std::move(knowledge), Understanding(), store ? &*store : nullptr,
                           advisor.get());
   Simulator simulator(scenario->world);

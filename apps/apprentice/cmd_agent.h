@@ -17,6 +17,12 @@ struct LlmFlags {
   std::string model;
   std::optional<std::string> api_key;
   std::optional<int> timeout_ms;
+  std::optional<int> connect_timeout_ms;
+  // Go on without the LLM when its server cannot be reached (else exit 4).
+  bool optional = false;
+  std::string goal_repair = "all";  // --goal-repair
+  bool offer_ungrounded = false;    // --offer-ungrounded
+  int goal_responses = 5;           // --llm-goal-responses
 };
 
 struct ExperimentOptions {

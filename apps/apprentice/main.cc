@@ -91,12 +91,27 @@ int run(int argc, char** argv) {
 
   auto add_llm_flags = [](CLI::App* cmd, LlmFlags& flags) {
     cmd->add_option("--llm", flags.spec,
-                    "LLM backend: openai:URL, llama:URL, replay:FILE, record:FILE,SPEC, corpus:FILE "
-                    "(default: $APPRENTICE_LLM)");
+                    "LLM backend: openai:URL, openai-chat:URL, llama:URL, replay:FILE, record:FILE,SPEC, "
+                    "corpus:FILE[,condition=NAME|,pool=all] (default: $APPRENTICE_LLM)");
     cmd->add_option("--llm-model", flags.model, "Model name sent to the LLM server (default: $OPENAI_MODEL)");
     cmd->add_option("--llm-api-key", flags.api_key, "API key for the LLM server (default: $OPENAI_API_KEY)");
-    cmd->add_option("--llm-timeout-ms", flags.timeout_ms, "Total time allowed for one LLM request")
+    cmd->add_option("--llm-timeout-ms", flags.timeout_ms, "Total time allowed for one LLM request (default 30000)")
         ->check(CLI::PositiveNumber);
+    cmd->add_option("--llm-connect-timeout-ms", flags.connect_timeout_ms,
+                    "Time allowed to connect to the LLM server (default 5000)")
+        ->check(CLI::PositiveNumber);
+    cmd->add_flag("--llm-optional", flags.optional,
+                  "Go on without the LLM when its server cannot be reached or fails (else exit 4)");
+    cmd->add_option("--goal-repair", flags.goal_repair,
+                    "LLM goal analysis and repair: all, none, steps (drop,close,check,choose,reprompt) or "
+                    "steps to leave out (-choose)")
+        ->capture_default_str();
+    cmd->add_option("--llm-goal-responses", flags.goal_responses,
+                    "Unique goal statements retrieved per LLM query (the paper's is 3)")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 10));
+    cmd->add_flag("--offer-ungrounded", flags.offer_ungrounded,
+                  "Offer LLM goals and actions the agent cannot ground, as the paper did");
   };
   const std::string program = argc > 0 ? argv[0] : "apprentice";
 

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "agent/condition.h"
+#include "agent/goal_repair.h"
 #include "agent/llm_advisor.h"
 #include "agent/understanding.h"
 #include "instructor/dialogue.h"
@@ -43,6 +44,16 @@ struct AgentOptions {
   // then goes unanswered and the report says so. A person is asked again
   // until they answer or end the session.
   int max_retries = 3;
+  // LLM goals: which analysis and repair steps run (agent/goal_repair.h).
+  GoalRepairOptions goal_repair;
+  // LLM goals: re-prompts with the rejected answers per object (when
+  // goal_repair.reprompt), before the instructor is asked.
+  int max_reprompts = 1;
+  // The paper's behaviour: offer LLM responses the agent cannot ground, and
+  // without an instructor take the most probable one even so. Otherwise
+  // only usable ones are offered, and without an instructor the best usable
+  // one is taken.
+  bool offer_ungrounded = false;
 };
 
 // How one object went.

@@ -2,6 +2,7 @@
 // consulted before search and before asking, and rule learning once the
 // goal holds.
 #include <deque>
+#include <map>
 
 #include "agent/session.h"
 #include "language/generation.h"
@@ -120,6 +121,9 @@ TaskLearningAgent::Session::Flow<std::optional<Action>> TaskLearningAgent::Sessi
   return std::optional<Action>();
 }
 
+// The LLM's next steps, chosen by Algorithm 5 (llm::finalize_choice): the
+// most probable step that grounds and can be done now, confirmed by the
+// instructor where there is one.
 TaskLearningAgent::Session::Flow<std::optional<Action>> TaskLearningAgent::Session::action_from_llm(InProgress& work) {
   LlmAdvisor& llm = *agent_.llm_;
   std::string goal_text = language::describe_goal_instruction(world(), work.object, work.goal);
@@ -130,23 +134,43 @@ TaskLearningAgent::Session::Flow<std::optional<Action>> TaskLearningAgent::Sessi
   if (llm.last_failure() && candidates.empty())
     say("I could not reach the language model (" + llm.last_failure()->message + ")" +
         (instructed ? ", so I will ask." : "."));
+  std::map<std::string, Action> usable;  // by the candidate's text
   for (const llm::Candidate& candidate : candidates) {
     ActionMeaning meaning = agent_.understanding_.action(world(), candidate.text, work.object);
-    if (!meaning.action || !is_applicable(*world().domain, world().state, *meaning.action)) {
-      spdlog::info("LLM action {} is not usable here: {}", apprentice::quoted(candidate.text),
-                   meaning.action ? "not applicable" : meaning.failure);
+    if (meaning.action && is_applicable(*world().domain, world().state, *meaning.action)) {
+      usable.emplace(candidate.text, *meaning.action);
       continue;
     }
-    if (instructed) {
-      std::string text = language::say_action_question(world(), work.object, candidate.text);
-      auto yes = confirm(question(QuestionKind::kConfirmAction, text, work.object, work.goal, meaning.action));
-      if (!yes) return tl::unexpected(yes.error());
-      if (!*yes) continue;
-    }
-    advice_ = apprentice::quoted(candidate.text) + (instructed ? " (confirmed)" : "");
-    return meaning.action;
+    spdlog::info("LLM action {} is not usable here: {}", apprentice::quoted(candidate.text),
+                 meaning.action ? "not applicable" : meaning.failure);
   }
-  return std::optional<Action>();
+  // An undo or the teacher leaving stops the choice (`stopped`).
+  std::optional<Stop> stopped;
+  llm::CallbackConfirmer confirmer([&](llm::QueryKind, const llm::Candidate& c) -> Result<bool> {
+    auto action = usable.find(c.text);
+    std::optional<Action> proposed;
+    if (action != usable.end()) proposed = action->second;
+    std::string text = language::say_action_question(world(), work.object, c.text);
+    auto yes = confirm(question(QuestionKind::kConfirmAction, text, work.object, work.goal, proposed));
+    if (yes) return *yes;
+    stopped = yes.error();
+    return make_error(ErrorCode::kCancelled, "the choice of an LLM action was stopped");
+  });
+  llm::ChoiceOptions choosing;
+  choosing.offer_ungrounded = agent_.options_.offer_ungrounded;
+  choosing.ask_description = false;  // action_from_instructor asks next
+  choosing.unattended =
+      agent_.options_.offer_ungrounded ? llm::UnattendedPolicy::kFirst : llm::UnattendedPolicy::kFirstGrounded;
+  auto choice = llm::finalize_choice(candidates, llm::QueryKind::kAction,
+                                     [&](const llm::Candidate& c) { return usable.contains(c.text); },
+                                     instructed ? &confirmer : nullptr, choosing);
+  if (stopped) return tl::unexpected(*stopped);
+  if (!choice) return stop(choice.error());
+  if (!choice->candidate) return std::optional<Action>();
+  auto action = usable.find(choice->candidate->text);
+  if (action == usable.end()) return std::optional<Action>();  // unattended, the paper's way: unusable
+  advice_ = apprentice::quoted(choice->candidate->text) + (instructed ? " (confirmed)" : "");
+  return std::optional<Action>(action->second);
 }
 
 TaskLearningAgent::Session::Flow<std::optional<Action>> TaskLearningAgent::Session::action_from_instructor(

@@ -41,41 +41,115 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
   return goal;
 }
 
+namespace {
+
+// The statements of a retrieval not seen in an earlier round for the same
+// object (a re-prompt may repeat them).
+std::vector<llm::Candidate> unseen(std::vector<llm::Candidate> candidates, std::vector<std::string>& seen) {
+  std::vector<llm::Candidate> out;
+  for (llm::Candidate& candidate : candidates) {
+    std::string key = to_lower(join(split_words(candidate.text), " "));
+    if (std::find(seen.begin(), seen.end(), key) != seen.end()) continue;
+    seen.push_back(std::move(key));
+    out.push_back(std::move(candidate));
+  }
+  return out;
+}
+
+}  // namespace
+
+// The LLM's goal statements are analysed and repaired (agent/goal_repair.h),
+// then Algorithm 5 (llm::finalize_choice) chooses among them: the
+// instructor confirms one, or without an instructor the best usable one is
+// taken. When none is accepted, the model is asked again with the rejected
+// statements in the prompt (the paper's future work), then the instructor
+// is asked (goal_from_instructor).
 TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session::goal_from_llm(ObjectId object,
                                                                                               ObjectReport& report) {
   LlmAdvisor& llm = *agent_.llm_;
-  std::vector<llm::Candidate> candidates = llm.goals(llm_context(object));
-  const bool instructed = agent_.options_.condition.instruction;
-  if (llm.last_failure() && candidates.empty())
-    say("I could not reach the language model (" + llm.last_failure()->message + ")" +
-        (instructed ? ", so I will ask." : "."));
-  for (const llm::Candidate& candidate : candidates) {
-    GoalMeaning meaning = agent_.understanding_.goal(world(), candidate.text, object);
-    if (!meaning.goal) {
-      spdlog::info("LLM goal {} for {} does not ground: {}", apprentice::quoted(candidate.text), describe_object(object),
-                   meaning.failure);
-      if (!instructed) {
-        // Without an instructor the most probable response is taken as it
+  const AgentOptions& options = agent_.options_;
+  const GoalRepairOptions& repair = options.goal_repair;
+  const bool instructed = options.condition.instruction;
+  const bool repairing = format_goal_repair(repair) != "none";
+  llm::TaskContext context = llm_context(object);
+  llm::ChoiceOptions choosing;
+  choosing.offer_ungrounded = options.offer_ungrounded;
+  choosing.ask_description = false;  // after re-prompting, by goal_from_instructor
+  choosing.sort_by_probability = !repair.choose;
+  choosing.unattended =
+      options.offer_ungrounded ? llm::UnattendedPolicy::kFirst : llm::UnattendedPolicy::kFirstGrounded;
+  std::vector<std::string> seen;
+  const int rounds = 1 + (repair.reprompt ? std::max(options.max_reprompts, 0) : 0);
+  for (int round = 0; round < rounds; ++round) {
+    std::vector<llm::Candidate> candidates = unseen(llm.goals(context), seen);
+    if (llm.last_failure() && candidates.empty()) {
+      say("I could not reach the language model (" + llm.last_failure()->message + ")" +
+          (instructed ? ", so I will ask." : "."));
+      return std::optional<Goal>();
+    }
+    if (candidates.empty()) break;  // nothing new: a corpus or cassette has no answer to a re-prompt
+    GoalAnalysis analysis =
+        analyse_goals(agent_.understanding_, world(), object, candidates, agent_.knowledge_.goals, repair);
+    report_.search_nodes += analysis.search_nodes;
+    for (const AnalysedGoal& analysed : analysis.goals) {
+      if (!analysed.goal)
+        spdlog::info("LLM goal {} for {} is unusable: {}", apprentice::quoted(analysed.candidate.text),
+                     describe_object(object), analysed.failure);
+      else if (analysed.repaired())
+        spdlog::info("LLM goal {} for {} repaired: {}", apprentice::quoted(analysed.candidate.text),
+                     describe_object(object), describe_repairs(world(), analysed));
+    }
+    // Without an instructor the best usable goal is taken. With one, every
+    // usable goal is offered (Algorithm 5), or with `choose` only the best,
+    // if the retrieved statements agree on it (GoalRepairOptions::offer_share).
+    const AnalysedGoal* best = analysis.goals.empty() ? nullptr : &analysis.goals.front();
+    const bool best_agreed = best && best->goal && best->share >= repair.offer_share - 1e-9;
+    auto usable = [&](const llm::Candidate& c) {
+      const AnalysedGoal* analysed = analysis.find(c);
+      if (analysed == nullptr || !analysed->goal) return false;
+      return !instructed || !repair.choose || (best_agreed && analysed == best);
+    };
+    // The instructor hears the goal the agent would adopt, in English; the
+    // model's own words when nothing is repaired or it does not ground. An
+    // undo or the teacher leaving stops the choice (`stopped`).
+    std::optional<Stop> stopped;
+    llm::CallbackConfirmer confirmer([&](llm::QueryKind, const llm::Candidate& c) -> Result<bool> {
+      const AnalysedGoal* analysed = analysis.find(c);
+      const std::optional<Goal> goal = analysed ? analysed->goal : std::nullopt;
+      std::string text = goal && repairing ? language::say_goal_question(world(), object, *goal, true)
+                                           : language::say_goal_question(world(), object, c.text);
+      auto yes = confirm(question(QuestionKind::kConfirmGoal, text, object, goal));
+      if (yes) return *yes;
+      stopped = yes.error();
+      return make_error(ErrorCode::kCancelled, "the choice of an LLM goal was stopped");
+    });
+    auto choice = llm::finalize_choice(analysis.ordered_candidates(), llm::QueryKind::kGoal, usable,
+                                       instructed ? &confirmer : nullptr, choosing);
+    if (stopped) return tl::unexpected(*stopped);
+    if (!choice) return stop(choice.error());
+    if (choice->candidate) {
+      const AnalysedGoal* chosen = analysis.find(*choice->candidate);
+      if (chosen == nullptr || !chosen->goal) {
+        // Without an instructor the most probable statement is taken as it
         // is (the paper's Search+LLM condition); one that cannot be used
         // fails the object.
-        report.note = "LLM goal " + apprentice::quoted(candidate.text) + " is unusable: " + meaning.failure_kind;
+        report.note = "LLM goal " + apprentice::quoted(choice->text) + " is unusable: " +
+                      (chosen ? chosen->failure_kind : std::string("ungrounded"));
         return std::optional<Goal>();
       }
-      continue;
+      if (instructed) say(language::read_back_goal(world(), object, *chosen->goal));
+      std::string repairs = describe_repairs(world(), *chosen);
+      std::string source = std::string(choice->candidate->source == llm::ResponseSource::kCorpus ? "corpus" : "llm") +
+                           ": " + apprentice::quoted(choice->text) + (repairs.empty() ? "" : " (" + repairs + ")") +
+                           (instructed ? " (confirmed)" : "");
+      if (auto s = learn_goal(object, *chosen->goal, source); !s) return stop(s.error());
+      report.goal_source = "llm";
+      return chosen->goal;
     }
-    if (instructed) {
-      std::string text = language::say_goal_question(world(), object, candidate.text);
-      auto yes = confirm(question(QuestionKind::kConfirmGoal, text, object, meaning.goal));
-      if (!yes) return tl::unexpected(yes.error());
-      if (!*yes) continue;
-      say(language::read_back_goal(world(), object, *meaning.goal));
-    }
-    std::string source = std::string(candidate.source == llm::ResponseSource::kCorpus ? "corpus" : "llm") + ": " +
-                         apprentice::quoted(candidate.text) + (instructed ? " (confirmed)" : "");
-    if (auto s = learn_goal(object, *meaning.goal, source); !s) return stop(s.error());
-    report.goal_source = "llm";
-    return meaning.goal;
+    // Nothing accepted: the failure context of the next query.
+    for (const llm::Candidate& candidate : candidates) context.rejected.push_back(candidate.text);
   }
+  if (!instructed && report.note.empty()) report.note = "no usable LLM goal";
   return std::optional<Goal>();
 }
 

@@ -1,11 +1,17 @@
 // The LLM as a knowledge source for the agent: retrieves candidate goals
 // and next actions with the paper's algorithms (llm/retrieval.h) and keeps
-// the counts the experiment reports. Grounding and confirming candidates is
-// the agent's business.
+// the counts the experiment reports. Grounding, repairing and confirming
+// candidates is the agent's business (agent/goal_repair.h).
+//
+// A failing LLM never stops a run. The first failure is a warning; after
+// `breaker_threshold` consecutive failed queries the advisor stops asking
+// for the rest of the run (a circuit breaker, one more warning), so that a
+// dead or hung server costs at most that many timeouts.
 #pragma once
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,35 +21,60 @@
 
 namespace apprentice {
 
+struct LlmAdvisorOptions {
+  // Whether an instructor takes over when the LLM fails (what the warning says).
+  bool instructed = true;
+  // Consecutive failed queries after which the LLM is not asked again; 0: never stop.
+  int breaker_threshold = 3;
+  // Never ask: the server was found unreachable before the run and the run
+  // goes on without it (--llm-optional).
+  bool disabled = false;
+  // Unique goal statements to retrieve per query: Algorithm 2's
+  // num_responses, 3 in the paper; 5 here, so that the choice after repair
+  // (agent/goal_repair.h) has more statements to weigh.
+  int goal_responses = 5;
+};
+
 struct LlmTotals {
-  int calls = 0;
+  int calls = 0;           // queries made
   long tokens = 0;
-  int failures = 0;  // retrievals cut short by an unavailable LLM
+  int failures = 0;        // queries that failed
+  bool stopped = false;    // the breaker tripped, or the LLM was disabled
 };
 
 class LlmAdvisor {
  public:
-  LlmAdvisor(std::unique_ptr<llm::LlmClient> client, llm::PromptTemplates templates);
+  LlmAdvisor(std::unique_ptr<llm::LlmClient> client, llm::PromptTemplates templates,
+             LlmAdvisorOptions options = {});
 
-  // Candidate goal statements, most probable first. An LLM failure gives
+  // Candidate goal statements, in retrieval order. An LLM failure gives
   // what was retrieved before it (possibly nothing) and `last_failure`.
+  // `context.rejected` makes it a re-prompt with the failure context.
   std::vector<llm::Candidate> goals(const llm::TaskContext& context);
-  // Candidate next steps towards `goal_text`, most probable first.
+  // Candidate next steps towards `goal_text`, in retrieval order.
   std::vector<llm::Candidate> actions(const llm::TaskContext& context, const std::string& goal_text,
                                       const std::vector<std::string>& steps_so_far,
                                       const llm::IsKnownActionWord& is_known_action_word);
 
   LlmTotals totals() const;
-  // The error that cut the last retrieval short, if any.
+  // The error that cut the last retrieval short, if any (none when the
+  // advisor did not ask at all).
   const std::optional<Error>& last_failure() const { return last_failure_; }
+  // False once the breaker has tripped (or the LLM was disabled).
+  bool asking() const { return !stopped_; }
   std::string describe() const { return client_->describe(); }
+  bool pools_sources() const { return client_->pools_sources(); }
 
  private:
-  void account(const llm::Retrieval& retrieval);
+  // Keeps the counts after a retrieval that made queries from `before`.
+  void account(const llm::Retrieval& retrieval, const llm::LlmUsage& before);
 
   std::unique_ptr<llm::LlmClient> client_;
   llm::PromptTemplates templates_;
-  int failures_ = 0;
+  LlmAdvisorOptions options_;
+  int consecutive_failures_ = 0;
+  bool warned_ = false;
+  bool stopped_ = false;
   std::optional<Error> last_failure_;
 };
 

@@ -1,5 +1,6 @@
 #include "experiment/experiment.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <set>
@@ -123,12 +124,19 @@ Result<ConditionResult> run_condition(const Scenario& scenario, const Condition&
     if (!client) return tl::unexpected(client.error());
     auto templates = llm::PromptTemplates::load(options.prompts_dir);
     if (!templates) return tl::unexpected(templates.error());
-    advisor = std::make_unique<LlmAdvisor>(std::move(*client), std::move(*templates));
+    LlmAdvisorOptions advice;
+    advice.instructed = condition.instruction;
+    advice.disabled = options.llm_disabled;
+    advice.goal_responses = options.goal_responses;
+    advisor = std::make_unique<LlmAdvisor>(std::move(*client), std::move(*templates), advice);
   }
   AgentOptions agent_options;
   agent_options.condition = condition;
   agent_options.generalization = options.generalization;
   agent_options.use_rules = options.use_rules;
+  agent_options.goal_repair = options.goal_repair;
+  agent_options.max_reprompts = options.max_reprompts;
+  agent_options.offer_ungrounded = options.offer_ungrounded;
   TaskLearningAgent agent(agent_options, std::move(knowledge), Understanding(), store ? &*store : nullptr, advisor.get());
   Simulator simulator(scenario.world);
   SimulatedInstructor instructor(scenario);
@@ -151,6 +159,9 @@ Result<ConditionResult> run_condition(const Scenario& scenario, const Condition&
     LlmTotals totals = advisor->totals();
     result.llm_calls = totals.calls;
     result.llm_tokens = totals.tokens;
+    result.llm_failures = totals.failures;
+    result.llm_stopped = totals.stopped;
+    result.llm_ensemble = advisor->pools_sources();
     result.llm_description = advisor->describe();
   }
   result.search_nodes = report->search_nodes;
@@ -192,22 +203,36 @@ std::string row_text(const char* format, auto... args) {
 }  // namespace
 
 std::string format_results_table(const std::vector<ConditionResult>& results, bool beside_paper) {
-  std::string out = row_text("%-18s %-6s %11s %9s %9s %8s %7s %7s %12s %9s %9s\n", "Condition", "", "Completion%",
-                             "Objects", "Relevant%", "#Instr.", "#Words", "#Yes/No", "Search nodes", "LLM calls",
-                             "Wall ms");
+  // The label column fits "ensemble" only when a row needs it, so that other
+  // tables keep their layout.
+  const bool any_ensemble =
+      std::any_of(results.begin(), results.end(), [](const ConditionResult& r) { return r.llm_ensemble; });
+  const int label = any_ensemble ? 8 : 6;
+  std::string out = row_text("%-18s %-*s %11s %9s %9s %8s %7s %7s %12s %9s %9s\n", "Condition", label, "",
+                             "Completion%", "Objects", "Relevant%", "#Instr.", "#Words", "#Yes/No", "Search nodes",
+                             "LLM calls", "Wall ms");
+  std::string notes;
   for (const ConditionResult& r : results) {
+    const std::string name = r.condition + (r.degraded() ? "*" : "");
     std::string objects = std::to_string(r.objects_done) + "/" + std::to_string(r.objects_total);
-    out += row_text("%-18s %-6s %11s %9s %9s %8d %7d %7d %12llu %9d %9.1f\n", r.condition.c_str(), "ours",
-                    percent(r.completion_rate).c_str(), objects.c_str(), percent(r.relevance).c_str(),
-                    r.counts.instructions, r.counts.words, r.counts.yes_no,
+    out += row_text("%-18s %-*s %11s %9s %9s %8d %7d %7d %12llu %9d %9.1f\n", name.c_str(), label,
+                    r.llm_ensemble ? "ensemble" : "ours", percent(r.completion_rate).c_str(), objects.c_str(),
+                    percent(r.relevance).c_str(), r.counts.instructions, r.counts.words, r.counts.yes_no,
                     static_cast<unsigned long long>(r.search_nodes), r.llm_calls, r.wall_ms);
-    if (!beside_paper) continue;
+    if (r.degraded())
+      notes += "* " + r.condition + ": degraded, the LLM " +
+               (r.llm_failures > 0 ? "failed " + std::to_string(r.llm_failures) + " quer" +
+                                         (r.llm_failures == 1 ? "y" : "ies")
+                                   : std::string("could not be reached")) +
+               (r.llm_stopped ? " and was not asked again" : "") + "\n";
+    // An ensemble of runs is not what the paper's agent had: not set beside it.
+    if (!beside_paper || r.llm_ensemble) continue;
     if (auto paper = paper_row(r.condition))
-      out += row_text("%-18s %-6s %11s %9s %9s %8d %7d %7d %12s %9s %9s\n", "", "paper",
+      out += row_text("%-18s %-*s %11s %9s %9s %8d %7d %7d %12s %9s %9s\n", "", label, "paper",
                       percent(paper->completion).c_str(), "", percent(paper->relevance).c_str(), paper->instructions,
                       paper->words, paper->yes_no, "", "", "");
   }
-  return out;
+  return out + notes;
 }
 
 }  // namespace apprentice

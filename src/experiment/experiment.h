@@ -38,11 +38,18 @@ struct ConditionResult {
   std::optional<double> relevance;
   int llm_calls = 0;
   long llm_tokens = 0;
+  // LLM queries that failed (server down, hung, garbled); a row with any is
+  // degraded: its figures are not what the LLM would have given.
+  int llm_failures = 0;
+  bool llm_stopped = false;   // the LLM was not asked after repeated failures, or at all
+  bool llm_ensemble = false;  // the answers pooled several sources (corpus pool=all)
   std::uint64_t search_nodes = 0;
   double wall_ms = 0;
   AgentReport report;
   std::string transcript;
   std::string llm_description;  // where LLM answers came from, if any
+
+  bool degraded() const { return llm_failures > 0 || llm_stopped; }
 };
 
 // Makes a fresh LLM client for one condition.
@@ -58,6 +65,15 @@ struct ExperimentOptions {
   std::optional<std::filesystem::path> knowledge_out;
   // What every condition starts from (a copy each); empty knowledge if unset.
   std::optional<Knowledge> knowledge_in;
+  // LLM goals: analysis and repair steps, re-prompts, and the paper's way
+  // of offering responses that do not ground (see AgentOptions).
+  GoalRepairOptions goal_repair;
+  int max_reprompts = 1;
+  bool offer_ungrounded = false;
+  // The LLM server could not be reached and the run goes on without it:
+  // LLM conditions run with the LLM switched off (and are marked degraded).
+  bool llm_disabled = false;
+  int goal_responses = 5;  // unique LLM goal statements per query (LlmAdvisorOptions)
 };
 
 // The scenario can be run by the simulated instructor: it has a task and an
@@ -97,7 +113,9 @@ std::optional<PaperRow> paper_row(std::string_view condition);
 
 // The table as text; with `beside_paper` (only for the paper's kitchen,
 // Scenario::reference "table3") each condition's row is followed by the
-// paper's Table 3 row for it.
+// paper's Table 3 row for it. A row whose LLM answers pooled several
+// sources is labelled "ensemble" and is never set beside the paper's; a
+// degraded row is marked '*' and explained below the table.
 std::string format_results_table(const std::vector<ConditionResult>& results, bool beside_paper);
 
 }  // namespace apprentice

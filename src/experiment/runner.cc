@@ -1,6 +1,6 @@
 #include "experiment/runner.h"
 
-#include <filesystem>
+#include <algorithm>
 
 #include <nlohmann/json.hpp>
 
@@ -11,18 +11,19 @@
 namespace apprentice {
 
 std::string per_condition_llm_spec(const std::string& spec, const std::string& condition) {
-  for (const char* scheme : {"record:", "replay:"}) {
-    std::string prefix = scheme;
-    if (spec.rfind(prefix, 0) != 0) continue;
-    std::string rest = spec.substr(prefix.size());
-    std::size_t comma = prefix == "record:" ? rest.find(',') : std::string::npos;
-    std::filesystem::path file = rest.substr(0, comma);
-    std::string tail = comma == std::string::npos ? "" : rest.substr(comma);
-    std::filesystem::path renamed =
-        file.parent_path() / (file.stem().string() + "." + condition + file.extension().string());
-    return prefix + renamed.string() + tail;
+  return llm::spec_for_condition(spec, condition);
+}
+
+Result<bool> check_llm_before_run(const std::string& spec, const llm::LlmOptions& options, bool optional) {
+  auto reachable = llm::check_llm_connection(spec, options);
+  if (reachable) return true;
+  if (!optional) {
+    Error error = reachable.error();
+    error.message += " (--llm-optional goes on without it)";
+    return tl::unexpected(std::move(error));
   }
-  return spec;
+  spdlog::warn("{}; going on without the LLM (--llm-optional)", reachable.error().message);
+  return false;
 }
 
 namespace {
@@ -56,6 +57,11 @@ Result<ExperimentResults> run_experiment(const Scenario& scenario, const Experim
     }
   }
   ExperimentOptions options = request.options;
+  if (request.llm_spec && std::any_of(conditions.begin(), conditions.end(), [](const Condition& c) { return c.llm; })) {
+    auto reachable = check_llm_before_run(*request.llm_spec, request.llm_options, request.llm_optional);
+    if (!reachable) return tl::unexpected(reachable.error());
+    options.llm_disabled = !*reachable;
+  }
   const int count = static_cast<int>(conditions.size());
   for (int i = 0; i < count; ++i) {
     const Condition& condition = conditions[i];
@@ -80,6 +86,8 @@ std::string results_json(const std::vector<ConditionResult>& results) {
   nlohmann::json all = nlohmann::json::array();
   for (const ConditionResult& r : results)
     all.push_back(nlohmann::json{{"condition", r.condition},
+                                 {"llm_failures", r.llm_failures},
+                                 {"llm_ensemble", r.llm_ensemble},
                                  {"completion_rate", r.completion_rate},
                                  {"assertions_achieved", r.assertions_achieved},
                                  {"assertions_total", r.assertions_total},

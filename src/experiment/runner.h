@@ -24,6 +24,10 @@ struct ExperimentRequest {
   // and replays from its own cassette (per_condition_llm_spec).
   std::optional<std::string> llm_spec;
   llm::LlmOptions llm_options;
+  // When the LLM server cannot be reached before the first LLM condition:
+  // false, the experiment stops (kUnavailable, exit 4); true, it goes on
+  // with the LLM switched off and those rows marked degraded.
+  bool llm_optional = false;
   // Everything else about a condition; `options.llm` is set from llm_spec.
   ExperimentOptions options;
   // Told of each condition and LLM query as they happen; may be null.
@@ -41,13 +45,22 @@ struct ExperimentResults {
 };
 
 // Errors: kInvalidInput for an unknown condition name, for an LLM condition
-// without an LLM, or for an LLM spec that does not parse; then whatever a
-// condition returns (run_condition), prefixed with the condition's name.
+// without an LLM, or for an LLM spec that does not parse; kUnavailable when
+// the LLM server cannot be reached before the first LLM condition (unless
+// `llm_optional`); then whatever a condition returns (run_condition),
+// prefixed with the condition's name.
 Result<ExperimentResults> run_experiment(const Scenario& scenario, const ExperimentRequest& request);
 
 // record:FILE,SPEC and replay:FILE with ".<condition>" put before FILE's
-// extension; any other spec unchanged.
+// extension, also inside a record's SPEC (record:NEW,replay:OLD); any other
+// spec unchanged (llm::spec_for_condition).
 std::string per_condition_llm_spec(const std::string& spec, const std::string& condition);
+
+// Whether to go on with the LLM, checked once before a run that needs it, so
+// that a dead server costs seconds rather than a run's worth of timeouts:
+// true when `spec`'s server answers; false when it does not and `optional`
+// (with one warning); kUnavailable naming the server when it does not.
+Result<bool> check_llm_before_run(const std::string& spec, const llm::LlmOptions& options, bool optional);
 
 // The results as `experiment --json` prints them: a JSON array with one
 // object per condition (keys in docs/experiment.md), pretty-printed.

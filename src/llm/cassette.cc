@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "llm/json_fields.h"
 #include "util/file.h"
 #include "util/log.h"
 
@@ -18,10 +19,13 @@ std::string dump(const json& value) {
 }
 
 json about_to_json(const QueryAbout& about) {
-  return json{{"kind", to_string(about.kind)},     {"task", about.task},
-              {"subtask", about.subtask},          {"object", about.object_category},
-              {"place", about.place},              {"goal", about.goal},
-              {"steps", about.steps_so_far},       {"action_word", about.action_word}};
+  json j{{"kind", to_string(about.kind)},     {"task", about.task},
+         {"subtask", about.subtask},          {"object", about.object_category},
+         {"place", about.place},              {"goal", about.goal},
+         {"steps", about.steps_so_far},       {"action_word", about.action_word}};
+  // Only re-prompts carry it, so cassettes of first queries keep their bytes.
+  if (!about.rejected.empty()) j["rejected"] = about.rejected;
+  return j;
 }
 
 QueryAbout about_from_json(const json& j) {
@@ -36,6 +40,7 @@ QueryAbout about_from_json(const json& j) {
   about.goal = j.value("goal", "");
   about.steps_so_far = j.value("steps", std::vector<std::string>{});
   about.action_word = j.value("action_word", "");
+  about.rejected = j.value("rejected", std::vector<std::string>{});
   return about;
 }
 
@@ -54,13 +59,23 @@ json request_to_json(const CompletionRequest& request) {
   return j;
 }
 
+// An integer field in [low, high]; anything else makes the line unreadable.
+int64_t checked_integer(const json& j, const char* key, int64_t low, int64_t high) {
+  auto value = json_fields::integer_in(j.at(key), low, high);
+  if (!value) throw std::runtime_error(std::string(key) + " is not an integer in range");
+  return *value;
+}
+
 CompletionRequest request_from_json(const json& j) {
   CompletionRequest request;
   request.prompt = j.at("prompt").get<std::string>();
-  request.temperature = j.at("temperature").get<double>();
-  request.max_tokens = j.at("max_tokens").get<int>();
+  auto temperature = json_fields::finite_number(j.at("temperature"));
+  if (!temperature || *temperature < 0.0 || *temperature > 2.0)
+    throw std::runtime_error("temperature is not a number from 0 to 2");
+  request.temperature = *temperature;
+  request.max_tokens = static_cast<int>(checked_integer(j, "max_tokens", 1, 1 << 20));
   request.stop = j.at("stop").get<std::vector<std::string>>();
-  request.top_logprobs = j.at("top_logprobs").get<int>();
+  request.top_logprobs = static_cast<int>(checked_integer(j, "top_logprobs", 0, 20));
   request.about = about_from_json(j.at("about"));
   return request;
 }
@@ -73,9 +88,10 @@ json token_to_json(const TokenLogprob& token) {
 
 TokenLogprob token_from_json(const json& j) {
   const json& logprob = j.at(1);
-  return TokenLogprob{j.at(0).get<std::string>(),
-                      logprob.is_null() ? std::numeric_limits<double>::quiet_NaN()
-                                        : logprob.get<double>()};
+  if (logprob.is_null()) return TokenLogprob{j.at(0).get<std::string>(), std::numeric_limits<double>::quiet_NaN()};
+  auto value = json_fields::finite_number(logprob);
+  if (!value) throw std::runtime_error("a log-probability is neither a number nor null");
+  return TokenLogprob{j.at(0).get<std::string>(), *value};
 }
 
 json completion_to_json(const Completion& completion) {
@@ -111,8 +127,8 @@ Completion completion_from_json(const json& j) {
     completion.top_logprobs.push_back(std::move(alternatives));
   }
   completion.finish_reason = j.at("finish_reason").get<std::string>();
-  completion.prompt_tokens = j.at("prompt_tokens").get<int64_t>();
-  completion.completion_tokens = j.at("completion_tokens").get<int64_t>();
+  completion.prompt_tokens = checked_integer(j, "prompt_tokens", 0, json_fields::kMaxTokenCount);
+  completion.completion_tokens = checked_integer(j, "completion_tokens", 0, json_fields::kMaxTokenCount);
   completion.raw = j.value("raw", "");
   return completion;
 }
@@ -160,10 +176,15 @@ Result<Exchange> exchange_from_line(std::string_view text) {
 std::string meaning_key(const QueryAbout& about) {
   json steps = json::array();
   for (const std::string& step : about.steps_so_far) steps.push_back(normalize_label(step));
-  return dump(json::array({to_string(about.kind), normalize_label(about.task),
-                           normalize_label(about.subtask), normalize_label(about.object_category),
-                           normalize_place(about.place), normalize_label(about.goal), steps,
-                           normalize_label(about.action_word)}));
+  json key = json::array({to_string(about.kind), normalize_label(about.task), normalize_label(about.subtask),
+                          normalize_label(about.object_category), normalize_place(about.place),
+                          normalize_label(about.goal), steps, normalize_label(about.action_word)});
+  if (!about.rejected.empty()) {
+    json rejected = json::array();
+    for (const std::string& statement : about.rejected) rejected.push_back(normalize_label(statement));
+    key.push_back(rejected);
+  }
+  return dump(key);
 }
 
 // ---- RecordingClient ----
@@ -179,6 +200,8 @@ Result<std::unique_ptr<RecordingClient>> RecordingClient::open(const std::filesy
 std::string RecordingClient::describe() const {
   return "record " + path_.string() + " <- " + inner_->describe();
 }
+
+bool RecordingClient::pools_sources() const { return inner_->pools_sources(); }
 
 Result<Completion> RecordingClient::do_complete(const CompletionRequest& request) {
   Exchange exchange{request, inner_->complete(request)};
@@ -235,6 +258,16 @@ Result<Completion> ReplayClient::do_complete(const CompletionRequest& request) {
   if (auto similar = by_meaning_.find(meaning_key(request.about)); similar != by_meaning_.end()) {
     spdlog::debug("replay: no exact match, answering by meaning ({})", to_string(request.about.kind));
     return take(similar->second);
+  }
+  if (!request.about.rejected.empty()) {
+    // A re-prompt with the rejected answers that was not recorded (the
+    // cassette comes from a run in which they were not rejected, or from
+    // before re-prompting): no answer, as a corpus gives, so the run goes
+    // on as it would without it.
+    Completion nothing;
+    nothing.answered = false;
+    nothing.finish_reason = "stop";
+    return nothing;
   }
   return make_error(ErrorCode::kNotFound,
                     "nothing recorded in " + path_.string() + " for this " +

@@ -39,6 +39,7 @@ class RecordingClient : public LlmClient {
   static Result<std::unique_ptr<RecordingClient>> open(const std::filesystem::path& path,
                                                        std::unique_ptr<LlmClient> inner);
   std::string describe() const override;
+  bool pools_sources() const override;
 
  protected:
   // The inner client's answer, or kIo when the cassette cannot be written
@@ -60,7 +61,9 @@ class RecordingClient : public LlmClient {
 //  2. else by meaning: the answers recorded for the same QueryAbout (fields
 //     compared after normalize_label/normalize_place), in recorded order;
 //  3. else kNotFound ("nothing recorded for ..."), and the agent asks the
-//     instructor.
+//     instructor; but a re-prompt (a goal query listing rejected answers)
+//     that was not recorded is answered "nothing" (answered = false), as a
+//     corpus answers it, so that the run goes on as without re-prompting.
 // When the answers to a key are used up they are given again from the first,
 // so a longer run than the recorded one still gets answers (repeats).
 class ReplayClient : public LlmClient {

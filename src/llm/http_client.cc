@@ -131,10 +131,33 @@ HttpLlmClient::HttpLlmClient(HttpOptions options)
 HttpLlmClient::~HttpLlmClient() = default;
 
 std::string HttpLlmClient::describe() const {
-  std::string out = options_.format == WireFormat::kOpenAi ? "openai " : "llama ";
+  std::string out = options_.format == WireFormat::kOpenAi       ? "openai "
+                    : options_.format == WireFormat::kOpenAiChat ? "openai-chat "
+                                                                 : "llama ";
   out += without_userinfo(options_.endpoint);
   if (!options_.model.empty()) out += " model=" + options_.model;
   return out;
+}
+
+Status HttpLlmClient::check_connection() {
+  CURL* curl = curl_easy_init();
+  APPRENTICE_CHECK_MSG(curl != nullptr, "curl_easy_init failed");
+  char error_buffer[CURL_ERROR_SIZE] = {0};
+  curl_easy_setopt(curl, CURLOPT_URL, options_.endpoint.c_str());
+  curl_easy_setopt(curl, CURLOPT_CONNECT_ONLY, 1L);
+  curl_easy_setopt(curl, CURLOPT_NOSIGNAL, 1L);
+  curl_easy_setopt(curl, CURLOPT_CONNECTTIMEOUT_MS, static_cast<long>(options_.connect_timeout.count()));
+  curl_easy_setopt(curl, CURLOPT_ERRORBUFFER, error_buffer);
+  const CURLcode code = curl_easy_perform(curl);
+  const std::string why = error_buffer[0] != '\0' ? std::string(error_buffer) : std::string(curl_easy_strerror(code));
+  curl_easy_cleanup(curl);
+  if (code == CURLE_OK) return {};
+  const std::string where = without_userinfo(options_.endpoint);
+  if (code == CURLE_OPERATION_TIMEDOUT)
+    return make_error(ErrorCode::kDeadlineExceeded, "no answer from the LLM server at " + where + " within " +
+                                                        std::to_string(options_.connect_timeout.count()) +
+                                                        " ms (" + why + ")");
+  return make_error(ErrorCode::kUnavailable, "cannot connect to the LLM server at " + where + ": " + why);
 }
 
 Error HttpLlmClient::scrub(Error error) const {
@@ -244,9 +267,13 @@ Result<Completion> HttpLlmClient::do_complete(const CompletionRequest& request) 
       return tl::unexpected(scrub(Error{code, what + hint}));
     }
     if (n + 1 < attempts) {
-      spdlog::warn("{}; retrying in {} ms (attempt {} of {})", scrub(last).message, wait.count(),
+      spdlog::info("{}; retrying in {} ms (attempt {} of {})", scrub(last).message, wait.count(),
                    n + 2, attempts);
-      std::this_thread::sleep_for(wait);
+      if (options_.sleep) {
+        options_.sleep(wait);
+      } else {
+        std::this_thread::sleep_for(wait);
+      }
     }
   }
   last.message += " (gave up after " + std::to_string(attempts) + " attempts)";

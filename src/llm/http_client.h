@@ -19,6 +19,7 @@
 #pragma once
 
 #include <chrono>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -36,12 +37,15 @@ struct HttpOptions {
   std::string api_key;  // sent as "Authorization: Bearer ..." when not empty
   std::optional<int> seed;
   std::chrono::milliseconds connect_timeout{5'000};
-  std::chrono::milliseconds request_timeout{120'000};
-  std::chrono::milliseconds stall_timeout{60'000};
+  std::chrono::milliseconds request_timeout{30'000};
+  std::chrono::milliseconds stall_timeout{30'000};
   int max_retries = 3;
   std::chrono::milliseconds backoff_initial{500};
   std::chrono::milliseconds backoff_max{8'000};
   std::chrono::milliseconds retry_after_cap{30'000};
+  // How the client waits between attempts; empty: std::this_thread::sleep_for.
+  // Tests inject their own to check the waits without a wall clock.
+  std::function<void(std::chrono::milliseconds)> sleep;
 };
 
 class HttpLlmClient : public LlmClient {
@@ -51,6 +55,13 @@ class HttpLlmClient : public LlmClient {
 
   // "openai http://host:8080/v1/completions model=x" (never the key).
   std::string describe() const override;
+
+  // Whether the server accepts a connection, within connect_timeout (a TCP
+  // connection, and TLS for https; no request is sent, so it costs the
+  // server nothing). Errors: kUnavailable (refused, unreachable, a name
+  // that does not resolve), kDeadlineExceeded (no answer to the connection
+  // in time).
+  Status check_connection();
 
  protected:
   Result<Completion> do_complete(const CompletionRequest& request) override;

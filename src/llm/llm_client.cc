@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <limits>
 
 #include "util/check.h"
 #include "util/log.h"
@@ -86,6 +87,10 @@ Result<std::vector<TokenLogprob>> next_token_alternatives(LlmClient& client,
     return alternatives;
   }
   if (!completion->tokens.empty()) return std::vector<TokenLogprob>{completion->tokens.front()};
+  // A server that reports no log-probabilities at all ("logprobs": null):
+  // the one token generated is the text, its probability unknown.
+  if (!completion->text.empty())
+    return std::vector<TokenLogprob>{TokenLogprob{completion->text, std::numeric_limits<double>::quiet_NaN()}};
   return std::vector<TokenLogprob>{};
 }
 

@@ -38,6 +38,10 @@ struct QueryAbout {
   std::string goal;             // kActionWord, kAction: the goal the steps are for
   std::vector<std::string> steps_so_far;  // kActionWord, kAction: steps done
   std::string action_word;      // kAction: the first word being continued
+  // kGoal: answers already rejected for this object (a "no" from the
+  // instructor, or unusable), which the prompt lists so that the model
+  // proposes something else. Empty for a first query.
+  std::vector<std::string> rejected;
 
   friend bool operator==(const QueryAbout&, const QueryAbout&) = default;
 };
@@ -127,6 +131,11 @@ class LlmClient {
   // points. Never contains a credential.
   virtual std::string describe() const = 0;
 
+  // Whether the answers pool several sources (a corpus read as an ensemble
+  // of runs), so that tables can say so rather than set them beside a
+  // single model's figures.
+  virtual bool pools_sources() const { return false; }
+
  protected:
   virtual Result<Completion> do_complete(const CompletionRequest& request) = 0;
 
@@ -137,7 +146,8 @@ class LlmClient {
 // The paper's single next-token top-k query: one token at temperature 0 with
 // k alternatives. Returns the alternatives at the first position, most
 // probable first (the chosen token alone when the backend gave no
-// alternatives; empty when it answered nothing).
+// alternatives; the text with a NaN log-probability when it gave no
+// log-probabilities at all; empty when it answered nothing).
 Result<std::vector<TokenLogprob>> next_token_alternatives(LlmClient& client,
                                                           std::string prompt, int k,
                                                           QueryAbout about);

@@ -100,6 +100,7 @@ QueryAbout about_for(const TaskContext& context, QueryKind kind) {
   about.subtask = context.subtask;
   about.object_category = context.object;
   about.place = normalize_place(context.object_location);
+  if (kind == QueryKind::kGoal) about.rejected = context.rejected;
   return about;
 }
 
@@ -135,7 +136,19 @@ std::filesystem::path PromptTemplates::default_dir() {
 }
 
 std::string PromptTemplates::goal_prompt(const TaskContext& context) const {
-  return fill(goal_, task_values(context));
+  std::string prompt = fill(goal_, task_values(context));
+  if (context.rejected.empty()) return prompt;
+  std::string failures;
+  for (const std::string& rejected : context.rejected) {
+    std::string_view statement = trim(rejected);
+    constexpr std::string_view kLead = "the goal is that ";
+    if (starts_with_ignoring_case(statement, kLead)) statement.remove_prefix(kLead.size());
+    while (!statement.empty() && statement.back() == '.') statement.remove_suffix(1);
+    failures += "Not: " + std::string(statement) + ".\n";
+  }
+  const size_t last_line = prompt.rfind('\n');
+  prompt.insert(last_line == std::string::npos ? 0 : last_line + 1, failures);
+  return prompt;
 }
 
 std::string PromptTemplates::action_prompt(const TaskContext& context, std::string_view goal,

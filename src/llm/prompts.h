@@ -6,6 +6,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "llm/llm_client.h"
 #include "util/result.h"
@@ -20,6 +21,10 @@ struct TaskContext {
   std::string location;         // where the agent is: "kitchen"
   std::string object;           // object category as perceived: "ceramic-plate"
   std::string object_location;  // with its preposition: "on table"
+  // Goal statements already rejected for this object: the goal prompt lists
+  // them ("Not: the ketchup is in the cupboard.") before its (RESULT) line,
+  // the failure context the paper's future work proposes.
+  std::vector<std::string> rejected = {};
 };
 
 // The QueryAbout for a query of `kind` in this context (place is the object
@@ -38,6 +43,9 @@ class PromptTemplates {
   static std::filesystem::path default_dir();
 
   // The goal prompt; it ends with "(RESULT)" so the model writes the goal.
+  // With rejected statements in the context, one line "Not: <statement>."
+  // per statement goes just before that last line (the statement without
+  // its "the goal is that").
   std::string goal_prompt(const TaskContext& context) const;
 
   // The action prompt for the step after `steps_so_far`; it ends with the

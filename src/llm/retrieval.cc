@@ -82,7 +82,7 @@ Retrieval retrieve_goals(LlmClient& client, const PromptTemplates& templates,
   request.top_logprobs = 1;
   request.about = about_for(context, QueryKind::kGoal);
   Retrieval out = get_unique_responses(client, std::move(request), params.unique);
-  if (out.failure) spdlog::warn("LLM goal retrieval failed: {}", out.failure->describe());
+  if (out.failure) spdlog::info("LLM goal retrieval failed: {}", out.failure->describe());
   return out;
 }
 
@@ -105,9 +105,15 @@ std::vector<TokenLogprob> kept_words(const std::vector<TokenLogprob>& words,
   std::vector<std::string> seen;
   for (const TokenLogprob& word : words) {
     std::string text(trim(word.token));
-    if (text.empty() || std::isnan(word.logprob)) continue;
+    if (text.empty()) continue;
     if (std::find(seen.begin(), seen.end(), to_lower(text)) != seen.end()) continue;
     seen.push_back(to_lower(text));
+    // A word whose probability the server did not report is the model's own
+    // choice at temperature 0: kept, since no threshold can be checked.
+    if (std::isnan(word.logprob)) {
+      kept.push_back(TokenLogprob{text, word.logprob});
+      continue;
+    }
     const bool known = is_known && is_known(text);
     const double threshold = known ? params.known_word_threshold : params.unknown_word_threshold;
     if (std::exp(word.logprob) >= threshold) kept.push_back(TokenLogprob{text, word.logprob});
@@ -132,7 +138,7 @@ Retrieval retrieve_actions(LlmClient& client, const PromptTemplates& templates,
   auto words = next_token_alternatives(client, prompt, params.num_words, about);
   if (!words) {
     out.failure = words.error();
-    spdlog::warn("LLM action retrieval failed: {}", out.failure->describe());
+    spdlog::info("LLM action retrieval failed: {}", out.failure->describe());
     return out;
   }
   out.first_words = *words;
@@ -157,7 +163,7 @@ Retrieval retrieve_actions(LlmClient& client, const PromptTemplates& templates,
     }
     if (completions.failure) {
       out.failure = completions.failure;
-      spdlog::warn("LLM action retrieval failed: {}", out.failure->describe());
+      spdlog::info("LLM action retrieval failed: {}", out.failure->describe());
       break;
     }
   }
@@ -171,16 +177,15 @@ void sort_by_mean_logprob(std::vector<Candidate>& candidates) {
   });
 }
 
-Result<Choice> finalize_choice(std::vector<Candidate> candidates, QueryKind kind,
-                               const Grounds& grounds, Confirmer* confirmer,
-                               UnattendedPolicy policy) {
-  sort_by_mean_logprob(candidates);
+Result<Choice> finalize_choice(std::vector<Candidate> candidates, QueryKind kind, const Grounds& grounds,
+                               Confirmer* confirmer, const ChoiceOptions& options) {
+  if (options.sort_by_probability) sort_by_mean_logprob(candidates);
   auto does_ground = [&](const Candidate& c) { return !grounds || grounds(c); };
   Choice choice;
   if (confirmer == nullptr) {
     for (const Candidate& candidate : candidates) {
       const bool grounded = does_ground(candidate);
-      if (policy == UnattendedPolicy::kFirstGrounded && !grounded) {
+      if (options.unattended == UnattendedPolicy::kFirstGrounded && !grounded) {
         ++choice.skipped_ungrounded;
         continue;
       }
@@ -193,7 +198,8 @@ Result<Choice> finalize_choice(std::vector<Candidate> candidates, QueryKind kind
     return choice;  // kNone
   }
   for (const Candidate& candidate : candidates) {
-    if (!does_ground(candidate)) {
+    const bool grounded = does_ground(candidate);
+    if (!grounded && !options.offer_ungrounded) {
       ++choice.skipped_ungrounded;
       continue;
     }
@@ -204,10 +210,12 @@ Result<Choice> finalize_choice(std::vector<Candidate> candidates, QueryKind kind
       choice.origin = ChoiceOrigin::kConfirmed;
       choice.text = candidate.text;
       choice.candidate = candidate;
-      choice.grounded = true;
+      choice.grounded = grounded;
       return choice;
     }
+    choice.rejected.push_back(candidate);
   }
+  if (!options.ask_description) return choice;  // kNone: the caller goes on
   Result<std::optional<std::string>> described = confirmer->describe(kind);
   if (!described) return tl::unexpected(described.error());
   if (described->has_value()) {
@@ -215,6 +223,14 @@ Result<Choice> finalize_choice(std::vector<Candidate> candidates, QueryKind kind
     choice.text = **described;
   }
   return choice;
+}
+
+Result<Choice> finalize_choice(std::vector<Candidate> candidates, QueryKind kind,
+                               const Grounds& grounds, Confirmer* confirmer,
+                               UnattendedPolicy policy) {
+  ChoiceOptions options;
+  options.unattended = policy;
+  return finalize_choice(std::move(candidates), kind, grounds, confirmer, options);
 }
 
 }  // namespace apprentice::llm

@@ -28,7 +28,7 @@ struct Candidate {
   double temperature = 0.0;            // of the query that produced it
   ResponseSource source = ResponseSource::kModel;
   std::string action_word;             // actions: the first word it continues
-  double action_word_prob = 0.0;       // actions: that word's probability
+  double action_word_prob = 0.0;       // actions: that word's probability (NaN: not reported)
 
   friend bool operator==(const Candidate&, const Candidate&) = default;
 };
@@ -115,8 +115,23 @@ class Confirmer {
   virtual Result<bool> confirm(QueryKind kind, const Candidate& candidate) = 0;
   // Every candidate was rejected, or none could be offered: asks for a
   // description ("What is the next goal or subtask of clear?"). Returns the
-  // instructor's text, or nothing if they gave none.
-  virtual Result<std::optional<std::string>> describe(QueryKind kind) = 0;
+  // instructor's text, or nothing if they gave none (the default: a caller
+  // that asks for descriptions itself passes ask_description = false).
+  virtual Result<std::optional<std::string>> describe(QueryKind kind) {
+    (void)kind;
+    return std::optional<std::string>();
+  }
+};
+
+// A Confirmer that asks through a function (the agent's dialogue).
+class CallbackConfirmer : public Confirmer {
+ public:
+  using Ask = std::function<Result<bool>(QueryKind kind, const Candidate& candidate)>;
+  explicit CallbackConfirmer(Ask ask) : ask_(std::move(ask)) {}
+  Result<bool> confirm(QueryKind kind, const Candidate& candidate) override { return ask_(kind, candidate); }
+
+ private:
+  Ask ask_;
 };
 
 // Whether the agent can interpret and ground a response in its world.
@@ -136,6 +151,7 @@ struct Choice {
   bool grounded = false;               // whether `candidate` grounds
   int offered = 0;                     // yes/no questions asked
   int skipped_ungrounded = 0;          // candidates not offered: they do not ground
+  std::vector<Candidate> rejected;     // those the instructor said no to, in order
 };
 
 // What to take without an instructor: the paper takes the most probable
@@ -143,11 +159,30 @@ struct Choice {
 // kFirstGrounded takes the most probable one that grounds.
 enum class UnattendedPolicy { kFirst, kFirstGrounded };
 
-// Algorithm 5. Sorts `candidates` by mean log-probability. Without an
-// instructor (confirmer == nullptr) returns the first one (see policy), with
-// `grounded` set. With one, offers the grounding candidates in that order
-// until one is accepted (ungrounded ones are never offered), then asks for a
-// description. `grounds` may be empty: everything grounds.
+struct ChoiceOptions {
+  UnattendedPolicy unattended = UnattendedPolicy::kFirst;
+  // The paper offers every response, also one the agent cannot ground (the
+  // instructor can only say no to it); by default those are never offered.
+  bool offer_ungrounded = false;
+  // Ask for a description once every candidate is rejected (the last step
+  // of Algorithm 5). Off for a caller that asks later itself, after
+  // re-prompting the model with the rejected answers.
+  bool ask_description = true;
+  // Sort by mean log-probability first (Algorithm 5). Off for a caller
+  // that has put the candidates in an order of its own (a score after
+  // analysing them, see agent/goal_repair.h).
+  bool sort_by_probability = true;
+};
+
+// Algorithm 5. Sorts `candidates` by mean log-probability (unless told
+// not to). Without an instructor (confirmer == nullptr) returns the first
+// one (see the unattended policy), with `grounded` set. With one, offers the
+// candidates in that order until one is accepted (ungrounded ones only with
+// offer_ungrounded), then asks for a description (unless told not to).
+// `grounds` may be empty: everything grounds.
+Result<Choice> finalize_choice(std::vector<Candidate> candidates, QueryKind kind, const Grounds& grounds,
+                               Confirmer* confirmer, const ChoiceOptions& options);
+// The same with the paper's defaults and an unattended policy.
 Result<Choice> finalize_choice(std::vector<Candidate> candidates, QueryKind kind,
                                const Grounds& grounds, Confirmer* confirmer,
                                UnattendedPolicy policy = UnattendedPolicy::kFirst);

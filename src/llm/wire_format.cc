@@ -6,6 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "llm/json_fields.h"
+
 namespace apprentice::llm {
 namespace {
 
@@ -22,11 +24,19 @@ double prob_to_logprob(double prob) {
   return std::max(std::log(std::min(prob, 1.0)), kFloorLogprob);
 }
 
-// A number field, or NaN when absent or null.
+// A number field, or NaN when absent, null or not finite.
 double number_or_nan(const json& object, const char* key) {
   auto it = object.find(key);
-  if (it == object.end() || !it->is_number()) return kNan;
-  return it->get<double>();
+  if (it == object.end()) return kNan;
+  return json_fields::finite_number(*it).value_or(kNan);
+}
+
+// A log-probability as reported, kept within [kFloorLogprob, 0]; NaN when
+// it is not a finite number.
+double clamp_logprob(const json& value) {
+  auto number = json_fields::finite_number(value);
+  if (!number) return kNan;
+  return std::clamp(*number, kFloorLogprob, 0.0);
 }
 
 std::string string_field(const json& object, std::initializer_list<const char*> keys) {
@@ -40,14 +50,70 @@ std::string string_field(const json& object, std::initializer_list<const char*> 
 // An entry's log-probability, from "logprob" or else "prob".
 double entry_logprob(const json& entry) {
   double logprob = number_or_nan(entry, "logprob");
-  if (!std::isnan(logprob)) return std::max(logprob, kFloorLogprob);
+  if (!std::isnan(logprob)) return std::clamp(logprob, kFloorLogprob, 0.0);
   double prob = number_or_nan(entry, "prob");
   if (!std::isnan(prob)) return prob_to_logprob(prob);
   return kNan;
 }
 
+// The token's bytes ("bytes": [226, 128]) as a string, when the entry has
+// them: servers send them because a token may be cut in the middle of a
+// UTF-8 character, and its "token" string is then mangled ("\\xe2\\x80",
+// or U+FFFD). Nothing when absent, null or not a list of bytes.
+std::optional<std::string> bytes_field(const json& entry) {
+  auto it = entry.find("bytes");
+  if (it == entry.end() || !it->is_array()) return std::nullopt;
+  std::string out;
+  for (const json& byte : *it) {
+    auto value = json_fields::integer_in(byte, 0, 255);
+    if (!value) return std::nullopt;
+    out.push_back(static_cast<char>(*value));
+  }
+  return out;
+}
+
+// The token is its string, unless its bytes cut a UTF-8 character: then
+// the string cannot say what it is, and the bytes are kept (to be joined
+// with the tokens that complete the character, see join_cut_characters).
 TokenLogprob read_entry(const json& entry) {
+  auto bytes = bytes_field(entry);
+  if (bytes && find_invalid_utf8(*bytes)) return TokenLogprob{std::move(*bytes), entry_logprob(entry)};
   return TokenLogprob{string_field(entry, {"token", "tok_str", "content"}), entry_logprob(entry)};
+}
+
+// `text` with every byte that is not part of well-formed UTF-8 replaced by
+// U+FFFD, so that every token we keep is valid UTF-8.
+std::string valid_utf8(std::string text) {
+  while (auto bad = find_invalid_utf8(text)) text.replace(*bad, 1, "\xEF\xBF\xBD");
+  return text;
+}
+
+// Tokens cut in the middle of a UTF-8 character are joined with the ones
+// that complete it: one token of their bytes, with the summed
+// log-probability (the probability of the sequence) and the alternatives
+// of the first. Whatever cannot be completed is replaced by U+FFFD.
+void join_cut_characters(Completion& out) {
+  std::vector<TokenLogprob> tokens;
+  std::vector<std::vector<TokenLogprob>> top;
+  for (size_t i = 0; i < out.tokens.size();) {
+    TokenLogprob joined = out.tokens[i];
+    size_t next = i + 1;
+    // A UTF-8 character has at most 4 bytes, so at most 3 more tokens complete it.
+    while (find_invalid_utf8(joined.token) && next < out.tokens.size() && next < i + 4) {
+      joined.token += out.tokens[next].token;
+      joined.logprob += out.tokens[next].logprob;  // NaN if either is unreported
+      ++next;
+    }
+    joined.logprob = std::max(joined.logprob, kFloorLogprob);  // keeps NaN
+    joined.token = valid_utf8(std::move(joined.token));
+    std::vector<TokenLogprob> alternatives = i < out.top_logprobs.size() ? out.top_logprobs[i] : std::vector<TokenLogprob>{};
+    for (TokenLogprob& alternative : alternatives) alternative.token = valid_utf8(std::move(alternative.token));
+    tokens.push_back(std::move(joined));
+    top.push_back(std::move(alternatives));
+    i = next;
+  }
+  out.tokens = std::move(tokens);
+  out.top_logprobs = std::move(top);
 }
 
 void sort_alternatives(std::vector<TokenLogprob>& alternatives) {
@@ -87,6 +153,7 @@ void read_openai_logprobs(const json& logprobs, Completion& out) {
   if (!logprobs.is_object()) return;  // null: the server gave none
   if (auto content = logprobs.find("content"); content != logprobs.end() && content->is_array()) {
     for (const json& entry : *content) read_position(entry, out);
+    join_cut_characters(out);
     return;
   }
   const json& tokens = logprobs.at("tokens");
@@ -94,14 +161,11 @@ void read_openai_logprobs(const json& logprobs, Completion& out) {
   auto top = logprobs.find("top_logprobs");
   for (size_t i = 0; i < tokens.size(); ++i) {
     TokenLogprob token{tokens.at(i).get<std::string>(), kNan};
-    if (i < token_logprobs.size() && token_logprobs.at(i).is_number()) {
-      token.logprob = std::max(token_logprobs.at(i).get<double>(), kFloorLogprob);
-    }
+    if (i < token_logprobs.size()) token.logprob = clamp_logprob(token_logprobs.at(i));
     std::vector<TokenLogprob> alternatives;
     if (top != logprobs.end() && top->is_array() && i < top->size() && top->at(i).is_object()) {
       for (const auto& [text, value] : top->at(i).items()) {
-        double lp = value.is_number() ? std::max(value.get<double>(), kFloorLogprob) : kNan;
-        alternatives.push_back(TokenLogprob{text, lp});
+        alternatives.push_back(TokenLogprob{text, clamp_logprob(value)});
       }
     }
     sort_alternatives(alternatives);
@@ -110,11 +174,18 @@ void read_openai_logprobs(const json& logprobs, Completion& out) {
   }
 }
 
-void read_openai(const json& body, Completion& out) {
+void read_openai(const json& body, Completion& out, bool chat) {
   const json& choices = body.at("choices");
   if (!choices.is_array() || choices.empty()) throw std::runtime_error("no choices");
   const json& choice = choices.at(0);
-  out.text = choice.at("text").get<std::string>();
+  if (chat) {
+    // choices[0].message.content; null only with a refusal or tool calls.
+    const json& content = choice.at("message").at("content");
+    if (!content.is_string()) throw std::runtime_error("the message has no text content");
+    out.text = content.get<std::string>();
+  } else {
+    out.text = choice.at("text").get<std::string>();
+  }
   if (auto reason = choice.find("finish_reason"); reason != choice.end() && reason->is_string()) {
     out.finish_reason = reason->get<std::string>();
   }
@@ -122,9 +193,11 @@ void read_openai(const json& body, Completion& out) {
     read_openai_logprobs(*logprobs, out);
   }
   out.completion_tokens = static_cast<int64_t>(out.tokens.size());
-  if (auto usage = body.find("usage"); usage != body.end() && usage->is_object()) {
-    out.prompt_tokens = usage->value("prompt_tokens", int64_t{0});
-    out.completion_tokens = usage->value("completion_tokens", out.completion_tokens);
+  if (auto usage = body.find("usage"); usage != body.end()) {
+    // Counts that are not counts (negative, fractional, absurd) are ignored.
+    out.prompt_tokens = json_fields::integer_field(*usage, "prompt_tokens", 0, json_fields::kMaxTokenCount, 0);
+    out.completion_tokens = json_fields::integer_field(*usage, "completion_tokens", 0, json_fields::kMaxTokenCount,
+                                                       out.completion_tokens);
   }
 }
 
@@ -132,6 +205,7 @@ void read_native(const json& body, Completion& out) {
   out.text = body.at("content").get<std::string>();
   if (auto probs = body.find("completion_probabilities"); probs != body.end() && probs->is_array()) {
     for (const json& entry : *probs) read_position(entry, out);
+    join_cut_characters(out);
   }
   std::string stop_type = string_field(body, {"stop_type"});
   if (stop_type == "eos" || stop_type == "word") {
@@ -143,8 +217,9 @@ void read_native(const json& body, Completion& out) {
   } else if (body.value("stopped_eos", false) || body.value("stopped_word", false)) {
     out.finish_reason = "stop";
   }
-  out.prompt_tokens = body.value("tokens_evaluated", int64_t{0});
-  out.completion_tokens = body.value("tokens_predicted", static_cast<int64_t>(out.tokens.size()));
+  out.prompt_tokens = json_fields::integer_field(body, "tokens_evaluated", 0, json_fields::kMaxTokenCount, 0);
+  out.completion_tokens = json_fields::integer_field(body, "tokens_predicted", 0, json_fields::kMaxTokenCount,
+                                                     static_cast<int64_t>(out.tokens.size()));
 }
 
 std::string server_error_message(const json& error) {
@@ -166,7 +241,15 @@ std::string build_request_body(WireFormat format, const CompletionRequest& reque
   body["stream"] = false;
   // At least one, so that the chosen tokens come with their log-probabilities.
   const int alternatives = std::max(1, request.top_logprobs);
-  if (format == WireFormat::kOpenAi) {
+  if (format == WireFormat::kOpenAiChat) {
+    // The same prompt, as the one user message.
+    body.erase("prompt");
+    body["messages"] = json::array({json{{"role", "user"}, {"content", request.prompt}}});
+    body["max_tokens"] = request.max_tokens;
+    body["logprobs"] = true;
+    body["top_logprobs"] = alternatives;
+    body["n"] = 1;
+  } else if (format == WireFormat::kOpenAi) {
     body["max_tokens"] = request.max_tokens;
     body["logprobs"] = alternatives;
     body["n"] = 1;
@@ -195,6 +278,9 @@ Result<Completion> parse_response_body(WireFormat format, std::string_view body)
                                      std::to_string(body.size()) + " bytes"));
     }
     return tl::unexpected(bad_body("the body is not JSON (" + std::string(e.what()) + ")"));
+  } catch (const json::exception& e) {
+    // out_of_range for a number such as 1e400, and any other of nlohmann's.
+    return tl::unexpected(bad_body("the body is not usable JSON (" + std::string(e.what()) + ")"));
   }
   if (!parsed.is_object()) return tl::unexpected(bad_body("the body is not a JSON object"));
   if (auto error = parsed.find("error"); error != parsed.end() && !error->is_null()) {
@@ -205,14 +291,16 @@ Result<Completion> parse_response_body(WireFormat format, std::string_view body)
   Completion out;
   out.source = ResponseSource::kModel;
   try {
-    if (format == WireFormat::kOpenAi) {
-      read_openai(parsed, out);
-    } else {
+    if (format == WireFormat::kLlamaNative) {
       read_native(parsed, out);
+    } else {
+      read_openai(parsed, out, format == WireFormat::kOpenAiChat);
     }
   } catch (const std::exception& e) {
     // nlohmann's out_of_range / type_error for missing or mistyped fields.
-    const char* layout = format == WireFormat::kOpenAi ? "OpenAI completions" : "llama-server";
+    const char* layout = format == WireFormat::kOpenAi       ? "OpenAI completions"
+                         : format == WireFormat::kOpenAiChat ? "OpenAI chat completions"
+                                                             : "llama-server";
     return tl::unexpected(bad_body(std::string("not in the ") + layout +
                                    " layout: " + e.what()));
   }

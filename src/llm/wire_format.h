@@ -1,16 +1,29 @@
 // The JSON spoken with completion servers, kept apart from the transport so
-// that it can be tested without a network. Two dialects:
+// that it can be tested without a network (and fuzzed: the functions here are
+// pure). Three dialects:
 //
 //  - kOpenAi: POST {base}/completions, the OpenAI legacy completions API,
 //    also served by llama-server, vLLM and Ollama under /v1/completions.
 //    Log-probabilities come either in OpenAI's layout (logprobs.tokens,
 //    .token_logprobs, .top_logprobs as a list of {token: logprob} maps) or in
 //    llama-server's (logprobs.content: [{token, logprob, top_logprobs: [...]}]).
+//  - kOpenAiChat: POST {base}/chat/completions, the chat endpoint that
+//    current servers and OpenAI's models are built around, with the same
+//    prompt as the one user message, "logprobs": true and "top_logprobs".
+//    The reply's choices[0].message.content is the text and
+//    choices[0].logprobs.content the tokens ({token, logprob, bytes,
+//    top_logprobs: [{token, logprob, bytes}]}), as OpenAI, llama-server,
+//    vLLM (-9999.0 for an impossible token, bytes may be null) and Ollama
+//    (no bytes; top_logprobs left out when empty) send them.
 //  - kLlamaNative: POST {base}/completion, llama-server's own endpoint with
 //    n_probs. Its completion_probabilities come in three layouts, all read:
 //    current ({token, logprob, top_logprobs: [{token, logprob}]}), with
 //    post_sampling_probs ({token, prob, top_probs: [{token, prob}]}) and the
 //    legacy one ({content, probs: [{tok_str, prob}]}).
+//
+// Wherever an entry has "bytes", the token is read from them; tokens cut in
+// the middle of a UTF-8 character are joined with the ones that complete it
+// (their log-probabilities summed), so that every token kept is valid UTF-8.
 #pragma once
 
 #include <optional>
@@ -22,7 +35,7 @@
 
 namespace apprentice::llm {
 
-enum class WireFormat { kOpenAi, kLlamaNative };
+enum class WireFormat { kOpenAi, kOpenAiChat, kLlamaNative };
 
 struct WireOptions {
   std::string model;          // omitted from the body when empty

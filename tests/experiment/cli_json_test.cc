@@ -18,9 +18,9 @@ using ::testing::HasSubstr;
 using ::testing::StartsWith;
 
 const std::vector<std::string> kKeys = {"assertions_achieved", "assertions_total", "completion_rate", "condition",
-                                        "instructions",        "llm_calls",        "llm_tokens",      "objects_done",
-                                        "objects_total",       "relevance",        "search_nodes",    "wall_ms",
-                                        "words",               "yes_no"};
+                                        "instructions",        "llm_calls",        "llm_ensemble",    "llm_failures",
+                                        "llm_tokens",          "objects_done",     "objects_total",   "relevance",
+                                        "search_nodes",        "wall_ms",          "words",           "yes_no"};
 
 std::vector<std::string> keys_of(const json& object) {
   std::vector<std::string> keys;
@@ -32,8 +32,9 @@ std::vector<std::string> keys_of(const json& object) {
 void expect_types(const json& r, bool llm) {
   EXPECT_TRUE(r["condition"].is_string());
   EXPECT_TRUE(r["completion_rate"].is_number());
+  EXPECT_TRUE(r["llm_ensemble"].is_boolean());
   for (const char* key : {"assertions_achieved", "assertions_total", "objects_done", "objects_total", "instructions",
-                          "words", "yes_no", "llm_calls", "llm_tokens", "search_nodes"}) {
+                          "words", "yes_no", "llm_calls", "llm_tokens", "llm_failures", "search_nodes"}) {
     EXPECT_TRUE(r[key].is_number_integer()) << key << " is " << r[key].dump();
     EXPECT_GE(r[key].get<long>(), 0) << key;
   }

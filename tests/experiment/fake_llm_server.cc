@@ -78,39 +78,102 @@ int next_step_number(const std::string& prompt) {
   return n;
 }
 
-json completion(const std::string& text, const std::vector<std::string>& tokens, double logprob,
-                const std::vector<std::pair<std::string, double>>& alternatives, int prompt_tokens) {
+}  // namespace
+
+// What the model says: the text, its tokens with one log-probability each,
+// and alternatives for the first token.
+struct FakeLlmServer::Answer {
+  std::string text;
+  std::vector<std::string> tokens;
+  double logprob = 0.0;
+  std::vector<std::pair<std::string, double>> alternatives;
+  int prompt_tokens = 0;
+};
+
+namespace {
+
+json usage(const FakeLlmServer::Answer& a) {
+  return json{{"prompt_tokens", a.prompt_tokens},
+              {"completion_tokens", static_cast<int>(a.tokens.size())},
+              {"total_tokens", a.prompt_tokens + static_cast<int>(a.tokens.size())}};
+}
+
+// The alternatives at position i, the chosen token first.
+std::vector<std::pair<std::string, double>> alternatives_at(const FakeLlmServer::Answer& a, size_t i) {
+  std::vector<std::pair<std::string, double>> out = {{a.tokens[i], a.logprob}};
+  if (i == 0)
+    for (const auto& alternative : a.alternatives)
+      if (alternative.first != a.tokens[i]) out.push_back(alternative);
+  return out;
+}
+
+// OpenAI's legacy completions layout.
+json as_completion(const FakeLlmServer::Answer& a) {
   json token_logprobs = json::array(), top = json::array();
-  for (size_t i = 0; i < tokens.size(); ++i) {
-    token_logprobs.push_back(logprob);
+  for (size_t i = 0; i < a.tokens.size(); ++i) {
+    token_logprobs.push_back(a.logprob);
     json position = json::object();
-    position[tokens[i]] = logprob;
-    if (i == 0)
-      for (const auto& [token, lp] : alternatives)
-        if (!position.contains(token)) position[token] = lp;
+    for (const auto& [token, lp] : alternatives_at(a, i)) position[token] = lp;
     top.push_back(position);
   }
   return json{{"id", "cmpl-fake"},
               {"object", "text_completion"},
               {"model", "fake-davinci"},
-              {"choices", json::array({json{{"text", text},
+              {"choices", json::array({json{{"text", a.text},
                                             {"index", 0},
                                             {"finish_reason", "stop"},
-                                            {"logprobs", json{{"tokens", tokens},
+                                            {"logprobs", json{{"tokens", a.tokens},
                                                               {"token_logprobs", token_logprobs},
                                                               {"top_logprobs", top}}}}})},
-              {"usage", json{{"prompt_tokens", prompt_tokens},
-                             {"completion_tokens", static_cast<int>(tokens.size())},
-                             {"total_tokens", prompt_tokens + static_cast<int>(tokens.size())}}}};
+              {"usage", usage(a)}};
+}
+
+json entries(const FakeLlmServer::Answer& a, const char* top_key) {
+  json content = json::array();
+  for (size_t i = 0; i < a.tokens.size(); ++i) {
+    json top = json::array();
+    for (const auto& [token, lp] : alternatives_at(a, i)) top.push_back(json{{"token", token}, {"logprob", lp}});
+    content.push_back(json{{"token", a.tokens[i]}, {"logprob", a.logprob}, {top_key, top}});
+  }
+  return content;
+}
+
+// OpenAI's chat completions layout.
+json as_chat(const FakeLlmServer::Answer& a) {
+  return json{{"id", "chatcmpl-fake"},
+              {"object", "chat.completion"},
+              {"model", "fake-chat"},
+              {"choices", json::array({json{{"index", 0},
+                                            {"message", json{{"role", "assistant"}, {"content", a.text}}},
+                                            {"logprobs", json{{"content", entries(a, "top_logprobs")}}},
+                                            {"finish_reason", "stop"}}})},
+              {"usage", usage(a)}};
+}
+
+// llama-server's /completion layout.
+json as_llama(const FakeLlmServer::Answer& a) {
+  return json{{"content", a.text},
+              {"stop", true},
+              {"stop_type", "word"},
+              {"tokens_evaluated", a.prompt_tokens},
+              {"tokens_predicted", static_cast<int>(a.tokens.size())},
+              {"completion_probabilities", entries(a, "top_logprobs")}};
 }
 
 }  // namespace
 
-FakeLlmServer::FakeLlmServer(ServerMode mode, Goals goals, std::vector<std::string> fallback)
-    : mode_(mode), goals_(std::move(goals)), fallback_(std::move(fallback)) {
+FakeLlmServer::FakeLlmServer(ServerMode mode, Goals goals, std::vector<std::string> fallback, Goals second_thoughts)
+    : mode_(mode), goals_(std::move(goals)), fallback_(std::move(fallback)), second_thoughts_(std::move(second_thoughts)) {
   server_.set_tcp_nodelay(true);  // no Nagle delay between headers and body
-  server_.Post("/v1/completions",
-               [this](const httplib::Request& request, httplib::Response& response) { handle(request, response); });
+  server_.Post("/v1/completions", [this](const httplib::Request& request, httplib::Response& response) {
+    handle(Dialect::kCompletions, request, response);
+  });
+  server_.Post("/v1/chat/completions", [this](const httplib::Request& request, httplib::Response& response) {
+    handle(Dialect::kChat, request, response);
+  });
+  server_.Post("/completion", [this](const httplib::Request& request, httplib::Response& response) {
+    handle(Dialect::kLlama, request, response);
+  });
   port_ = server_.bind_to_any_port("127.0.0.1");
   if (port_ <= 0) throw std::runtime_error("cannot bind a port for the fake LLM server");
   thread_ = std::thread([this] { server_.listen_after_bind(); });
@@ -132,7 +195,12 @@ void FakeLlmServer::pause(std::chrono::milliseconds limit) {
   released_.wait_for(lock, limit, [this] { return stopping_; });
 }
 
-void FakeLlmServer::handle(const httplib::Request& request, httplib::Response& response) {
+std::vector<std::string> FakeLlmServer::goal_prompts() {
+  std::lock_guard lock(mutex_);
+  return goal_prompts_;
+}
+
+void FakeLlmServer::handle(Dialect dialect, const httplib::Request& request, httplib::Response& response) {
   const int n = ++requests_;
   switch (mode_) {
     case ServerMode::kStatus500:
@@ -165,18 +233,31 @@ void FakeLlmServer::handle(const httplib::Request& request, httplib::Response& r
       break;
   }
   json body = json::parse(request.body, nullptr, false);
-  if (body.is_discarded() || !body.contains("prompt")) {
+  std::string prompt;
+  int max_tokens = 16, logprobs = 1;
+  if (!body.is_discarded() && body.is_object()) {
+    if (dialect == Dialect::kChat && body.contains("messages") && body["messages"].is_array() &&
+        !body["messages"].empty())
+      prompt = body["messages"].back().value("content", "");
+    if (dialect != Dialect::kChat) prompt = body.value("prompt", "");
+    max_tokens = dialect == Dialect::kLlama ? body.value("n_predict", 16) : body.value("max_tokens", 16);
+    logprobs = dialect == Dialect::kChat    ? body.value("top_logprobs", 1)
+               : dialect == Dialect::kLlama ? body.value("n_probs", 1)
+                                            : body.value("logprobs", 1);
+  }
+  if (prompt.empty()) {
     response.status = 400;
     response.set_content(R"({"error": {"message": "expected a completion request"}})", "application/json");
     return;
   }
-  std::string answer = model_answer(body.value("prompt", ""), body.value("temperature", 0.0),
-                                    body.value("max_tokens", 16), body.value("logprobs", 1));
-  response.set_content(answer, "application/json");
+  Answer answer = model_answer(prompt, body.value("temperature", 0.0), max_tokens, logprobs);
+  json reply = dialect == Dialect::kChat ? as_chat(answer) : dialect == Dialect::kLlama ? as_llama(answer)
+                                                                                          : as_completion(answer);
+  response.set_content(reply.dump(), "application/json");
 }
 
-std::string FakeLlmServer::model_answer(const std::string& prompt, double temperature, int max_tokens,
-                                        int logprobs) {
+FakeLlmServer::Answer FakeLlmServer::model_answer(const std::string& prompt, double temperature, int max_tokens,
+                                                  int logprobs) {
   const int prompt_tokens = static_cast<int>(words_of(prompt).size());
   int asked = 0;
   {
@@ -185,14 +266,22 @@ std::string FakeLlmServer::model_answer(const std::string& prompt, double temper
   }
   const std::string category = category_of(prompt);
   if (ends_with(prompt, "(RESULT)")) {
-    // A goal: the listed statements in order, the first at temperature 0.
+    {
+      std::lock_guard lock(mutex_);
+      goal_prompts_.push_back(prompt);
+    }
+    // A goal: the listed statements in order, the first at temperature 0;
+    // after a rejection ("Not: ..." in the prompt), the second thoughts.
     auto found = goals_.find(category);
     std::vector<std::string> choices = found != goals_.end() ? found->second : fallback_;
+    if (auto second = second_thoughts_.find(category);
+        second != second_thoughts_.end() && prompt.find("\nNot: ") != std::string::npos)
+      choices = second->second;
     size_t index = temperature == 0.0 ? 0 : static_cast<size_t>(asked) % choices.size();
     std::string text = " " + replace_all(choices[index], "X", category);
     std::vector<std::string> tokens;
     for (const std::string& w : words_of(text)) tokens.push_back(" " + w);
-    return completion(text, tokens, -0.2 * static_cast<double>(index + 1), {}, prompt_tokens).dump();
+    return Answer{text, tokens, -0.2 * static_cast<double>(index + 1), {}, prompt_tokens};
   }
   const int number = next_step_number(prompt);
   std::vector<std::string> steps = usual_steps(prompt, false);
@@ -204,7 +293,7 @@ std::string FakeLlmServer::model_answer(const std::string& prompt, double temper
     std::vector<std::pair<std::string, double>> alternatives = {
         {" Open", -3.0}, {" Pick", -3.2}, {" Put", -3.4}, {" Close", -3.6}, {" Wash", -3.8}};
     if (static_cast<int>(alternatives.size()) > logprobs - 1) alternatives.resize(std::max(logprobs - 1, 0));
-    return completion(" " + word, {" " + word}, -0.1, alternatives, prompt_tokens).dump();
+    return Answer{" " + word, {" " + word}, -0.1, alternatives, prompt_tokens};
   }
   // The rest of a step after its first word: the usual step if the word
   // fits it, with "the" when asked again at a higher temperature.
@@ -218,7 +307,7 @@ std::string FakeLlmServer::model_answer(const std::string& prompt, double temper
     }
   std::vector<std::string> tokens;
   for (const std::string& w : words_of(rest)) tokens.push_back(" " + w);
-  return completion(rest, tokens, -0.3, {}, prompt_tokens).dump();
+  return Answer{rest, tokens, -0.3, {}, prompt_tokens};
 }
 
 HungServer::HungServer() {

@@ -4,9 +4,13 @@
 // When it behaves, it plays a small language model that reads the paper's
 // prompts: for a goal prompt ("... Aware of ketchup on table.\n(RESULT)") it
 // answers the statements the test gave for that category, the first at
-// temperature 0 and the next ones at higher temperatures; for an action
-// prompt it proposes the next step of the usual open / pick up / put /
-// close sequence. Every answer carries log-probabilities.
+// temperature 0 and the next ones at higher temperatures; a prompt that
+// lists rejected statements ("Not: ...") gets the category's second
+// thoughts instead, if the test gave any; for an action prompt it proposes
+// the next step of the usual open / pick up / put / close sequence. Every
+// answer carries log-probabilities. It speaks three dialects: OpenAI's
+// /v1/completions, OpenAI's /v1/chat/completions and llama-server's
+// /completion.
 //
 // When it misbehaves, it fails every request in one of the ways a real
 // server does. A listener that never accepts stands in for a hung
@@ -45,24 +49,33 @@ class FakeLlmServer {
   explicit FakeLlmServer(ServerMode mode, Goals goals = {},
                          std::vector<std::string> fallback = {"The goal is that the X is on the moon",
                                                               "The goal is that the X is clean",
-                                                              "The goal is that the X is in the attic"});
+                                                              "The goal is that the X is in the attic"},
+                         Goals second_thoughts = {});
   ~FakeLlmServer();
   FakeLlmServer(const FakeLlmServer&) = delete;
   FakeLlmServer& operator=(const FakeLlmServer&) = delete;
 
-  // The API base for the openai: backend.
+  // The API base for the openai: and openai-chat: backends.
   std::string url() const { return "http://127.0.0.1:" + std::to_string(port_) + "/v1"; }
+  // The server root, for the llama: backend.
+  std::string root() const { return "http://127.0.0.1:" + std::to_string(port_); }
   int requests() const { return requests_.load(); }
+  // Every goal prompt received, in order.
+  std::vector<std::string> goal_prompts();
+
+  struct Answer;  // the model's answer, before it is put in a dialect
 
  private:
-  void handle(const httplib::Request& request, httplib::Response& response);
-  std::string model_answer(const std::string& prompt, double temperature, int max_tokens, int logprobs);
+  enum class Dialect { kCompletions, kChat, kLlama };
+  void handle(Dialect dialect, const httplib::Request& request, httplib::Response& response);
+  Answer model_answer(const std::string& prompt, double temperature, int max_tokens, int logprobs);
   // Sleeps up to `limit`, less if the server is being torn down.
   void pause(std::chrono::milliseconds limit);
 
   ServerMode mode_;
   Goals goals_;
   std::vector<std::string> fallback_;
+  Goals second_thoughts_;
   httplib::Server server_;
   int port_ = 0;
   std::thread thread_;
@@ -71,6 +84,7 @@ class FakeLlmServer {
   std::condition_variable released_;
   bool stopping_ = false;
   std::map<std::string, int> asked_;  // prompt -> times asked (guarded by mutex_)
+  std::vector<std::string> goal_prompts_;  // guarded by mutex_
 };
 
 // A port that accepts connections into its backlog and never answers: a

@@ -19,8 +19,9 @@ using testing::ServerMode;
 using testing::source_path;
 using ::testing::HasSubstr;
 
-// A plausible model: right at once for some categories, right at the
-// second try for others, and odd (ungroundable or wrong) for the rest.
+// A plausible model: right at once for some categories, undecided between
+// places for others, sure and wrong for crackers (the instructor says no),
+// and odd (ungroundable) for the rest.
 FakeLlmServer::Goals plausible_goals() {
   const std::string fridge = "The goal is that the X is in the fridge and the fridge is closed";
   const std::string dishwasher = "The goal is that the X is in the dishwasher and the dishwasher is closed";
@@ -33,7 +34,7 @@ FakeLlmServer::Goals plausible_goals() {
       {"ceramic-plate", {cupboard, dishwasher}},
       {"mug", {cupboard, dishwasher, "The goal is that the X is in the sink"}},
       {"cereal-box", {cupboard, pantry}},
-      {"crackers", {pantry}},
+      {"crackers", {cupboard}},
       {"paper-plate", {"The goal is that the X is in the trash", "The goal is that the X is in the garbage"}},
       {"soda-can", {"The goal is that the X is in the recycling bin and the recycling bin is closed",
                     "The goal is that the X is in the recycling bin"}},
@@ -55,14 +56,28 @@ void expect_same_run(const ConditionResult& recorded, const ConditionResult& rep
 
 class RecordReplay : public testing::ScratchTest {};
 
-TEST_F(RecordReplay, AReplayedCassetteReproducesEachConditionExactly) {
+// The backends that reach a server, each with the fake server speaking its
+// dialect: OpenAI's completions, OpenAI's chat and llama-server's own.
+struct Backend {
+  const char* name;
+  std::string (*spec)(const FakeLlmServer& server);
+};
+const Backend kBackends[] = {
+    {"openai", [](const FakeLlmServer& s) { return "openai:" + s.url(); }},
+    {"openai-chat", [](const FakeLlmServer& s) { return "openai-chat:" + s.url(); }},
+    {"llama", [](const FakeLlmServer& s) { return "llama:" + s.root(); }},
+};
+
+class RecordReplayEveryBackend : public testing::ScratchTest, public ::testing::WithParamInterface<Backend> {};
+
+TEST_P(RecordReplayEveryBackend, AReplayedCassetteReproducesEachConditionExactly) {
   Scenario scenario = load_or_die(source_path("data/scenarios/tidy-kitchen.yaml"));
   const std::vector<std::string> conditions = {"inst+llm", "inst+search2+llm", "inst+search4+llm", "search4+llm"};
   std::map<std::string, ConditionResult> recorded;
   {
     FakeLlmServer server(ServerMode::kModel, plausible_goals());
     for (const std::string& condition : conditions) {
-      std::string spec = "record:" + (dir_ / (condition + ".jsonl")).string() + ",openai:" + server.url();
+      std::string spec = "record:" + (dir_ / (condition + ".jsonl")).string() + "," + GetParam().spec(server);
       recorded[condition] = testing::run(scenario, condition, experiment_options(factory(spec)));
     }
   }  // the server is gone: a replay cannot reach it
@@ -74,16 +89,22 @@ TEST_F(RecordReplay, AReplayedCassetteReproducesEachConditionExactly) {
     EXPECT_GT(r.llm_tokens, 0);
     ASSERT_TRUE(r.relevance.has_value());
     EXPECT_THAT(r.transcript, ::testing::Not(HasSubstr("could not reach")));
+    EXPECT_EQ(r.llm_failures, 0);
     if (condition != "search4+llm") {
       EXPECT_EQ(r.completion_rate, 100.0);
       EXPECT_GT(r.counts.yes_no, 0);
       EXPECT_GT(r.counts.yes, 0);
       EXPECT_LT(r.counts.yes, r.counts.yes_no);
     }
-    ConditionResult replayed =
-        testing::run(scenario, condition,
-                     experiment_options(factory("replay:" + (dir_ / (condition + ".jsonl")).string())));
+    const std::string cassette = (dir_ / (condition + ".jsonl")).string();
+    ConditionResult replayed = testing::run(scenario, condition, experiment_options(factory("replay:" + cassette)));
     expect_same_run(r, replayed);
+    // Recorded again from the replay: the same cassette, to the byte.
+    const std::string again = (dir_ / (condition + ".again.jsonl")).string();
+    ConditionResult rerecorded = testing::run(
+        scenario, condition, experiment_options(factory("record:" + again + ",replay:" + cassette)));
+    expect_same_run(r, rerecorded);
+    EXPECT_EQ(testing::read_text(again), testing::read_text(cassette));
     std::printf("%-17s %5.1f%% relevance %5.1f%%  %3d instructions %4d words %3d yes/no %4d LLM calls %6ld tokens\n",
                 condition.c_str(), r.completion_rate, r.relevance.value_or(-1), r.counts.instructions, r.counts.words,
                 r.counts.yes_no, r.llm_calls, r.llm_tokens);
@@ -96,6 +117,14 @@ TEST_F(RecordReplay, AReplayedCassetteReproducesEachConditionExactly) {
   EXPECT_THAT(recorded["inst+search4+llm"].transcript, ::testing::Not(HasSubstr("should I '")));
 }
 
+INSTANTIATE_TEST_SUITE_P(Backends, RecordReplayEveryBackend, ::testing::ValuesIn(kBackends),
+                         [](const ::testing::TestParamInfo<Backend>& info) {
+                           std::string name = info.param.name;
+                           for (char& c : name)
+                             if (c == '-') c = '_';
+                           return name;
+                         });
+
 TEST_F(RecordReplay, ACorpusRunReplaysExactly) {
   SKIP_WITHOUT_CORPUS();
   Scenario scenario = load_or_die(source_path("data/scenarios/tidy-kitchen-35.yaml"));
@@ -107,6 +136,14 @@ TEST_F(RecordReplay, ACorpusRunReplaysExactly) {
         experiment_options(factory("record:" + cassette + ",corpus:" + testing::corpus_path().string())));
     ConditionResult replayed = testing::run(scenario, condition, experiment_options(factory("replay:" + cassette)));
     expect_same_run(recorded, replayed);
+    // Both rankings: GPT-3's own order of one condition (the default, TBP)
+    // and the ensemble.
+    const std::string pooled = (dir_ / (condition + ".pooled.jsonl")).string();
+    ConditionResult ensemble = testing::run(
+        scenario, condition,
+        experiment_options(factory("record:" + pooled + ",corpus:" + testing::corpus_path().string() + ",pool=all")));
+    EXPECT_TRUE(ensemble.llm_ensemble);
+    expect_same_run(ensemble, testing::run(scenario, condition, experiment_options(factory("replay:" + pooled))));
   }
 }
 
@@ -160,6 +197,22 @@ TEST_F(RecordReplay, OneCassetteForSeveralConditionsReplaysEach) {
   for (auto* all : {&a, &b})
     for (auto& r : *all) r.erase("wall_ms");
   EXPECT_EQ(a, b);
+
+  // Re-recording the replay (record:NEW,replay:OLD) keeps one cassette per
+  // condition on both sides, and gives the same cassettes to the byte.
+  const std::string again = (dir_ / "again.jsonl").string();
+  auto rerecord = args;
+  rerecord.insert(rerecord.end(), {"--llm", "record:" + again + ",replay:" + cassette});
+  testing::Invocation rerecorded = testing::run_cli(rerecord, dir_);
+  ASSERT_EQ(rerecorded.exit_code, 0) << rerecorded.err;
+  auto c = nlohmann::json::parse(rerecorded.out);
+  for (auto& r : c) r.erase("wall_ms");
+  EXPECT_EQ(c, a);
+  for (const std::string condition : {"inst+llm", "inst+search4+llm"}) {
+    const std::string first = testing::read_text(dir_ / ("run." + condition + ".jsonl"));
+    EXPECT_FALSE(first.empty()) << condition;
+    EXPECT_EQ(testing::read_text(dir_ / ("again." + condition + ".jsonl")), first) << condition;
+  }
 }
 
 }  // namespace

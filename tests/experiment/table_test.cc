@@ -79,6 +79,28 @@ TEST(FormatResultsTable, ThePapersRowsOnlyBesideThePapersKitchen) {
   for (const std::string& line : lines) EXPECT_THAT(line, ::testing::Not(HasSubstr("paper")));
 }
 
+// Issue 13, items 3 and 6: an ensemble's row is labelled as such and not set
+// beside the paper's; a degraded row is marked and explained.
+TEST(FormatResultsTable, LabelsEnsemblesAndMarksDegradedRows) {
+  ConditionResult ensemble = result("search4+llm", 70, 80.0, 14, 76, 0);
+  ensemble.llm_ensemble = true;
+  ConditionResult degraded = result("inst+llm", 100, std::nullopt, 48, 636, 0);
+  degraded.llm_failures = 3;
+  degraded.llm_stopped = true;
+  std::string table = format_results_table({ensemble, degraded}, true);
+  std::istringstream in(table);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  ASSERT_EQ(lines.size(), 5u) << table;  // header, ensemble (no paper row), inst+llm*, its paper row, the note
+  // The label column widens to fit, for every row of this table.
+  EXPECT_EQ(lines[1].substr(0, 39), "search4+llm        ensemble        70.0");
+  EXPECT_EQ(lines[2].substr(0, 39), "inst+llm*          ours           100.0");
+  EXPECT_THAT(lines[3], HasSubstr("paper          100.0"));
+  EXPECT_EQ(lines[4], "* inst+llm: degraded, the LLM failed 3 queries and was not asked again");
+  EXPECT_TRUE(degraded.degraded());
+  EXPECT_FALSE(ensemble.degraded());
+}
+
 TEST(FormatResultsTable, AnEmptyRunIsJustTheHeader) {
   std::string table = format_results_table({}, true);
   EXPECT_EQ(std::count(table.begin(), table.end(), '\n'), 1);

@@ -192,6 +192,15 @@ TEST_F(CassetteTest, FindsAnswersByMeaningWhenThePromptDiffers) {
   ASSERT_TRUE(answer.has_value()) << answer.error().describe();
   EXPECT_EQ(answer->text, " the goal is that the ceramic-plate is in the cupboard");
 
+  // A re-prompt listing a rejected answer was not recorded: a quiet miss
+  // (answered = false), as a corpus gives, not an error.
+  request.about.object_category = "ceramic-plate";
+  request.about.rejected = {"the goal is that the ceramic-plate is in the cupboard"};
+  auto reprompt = (*replay)->complete(request);
+  ASSERT_TRUE(reprompt.has_value()) << reprompt.error().describe();
+  EXPECT_FALSE(reprompt->answered);
+
+  request.about.rejected.clear();
   request.about.object_category = "mug";
   auto missing = (*replay)->complete(request);
   ASSERT_FALSE(missing.has_value());
@@ -208,6 +217,31 @@ TEST_F(CassetteTest, CorruptCassetteNamesTheLine) {
   EXPECT_EQ(ReplayClient::open(path("absent.jsonl")).error().code, ErrorCode::kNotFound);
 }
 
+// Issue 11, defect 1: numbers out of range in a cassette line are a clear
+// kDataLoss, never an exception or a cast out of range.
+TEST(ExchangeLineTest, NumbersOutOfRangeAreUnreadableLines) {
+  Exchange exchange;
+  exchange.request.prompt = "p";
+  exchange.response = testing::answer("x", -0.5);
+  const std::string good = exchange_to_line(exchange);
+  ASSERT_TRUE(exchange_from_line(good).has_value());
+  auto replace = [&](const std::string& from, const std::string& to) {
+    std::string line = good;
+    const size_t at = line.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    return at == std::string::npos ? line : line.replace(at, from.size(), to);
+  };
+  for (const std::string& line :
+       {replace("\"temperature\":0.0", "\"temperature\":1e400"), replace("\"max_tokens\":64", "\"max_tokens\":1e300"),
+        replace("\"top_logprobs\":1}", "\"top_logprobs\":-3}"), replace("\"prompt_tokens\":0", "\"prompt_tokens\":1e30"),
+        replace("-0.5", "1e999")}) {
+    SCOPED_TRACE(line);
+    auto back = exchange_from_line(line);
+    ASSERT_FALSE(back.has_value());
+    EXPECT_EQ(back.error().code, ErrorCode::kDataLoss);
+  }
+}
+
 TEST(ExchangeLineTest, RoundTripsEveryField) {
   Exchange exchange;
   exchange.request.prompt = "Steps:\n1.";
@@ -216,7 +250,8 @@ TEST(ExchangeLineTest, RoundTripsEveryField) {
   exchange.request.stop = {"\n"};
   exchange.request.top_logprobs = 5;
   exchange.request.about = QueryAbout{QueryKind::kAction, "tidy kitchen", "clear", "mug", "counter",
-                                      "the goal is that ...", {"Open dishwasher"}, "Pick"};
+                                      "the goal is that ...", {"Open dishwasher"}, "Pick",
+                                      {"the goal is that the mug is in the sink"}};
   Completion completion = testing::answer("up mug", -0.123456789012345);
   completion.tokens.push_back(TokenLogprob{"\xE2\x82\xAC", std::numeric_limits<double>::quiet_NaN()});
   completion.prompt_tokens = 301;

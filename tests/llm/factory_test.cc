@@ -34,6 +34,20 @@ class ScopedEnv {
   std::optional<std::string> old_;
 };
 
+TEST(FactoryTest, EachConditionGetsItsOwnCassettesHoweverNested) {
+  EXPECT_EQ(spec_for_condition("replay:dir/run.jsonl", "inst+llm"), "replay:dir/run.inst+llm.jsonl");
+  EXPECT_EQ(spec_for_condition("record:run.jsonl,openai:http://h:1/v1", "search4+llm"),
+            "record:run.search4+llm.jsonl,openai:http://h:1/v1");
+  // Issue 13, item 7: the inner replay's file was not renamed, so a
+  // re-recording of several conditions could not find its cassettes.
+  EXPECT_EQ(spec_for_condition("record:new.jsonl,replay:old.jsonl", "inst+llm"),
+            "record:new.inst+llm.jsonl,replay:old.inst+llm.jsonl");
+  EXPECT_EQ(spec_for_condition("record:a.jsonl,record:b.jsonl,corpus:c.jsonl", "x"),
+            "record:a.x.jsonl,record:b.x.jsonl,corpus:c.jsonl");
+  EXPECT_EQ(spec_for_condition("corpus:c.jsonl,condition=TBP", "x"), "corpus:c.jsonl,condition=TBP");
+  EXPECT_EQ(spec_for_condition("openai:http://h:1/v1", "x"), "openai:http://h:1/v1");
+}
+
 TEST(FactoryTest, Endpoints) {
   EXPECT_EQ(openai_endpoint("http://127.0.0.1:8080"), "http://127.0.0.1:8080/v1/completions");
   EXPECT_EQ(openai_endpoint("http://127.0.0.1:8080/v1/"), "http://127.0.0.1:8080/v1/completions");

@@ -86,6 +86,21 @@ TEST(PromptsTest, GoalPromptForTheCeramicPlateIsThePapers) {
   EXPECT_EQ(templates.goal_prompt(plate()), std::string(kExamples) + kTaskLine + "(RESULT)");
 }
 
+// Issue 13, item 2: the failure context of a re-prompt, one "Not:" line per
+// rejected answer just before (RESULT); the first prompt is unchanged.
+TEST(PromptsTest, AGoalRepromptListsTheRejectedAnswers) {
+  PromptTemplates templates = load();
+  TaskContext context = plate();
+  context.rejected = {"the goal is that the ceramic-plate is in the cupboard",
+                      "The goal is that the ceramic-plate is in the sink."};
+  EXPECT_EQ(templates.goal_prompt(context), std::string(kExamples) + kTaskLine +
+                                                "Not: the ceramic-plate is in the cupboard.\n"
+                                                "Not: the ceramic-plate is in the sink.\n(RESULT)");
+  QueryAbout about = about_for(context, QueryKind::kGoal);
+  EXPECT_EQ(about.rejected, context.rejected);
+  EXPECT_TRUE(about_for(context, QueryKind::kActionWord).rejected.empty());
+}
+
 TEST(PromptsTest, ActionPromptNumbersTheStepsSoFar) {
   PromptTemplates templates = load();
   const std::string head = std::string(kExamples) + kTaskLine + "(RESULT)" + kGoal + "(END RESULT)\nSteps:\n";

@@ -7,6 +7,7 @@
 #include <deque>
 
 #include "llm/fake_llm.h"
+#include "llm/wire_format.h"
 
 namespace apprentice::llm {
 namespace {
@@ -180,6 +181,23 @@ TEST(RetrieveActionsTest, FailureOfTheWordQueryIsReported) {
   EXPECT_EQ(actions.queries, 1);
 }
 
+// Issue 13, item 7: a server that sends "logprobs": null gave no first word
+// at all, so no action candidate. The chosen token is the text; it is kept.
+TEST(RetrieveActionsTest, AServerWithoutLogprobsStillGivesItsChosenWord) {
+  FakeClient client([](const CompletionRequest& request, size_t) -> Result<Completion> {
+    const std::string text = request.max_tokens == 1 ? " Open" : " dishwasher";
+    return parse_response_body(WireFormat::kOpenAi,
+                               R"({"choices":[{"text":")" + text + R"(","index":0,"logprobs":null,"finish_reason":"length"}]})");
+  });
+  Retrieval actions = retrieve_actions(client, templates(), kPlate, kGoal, {}, paper_knows);
+  ASSERT_EQ(actions.first_words.size(), 1u);
+  EXPECT_EQ(actions.first_words[0].token, " Open");
+  EXPECT_TRUE(std::isnan(actions.first_words[0].logprob));
+  ASSERT_EQ(actions.candidates.size(), 1u);
+  EXPECT_EQ(actions.candidates[0].text, "Open dishwasher");
+  EXPECT_FALSE(actions.candidates[0].mean_logprob.has_value());  // kept, in retrieval order
+}
+
 TEST(JoinActionTest, AddsASpaceOnlyBeforeAWord) {
   EXPECT_EQ(join_action("Open", " dishwasher"), "Open dishwasher");
   EXPECT_EQ(join_action("Pick", "up plate"), "Pick up plate");
@@ -273,6 +291,37 @@ TEST(FinalizeChoiceTest, WithoutAnInstructorTakesTheMostProbable) {
   auto none = finalize_choice({}, QueryKind::kGoal, grounds, nullptr);
   ASSERT_TRUE(none.has_value());
   EXPECT_EQ(none->origin, ChoiceOrigin::kNone);
+}
+
+TEST(FinalizeChoiceTest, OfferingUngroundedResponsesAsThePaperDid) {
+  ScriptedInstructor instructor;
+  instructor.answers = {false, false, true};
+  auto grounds = [](const Candidate& c) { return c.text == "in the sink"; };
+  ChoiceOptions options;
+  options.offer_ungrounded = true;
+  auto choice = finalize_choice(plate_goals(), QueryKind::kGoal, grounds, &instructor, options);
+  ASSERT_TRUE(choice.has_value());
+  EXPECT_THAT(instructor.asked, ElementsAre("in the cupboard", "in the dishwasher and turned on", "in the sink"));
+  EXPECT_EQ(choice->skipped_ungrounded, 0);
+  EXPECT_EQ(choice->offered, 3);
+  EXPECT_TRUE(choice->grounded);
+  ASSERT_EQ(choice->rejected.size(), 2u);
+  EXPECT_EQ(choice->rejected[1].text, "in the dishwasher and turned on");
+}
+
+TEST(FinalizeChoiceTest, ACallerMayKeepItsOrderAndAskForTheDescriptionItself) {
+  ScriptedInstructor instructor;
+  instructor.answers = {false, false, false};
+  instructor.description = "never asked";
+  ChoiceOptions options;
+  options.sort_by_probability = false;
+  options.ask_description = false;
+  auto choice = finalize_choice(plate_goals(), QueryKind::kGoal, {}, &instructor, options);
+  ASSERT_TRUE(choice.has_value());
+  EXPECT_THAT(instructor.asked, ElementsAre("in the sink", "in the cupboard", "in the dishwasher and turned on"));
+  EXPECT_EQ(instructor.descriptions_asked, 0);
+  EXPECT_EQ(choice->origin, ChoiceOrigin::kNone);
+  EXPECT_EQ(choice->rejected.size(), 3u);
 }
 
 TEST(FinalizeChoiceTest, InstructorErrorsPropagate) {

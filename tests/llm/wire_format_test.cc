@@ -6,6 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "llm/chat_shapes.h"
+
 namespace apprentice::llm {
 namespace {
 
@@ -43,6 +45,71 @@ TEST(WireFormatTest, NativeRequestBodyOmitsUnsetFields) {
   EXPECT_FALSE(body.contains("model"));
   EXPECT_FALSE(body.contains("seed"));
   EXPECT_FALSE(body.contains("stop"));
+}
+
+TEST(WireFormatTest, ChatRequestBodyIsTheSamePromptAsOneUserMessage) {
+  CompletionRequest request = goal_request();
+  request.top_logprobs = 5;
+  json body = json::parse(build_request_body(WireFormat::kOpenAiChat, request, {"gpt-4o-mini", std::nullopt}));
+  EXPECT_FALSE(body.contains("prompt"));
+  ASSERT_EQ(body["messages"].size(), 1u);
+  EXPECT_EQ(body["messages"][0]["role"], "user");
+  EXPECT_EQ(body["messages"][0]["content"], "(TASK) ... (RESULT)");
+  EXPECT_EQ(body["logprobs"], true);
+  EXPECT_EQ(body["top_logprobs"], 5);
+  EXPECT_EQ(body["max_tokens"], 64);
+  EXPECT_EQ(body["temperature"], 0.9);
+  EXPECT_EQ(body["stop"], json::array({"(END RESULT)"}));
+  EXPECT_EQ(body["model"], "gpt-4o-mini");
+  request.top_logprobs = 0;
+  EXPECT_EQ(json::parse(build_request_body(WireFormat::kOpenAiChat, request, {}))["top_logprobs"], 1);
+}
+
+// Issue 13, item 5: the chat reply of each server, as its documentation has it.
+TEST(WireFormatTest, ChatRepliesOfEveryServer) {
+  for (const testing::ChatShape& shape : testing::chat_shapes()) {
+    SCOPED_TRACE(shape.server);
+    auto completion = parse_response_body(WireFormat::kOpenAiChat, shape.body);
+    ASSERT_TRUE(completion.has_value()) << completion.error().describe();
+    EXPECT_EQ(completion->text, " Open dishwasher");
+    ASSERT_EQ(completion->tokens.size(), 3u);
+    EXPECT_EQ(completion->tokens[0], (TokenLogprob{" Open", -0.02}));
+    EXPECT_EQ(completion->tokens[1], (TokenLogprob{" dish", -0.3}));
+    EXPECT_EQ(completion->tokens[2], (TokenLogprob{"washer", -0.001}));
+    EXPECT_EQ(completion->finish_reason, "stop");
+    EXPECT_EQ(completion->prompt_tokens, 310);
+    EXPECT_EQ(completion->completion_tokens, 3);
+    ASSERT_EQ(completion->top_logprobs.size(), 3u);
+    ASSERT_GE(completion->top_logprobs[0].size(), 2u);
+    EXPECT_EQ(completion->top_logprobs[0][0], (TokenLogprob{" Open", -0.02}));
+    EXPECT_EQ(completion->top_logprobs[0][1], (TokenLogprob{" Pick", -4.1}));
+    for (const TokenLogprob& alternative : completion->top_logprobs[0])
+      EXPECT_GE(alternative.logprob, kFloorLogprob) << alternative.token;  // vLLM's -9999.0 is the floor
+  }
+}
+
+TEST(WireFormatTest, ChatWithoutLogprobsKeepsTheText) {
+  auto completion = parse_response_body(WireFormat::kOpenAiChat, testing::kChatWithoutLogprobs);
+  ASSERT_TRUE(completion.has_value()) << completion.error().describe();
+  EXPECT_EQ(completion->text, " Open");
+  EXPECT_TRUE(completion->tokens.empty());
+  EXPECT_EQ(completion->finish_reason, "length");
+}
+
+TEST(WireFormatTest, ChatTokensCutMidCharacterAreJoinedFromTheirBytes) {
+  auto completion = parse_response_body(WireFormat::kOpenAiChat, testing::kChatCutCharacter);
+  ASSERT_TRUE(completion.has_value()) << completion.error().describe();
+  EXPECT_EQ(completion->text, " caf\xC3\xA9");
+  ASSERT_EQ(completion->tokens.size(), 2u);
+  EXPECT_EQ(completion->tokens[0], (TokenLogprob{" caf", -0.1}));
+  EXPECT_EQ(completion->tokens[1].token, "\xC3\xA9");  // the é, whole
+  EXPECT_DOUBLE_EQ(completion->tokens[1].logprob, -0.5);
+  ASSERT_EQ(completion->top_logprobs.size(), 2u);
+  ASSERT_EQ(completion->top_logprobs[1].size(), 1u);
+  EXPECT_EQ(completion->top_logprobs[1][0].token, "\xEF\xBF\xBD");  // half a character cannot be shown
+  std::string joined;
+  for (const TokenLogprob& token : completion->tokens) joined += token.token;
+  EXPECT_EQ(joined, completion->text);
 }
 
 TEST(WireFormatTest, OpenAiLegacyLogprobs) {
@@ -148,6 +215,48 @@ TEST(WireFormatTest, BadBodiesAreClearErrors) {
   expect_unusable(WireFormat::kOpenAi, "{\"choices\":[{\"text\":\"caf\xC3\"}]}", "not valid UTF-8");
   expect_unusable(WireFormat::kOpenAi, R"({"error":{"message":"model not loaded","code":503}})",
                   "model not loaded");
+}
+
+// Issue 11, defect 1: nlohmann throws out_of_range (not parse_error) for a
+// number beyond a double, and that used to escape parse_response_body and
+// abort the run (exit 134).
+TEST(WireFormatTest, ANumberBeyondADoubleIsAClearErrorNotAnException) {
+  expect_unusable(WireFormat::kOpenAi,
+                  R"({"choices":[{"text":" Open","index":0}],"usage":{"prompt_tokens":1e400}})",
+                  "not usable JSON");
+  expect_unusable(WireFormat::kOpenAi,
+                  R"({"choices":[{"text":" Open","logprobs":{"tokens":[" Open"],"token_logprobs":[-1e999]}}]})",
+                  "not usable JSON");
+  expect_unusable(WireFormat::kLlamaNative, R"({"content":" Open","tokens_evaluated":1e400})", "not usable JSON");
+}
+
+TEST(WireFormatTest, NumbersThatAreNotCountsOrLogprobsAreIgnoredOrClamped) {
+  // Finite but absurd: token counts that are not counts are ignored (never
+  // cast out of range), log-probabilities are kept within [floor, 0].
+  auto completion = parse_response_body(WireFormat::kOpenAi,
+                                        R"({"choices":[{"text":" Open","logprobs":{"tokens":[" Open"," x"],
+      "token_logprobs":[1e300,-1e300],"top_logprobs":[{" Open":5.0},{}]}}],
+      "usage":{"prompt_tokens":1e300,"completion_tokens":-4}})");
+  ASSERT_TRUE(completion.has_value()) << completion.error().describe();
+  EXPECT_EQ(completion->prompt_tokens, 0);
+  EXPECT_EQ(completion->completion_tokens, 2);  // counted, since the server's is not a count
+  EXPECT_EQ(completion->tokens[0].logprob, 0.0);
+  EXPECT_EQ(completion->tokens[1].logprob, kFloorLogprob);
+  EXPECT_EQ(completion->top_logprobs[0][0].logprob, 0.0);
+  auto native = parse_response_body(WireFormat::kLlamaNative,
+                                    R"({"content":" Open","tokens_evaluated":2.5,"tokens_predicted":18446744073709551615})");
+  ASSERT_TRUE(native.has_value()) << native.error().describe();
+  EXPECT_EQ(native->prompt_tokens, 0);
+  EXPECT_EQ(native->completion_tokens, 0);
+}
+
+TEST(WireFormatTest, ChatBadBodiesAreClearErrors) {
+  expect_unusable(WireFormat::kOpenAiChat,
+                  R"({"choices":[{"index":0,"message":{"role":"assistant","content":null,"refusal":"I cannot"}}]})",
+                  "OpenAI chat completions layout");
+  expect_unusable(WireFormat::kOpenAiChat, R"({"choices":[{"text":" Open"}]})", "OpenAI chat completions layout");
+  expect_unusable(WireFormat::kOpenAiChat, R"({"error":{"message":"logprobs are not supported"}})",
+                  "logprobs are not supported");
 }
 
 TEST(WireFormatTest, Utf8Validation) {

@@ -1,0 +1,341 @@
+#include "agent/goal_repair.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "language/generation.h"
+#include "search/iterative_deepening.h"
+#include "util/text.h"
+
+namespace apprentice {
+
+GoalRepairOptions GoalRepairOptions::none() {
+  GoalRepairOptions options;
+  options.drop = options.close = options.check = options.choose = options.reprompt = false;
+  return options;
+}
+
+namespace {
+
+struct Step {
+  const char* name;
+  bool GoalRepairOptions::*flag;
+};
+constexpr Step kSteps[] = {{"drop", &GoalRepairOptions::drop},
+                           {"close", &GoalRepairOptions::close},
+                           {"check", &GoalRepairOptions::check},
+                           {"choose", &GoalRepairOptions::choose},
+                           {"reprompt", &GoalRepairOptions::reprompt}};
+
+}  // namespace
+
+Result<GoalRepairOptions> parse_goal_repair(std::string_view text) {
+  const std::string spec = to_lower(trim(text));
+  if (spec == "all") return GoalRepairOptions{};
+  if (spec == "none") return GoalRepairOptions::none();
+  std::vector<std::string> items;
+  for (std::size_t start = 0; start <= spec.size();) {
+    std::size_t comma = spec.find(',', start);
+    if (comma == std::string::npos) comma = spec.size();
+    std::string_view word = trim(std::string_view(spec).substr(start, comma - start));
+    if (!word.empty()) items.emplace_back(word);
+    start = comma + 1;
+  }
+  if (items.empty()) return make_error(ErrorCode::kInvalidInput, "--goal-repair: expected all, none or steps");
+  // All removals ("-choose") start from every step; a plain list from none.
+  const bool removing = items.front().front() == '-';
+  GoalRepairOptions options = removing ? GoalRepairOptions{} : GoalRepairOptions::none();
+  for (const std::string& item : items) {
+    const bool remove = item.front() == '-';
+    if (remove != removing)
+      return make_error(ErrorCode::kInvalidInput,
+                        "--goal-repair: either list the steps to use or the steps to leave out (with '-'), not both");
+    const std::string name = remove ? item.substr(1) : item;
+    const Step* step = std::find_if(std::begin(kSteps), std::end(kSteps), [&](const Step& s) { return name == s.name; });
+    if (step == std::end(kSteps))
+      return make_error(ErrorCode::kInvalidInput, "--goal-repair: '" + name +
+                                                      "' is not a step (drop, close, check, choose, reprompt; or all, none)");
+    options.*(step->flag) = !remove;
+  }
+  return options;
+}
+
+std::string format_goal_repair(const GoalRepairOptions& options) {
+  std::string on;
+  int count = 0;
+  for (const Step& step : kSteps) {
+    if (!(options.*(step.flag))) continue;
+    on += (on.empty() ? "" : ",") + std::string(step.name);
+    ++count;
+  }
+  if (count == static_cast<int>(std::size(kSteps))) return "all";
+  return count == 0 ? "none" : on;
+}
+
+int GoalAnalysis::usable() const {
+  return static_cast<int>(std::count_if(goals.begin(), goals.end(), [](const AnalysedGoal& g) { return g.goal; }));
+}
+
+const AnalysedGoal* GoalAnalysis::find(const llm::Candidate& candidate) const {
+  for (const AnalysedGoal& goal : goals)
+    if (goal.candidate.text == candidate.text) return &goal;
+  return nullptr;
+}
+
+std::vector<llm::Candidate> GoalAnalysis::ordered_candidates() const {
+  std::vector<llm::Candidate> out;
+  for (const AnalysedGoal& goal : goals) out.push_back(goal.candidate);
+  return out;
+}
+
+namespace {
+
+// "the recycling bin is closed", "the dishwasher is turned on".
+std::string clause_text(const language::Conjunct& conjunct) {
+  auto noun = [](const language::NounPhrase& phrase) {
+    return (phrase.article.empty() ? std::string() : phrase.article + " ") + phrase.text();
+  };
+  if (const auto* placement = std::get_if<language::Placement>(&conjunct))
+    return noun(placement->thing) + " is " + std::string(language::to_string(placement->relation)) + " " +
+           noun(placement->place);
+  const auto& property = std::get<language::PropertyStatement>(conjunct);
+  std::string words = property.property == language::Property::kClosed ? "closed"
+                      : property.property == language::Property::kOpen ? "open"
+                                                                         : join(property.words, " ");
+  return noun(property.thing) + " is " + words;
+}
+
+// Failures of a clause that no repair of wording could fix: the world
+// cannot make it true (an affordance it lacks) or the domain has no
+// predicate for it. These clauses can be left out.
+bool can_never_hold(std::string_view failure_kind) {
+  return failure_kind == "affordance-mismatch" || failure_kind == "unknown-predicate";
+}
+
+// Where the object is now: the surface or receptacle it is on or in.
+std::optional<ObjectId> place_of(const World& world, ObjectId object) {
+  const Vocabulary& v = world.vocabulary;
+  for (const Fact& fact : world.state.facts())
+    if ((fact.predicate == v.on || fact.predicate == v.in) && fact.arity == 2 && fact.args[0] == object)
+      return fact.args[1];
+  return std::nullopt;
+}
+
+// The places the goal puts the object (positive on/in literals).
+std::vector<ObjectId> destinations(const World& world, const Goal& goal, ObjectId object) {
+  const Vocabulary& v = world.vocabulary;
+  std::vector<ObjectId> out;
+  for (const Literal& literal : goal.literals)
+    if (literal.positive && (literal.fact.predicate == v.on || literal.fact.predicate == v.in) &&
+        literal.fact.arity == 2 && literal.fact.args[0] == object)
+      out.push_back(literal.fact.args[1]);
+  return out;
+}
+
+// Whether goals learned so far for receptacles of `category` end closed:
+// true if one does, false if some put things into it and none closes it,
+// nothing if none is about it.
+std::optional<bool> learned_closing(const World& world, const GoalMemory& learned, std::string_view category) {
+  const std::string& in = world.domain->predicates[world.vocabulary.in].name;
+  const std::string& closed = world.domain->predicates[world.vocabulary.closed].name;
+  std::optional<bool> verdict;
+  for (const GoalKnowledge& knowledge : learned.all()) {
+    bool into = false, closes = false;
+    for (const GoalTemplateLiteral& literal : knowledge.literals) {
+      if (!literal.positive) continue;
+      if (literal.predicate == in && literal.arguments.size() == 2 && literal.arguments[1].category == category)
+        into = true;
+      if (literal.predicate == closed && literal.arguments.size() == 1 &&
+          literal.arguments[0].category == category)
+        closes = true;
+    }
+    if (closes) return true;
+    if (into) verdict = false;
+  }
+  return verdict;
+}
+
+class Analyser {
+ public:
+  Analyser(Understanding& understanding, const World& world, ObjectId object, const GoalMemory& learned,
+           const GoalRepairOptions& options)
+      : understanding_(understanding), world_(world), object_(object), learned_(learned), options_(options) {}
+
+  AnalysedGoal analyse(const llm::Candidate& candidate, int position) {
+    AnalysedGoal out;
+    out.candidate = candidate;
+    out.position = position;
+    if (candidate.mean_logprob) out.weight = std::exp(*candidate.mean_logprob);
+    if (!ground(out)) return out;
+    if (options_.close) complete_closings(out);
+    if (options_.check) check(out);
+    return out;
+  }
+
+  std::uint64_t search_nodes() const { return search_nodes_; }
+
+ private:
+  void fail(AnalysedGoal& out, std::string kind, std::string why) {
+    out.goal.reset();
+    out.failure_kind = std::move(kind);
+    out.failure = std::move(why);
+  }
+
+  // Steps 1 and 2. False when the statement is unusable.
+  bool ground(AnalysedGoal& out) {
+    GoalMeaning whole = understanding_.goal(world_, out.candidate.text, object_);
+    if (whole.goal) {
+      out.goal = std::move(whole.goal);
+      return true;
+    }
+    fail(out, whole.failure_kind, whole.failure);
+    if (!options_.drop) return false;
+    auto form = understanding_.parse(out.candidate.text);
+    if (!form) return false;
+    const auto* description = std::get_if<language::GoalDescription>(&*form);
+    if (description == nullptr) return false;
+    std::vector<Literal> kept;
+    std::vector<std::string> dropped;
+    for (const language::Conjunct& conjunct : description->conjuncts) {
+      language::GoalDescription one{description->category, {conjunct}};
+      GoalMeaning clause = understanding_.goal(world_, one, object_);
+      if (clause.goal) {
+        kept.insert(kept.end(), clause.goal->literals.begin(), clause.goal->literals.end());
+      } else if (can_never_hold(clause.failure_kind)) {
+        dropped.push_back("'" + clause_text(conjunct) + "' (" + clause.failure + ")");
+      } else {
+        fail(out, clause.failure_kind, clause.failure);
+        return false;
+      }
+    }
+    Goal rest(std::move(kept));
+    if (rest.empty() || destinations(world_, rest, object_).empty()) {
+      fail(out, "no-destination",
+           "Without what cannot hold, " + apprentice::quoted(out.candidate.text) + " says nowhere to put the " +
+               world_.universe->info(object_).category + ".");
+      return false;
+    }
+    out.goal = std::move(rest);
+    out.dropped = std::move(dropped);
+    out.failure_kind.clear();
+    out.failure.clear();
+    return true;
+  }
+
+  // Step 3.
+  void complete_closings(AnalysedGoal& out) {
+    const Vocabulary& v = world_.vocabulary;
+    std::vector<Literal> literals = out.goal->literals;
+    for (ObjectId place : destinations(world_, *out.goal, object_)) {
+      if (!world_.state.holds(Fact(v.openable, {place}))) continue;
+      const Fact closed(v.closed, {place});
+      const bool said = std::any_of(literals.begin(), literals.end(), [&](const Literal& l) { return l.fact == closed; });
+      if (said) continue;
+      std::optional<bool> learned = learned_closing(world_, learned_, world_.universe->info(place).category);
+      const bool close = learned ? *learned : world_.state.holds(closed);
+      if (!close) continue;
+      literals.push_back(Literal{closed, true});
+      out.closings.push_back(place);
+      out.closing_by_norm.push_back(!learned.has_value());
+    }
+    if (!out.closings.empty()) out.goal = Goal(std::move(literals));
+  }
+
+  // Step 4.
+  void check(AnalysedGoal& out) {
+    std::vector<ObjectId> places = destinations(world_, *out.goal, object_);
+    const std::optional<ObjectId> here = place_of(world_, object_);
+    const std::string noun = "the " + world_.universe->info(object_).category;
+    if (places.empty() || std::all_of(places.begin(), places.end(), [&](ObjectId p) { return p == here; })) {
+      fail(out, "no-destination", "That goal does not move " + noun + " from where it is.");
+      return;
+    }
+    if (out.goal->satisfied_by(world_.state)) {
+      fail(out, "already-holds", "That goal holds already.");
+      return;
+    }
+    SearchOptions search;
+    search.max_depth = options_.check_depth;
+    search.max_nodes = options_.check_max_nodes;
+    PlanResult plan = find_plan(*world_.domain, *world_.universe, world_.state, *out.goal, search);
+    search_nodes_ += plan.statistics.nodes_expanded;
+    if (plan.status != SearchStatus::kSolved)
+      fail(out, "unreachable", "I find no way to reach that goal.");
+  }
+
+  Understanding& understanding_;
+  const World& world_;
+  ObjectId object_;
+  const GoalMemory& learned_;
+  const GoalRepairOptions& options_;
+  std::uint64_t search_nodes_ = 0;
+};
+
+// The destination a goal gives the object, as a key for agreement.
+std::vector<ObjectId> destination_key(const World& world, const AnalysedGoal& goal, ObjectId object) {
+  std::vector<ObjectId> key = destinations(world, *goal.goal, object);
+  std::sort(key.begin(), key.end());
+  return key;
+}
+
+// Step 5. Without it the statements keep their retrieval order, usable or
+// not, for finalize_choice to sort as Algorithm 5 does.
+void order(const World& world, ObjectId object, std::vector<AnalysedGoal>& all) {
+  std::vector<AnalysedGoal> usable, unusable;
+  for (AnalysedGoal& goal : all) (goal.goal ? usable : unusable).push_back(std::move(goal));
+  // The same goal after repair is one goal, at its best position.
+  std::vector<AnalysedGoal> merged;
+  for (AnalysedGoal& goal : usable) {
+    auto same = std::find_if(merged.begin(), merged.end(), [&](const AnalysedGoal& g) { return *g.goal == *goal.goal; });
+    if (same == merged.end()) {
+      merged.push_back(std::move(goal));
+      continue;
+    }
+    same->merged.push_back(goal.position);
+    same->weight += goal.weight;
+  }
+  std::map<std::vector<ObjectId>, double> agreement;
+  for (const AnalysedGoal& goal : merged) agreement[destination_key(world, goal, object)] += goal.weight;
+  for (AnalysedGoal& goal : merged) goal.score = agreement[destination_key(world, goal, object)];
+  std::stable_sort(merged.begin(), merged.end(), [](const AnalysedGoal& a, const AnalysedGoal& b) {
+    if (a.score != b.score) return a.score > b.score;
+    if (a.weight != b.weight) return a.weight > b.weight;
+    return a.position < b.position;
+  });
+  all = std::move(merged);
+  for (AnalysedGoal& goal : unusable) all.push_back(std::move(goal));
+}
+
+}  // namespace
+
+GoalAnalysis analyse_goals(Understanding& understanding, const World& world, ObjectId object,
+                           const std::vector<llm::Candidate>& candidates, const GoalMemory& learned,
+                           const GoalRepairOptions& options) {
+  Analyser analyser(understanding, world, object, learned, options);
+  GoalAnalysis analysis;
+  for (std::size_t i = 0; i < candidates.size(); ++i)
+    analysis.goals.push_back(analyser.analyse(candidates[i], static_cast<int>(i)));
+  double total = 0.0;  // of the usable statements, before merging
+  for (const AnalysedGoal& goal : analysis.goals)
+    if (goal.goal) total += goal.weight;
+  if (options.choose) {
+    order(world, object, analysis.goals);
+  } else {
+    for (AnalysedGoal& goal : analysis.goals) goal.score = goal.weight;
+  }
+  for (AnalysedGoal& goal : analysis.goals) goal.share = total > 0.0 && goal.goal ? goal.score / total : 0.0;
+  analysis.search_nodes = analyser.search_nodes();
+  return analysis;
+}
+
+std::string describe_repairs(const World& world, const AnalysedGoal& goal) {
+  std::string out;
+  for (const std::string& clause : goal.dropped) out += (out.empty() ? "left out " : ", ") + clause;
+  for (std::size_t i = 0; i < goal.closings.size(); ++i)
+    out += std::string(out.empty() ? "" : "; ") + "added that " + language::noun_for(world, goal.closings[i]) +
+           " is closed (" + (goal.closing_by_norm[i] ? "close what you opened" : "as the goals learned for it") + ")";
+  return out;
+}
+
+}  // namespace apprentice
