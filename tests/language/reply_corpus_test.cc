@@ -27,6 +27,7 @@ using testing::source_path;
 
 struct Case {
   std::size_t line = 0;
+  std::string scenario = "tidy-kitchen";  // data/scenarios/<scenario>.yaml
   std::string asked;
   std::string object;
   std::string recent;
@@ -41,7 +42,8 @@ std::vector<Case> read_corpus(const std::filesystem::path& path) {
     Case c;
     c.line = block.line;
     for (const auto& [key, value] : block.fields) {
-      if (key == "asked") c.asked = value;
+      if (key == "scenario") c.scenario = value;
+      else if (key == "asked") c.asked = value;
       else if (key == "object") c.object = value;
       else if (key == "recent") c.recent = value;
       else if (key == "choices") c.choices = value;
@@ -67,10 +69,20 @@ ObjectId object_id(const World& world, const std::string& name) {
   return id.value_or(0);
 }
 
+// The world a case is read in: the paper's kitchen unless it names another
+// shipped scenario; each is loaded once.
+const World& world_of(const Case& c) {
+  static std::map<std::string, Scenario> loaded;
+  if (c.scenario == "tidy-kitchen") return kitchen30().world;
+  auto found = loaded.find(c.scenario);
+  if (found == loaded.end())
+    found = loaded.emplace(c.scenario, apprentice::testing::shipped_scenario(c.scenario)).first;
+  return found->second.world;
+}
+
 // Reads every case of one file; prints the shares per kind and what was
 // read otherwise; returns the overall share.
 double run_corpus(const std::string& file) {
-  const World& world = kitchen30().world;
   std::vector<Case> cases = read_corpus(source_path("tests/language/golden/" + file));
   if (cases.empty()) {
     ADD_FAILURE() << "no cases in " << file;
@@ -85,6 +97,7 @@ double run_corpus(const std::string& file) {
       ADD_FAILURE() << file << ":" << c.line << ": unknown question '" << c.asked << "'";
       continue;
     }
+    const World& world = world_of(c);
     ReplyContext context;
     context.asked = *asked;
     if (!c.object.empty()) context.object = object_id(world, c.object);
@@ -101,7 +114,7 @@ double run_corpus(const std::string& file) {
              << c.meaning << "\n      got:      " << meaning << "\n";
     }
   }
-  std::printf("%s, %zu replies in data/scenarios/tidy-kitchen.yaml:\n", file.c_str(), cases.size());
+  std::printf("%s, %zu replies:\n", file.c_str(), cases.size());
   for (const auto& [kind, counts] : per_kind)
     std::printf("  %-12s %3d / %3d  %5.1f%%\n", kind.c_str(), counts.first, counts.second,
                 100.0 * counts.first / counts.second);
@@ -118,6 +131,15 @@ TEST(ReplyCorpus, ReadsAtLeast95PercentCorrectly) {
 
 // Written after the reader, on phrasings it was not developed on.
 TEST(ReplyCorpus, HeldOutReadsAtLeast95PercentCorrectly) { EXPECT_GE(run_corpus("replies-heldout.test"), 95.0); }
+
+// Written in round 2 before the reader was run on them; docs/language.md
+// gives the first run's share beside this one.
+TEST(ReplyCorpus, SecondHeldOutReadsAtLeast90PercentCorrectly) {
+  EXPECT_GE(run_corpus("replies-heldout-2.test"), 90.0);
+}
+
+// The worlds beyond the kitchen: properties, kinds of place, surfaces.
+TEST(ReplyCorpus, OtherWorldsReadAtLeast90PercentCorrectly) { EXPECT_GE(run_corpus("replies-worlds.test"), 90.0); }
 
 }  // namespace
 }  // namespace apprentice::language
