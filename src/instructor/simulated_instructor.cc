@@ -1,5 +1,6 @@
 #include "instructor/simulated_instructor.h"
 
+#include <algorithm>
 #include <cctype>
 
 #include "instructor/dialogue.h"
@@ -15,9 +16,10 @@ namespace {
 // down whatever is in hand first.
 constexpr int kInstructorSearchDepth = 8;
 
-bool has_objects_at(const World& world, ObjectId place) {
+bool has_objects_at(const World& world, const std::vector<ObjectId>& places) {
   for (const Fact& f : world.state.facts())
-    if ((f.predicate == world.vocabulary.on || f.predicate == world.vocabulary.in) && f.arity == 2 && f.args[1] == place)
+    if ((f.predicate == world.vocabulary.on || f.predicate == world.vocabulary.in) && f.arity == 2 &&
+        std::find(places.begin(), places.end(), f.args[1]) != places.end())
       return true;
   return false;
 }
@@ -57,7 +59,7 @@ std::string SimulatedInstructor::next_task_step(const World& now) {
       case Phase::kAnnounceLoop:
         // A subtask whose place is already empty (an agent that knew the
         // task has done it) is not taught.
-        if (!has_objects_at(now, subtask.place)) {
+        if (!has_objects_at(now, subtask.places)) {
           ++subtask_index_;
           continue;
         }
@@ -110,7 +112,7 @@ std::string SimulatedInstructor::which(const Question& question, const World& wo
   if (question.object) {
     if (const IntentEntry* entry = scenario_.find_intent(question.subtask, world.universe->info(*question.object).category)) {
       for (ObjectId c : question.choices)
-        if (c == entry->receptacle) chosen = c;
+        if (c == entry->place) chosen = c;
     }
   }
   return language::spoken_name(world, chosen);

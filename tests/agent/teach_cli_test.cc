@@ -344,8 +344,8 @@ TEST_F(Teach, AGoalAboutAnotherObjectIsAskedBackNotStored) {
   EXPECT_EQ(teach.wait(), 0) << teach.out() << teach.err();
   EXPECT_THAT(teach.out(), HasSubstr("Agent: Where should the ketchup on the table go?\n"
                                      "Instructor: the goal is that the paper-plate is in the garbage.\n"
-                                     "Agent: That says what becomes of the paper plate, but I asked about the ketchup on "
-                                     "the table."));
+                                     "Agent: I asked about the ketchup, not the paper-plate. Where should the ketchup "
+                                     "go?"));
   EXPECT_THAT(teach.out(), HasSubstr("3 of 3 goal assertions hold, after 9 instructions."));
 }
 
