@@ -291,11 +291,24 @@ TEST_F(Teach, EndOfInputBeforeAnythingIsStillCleanAndNamesWhatIsNotDone) {
                                     kept()));
 }
 
+TEST_F(Teach, TheSummaryTellsLookAlikesApartByWhereTheyWereAndSaysRepeatsOnce) {
+  Process teach({APPRENTICE_BINARY, "teach", "--scenario",
+                 testing::source_path("data/scenarios/tidy-kitchen.yaml").string()});
+  ASSERT_TRUE(teach.write("tidy the kitchen\nquit\n"));
+  EXPECT_EQ(teach.wait(), 1);
+  // Two mugs start on the counter and in the dish rack; both ceramic plates
+  // on the table.
+  EXPECT_THAT(teach.out(), HasSubstr("Not done: the mug from the counter should be in the dishwasher.\n"
+                                     "Not done: the half and half should be in the fridge.\n"));
+  EXPECT_THAT(teach.out(), HasSubstr("Not done: the mug from the dish rack should be in the cupboard.\n"));
+  EXPECT_THAT(teach.out(), HasSubstr("Not done: the ceramic plate should be in the dishwasher (2 of them).\n"));
+}
+
 TEST_F(Teach, WithoutAStoreItSaysNothingWasSavedAndHowToKeepIt) {
   Process teach({APPRENTICE_BINARY, "teach", "--scenario", scenario_.string()});
   ASSERT_TRUE(teach.write(lines(full_script())));
   EXPECT_EQ(teach.wait(), 0) << teach.out() << teach.err();
-  EXPECT_THAT(teach.out(), EndsWith("Nothing was saved. To keep what you teach, give a knowledge store: teach --scenario " +
+  EXPECT_THAT(teach.out(), EndsWith("Nothing was saved. To keep what you teach, give a knowledge store: apprentice teach --scenario " +
                                     scenario_.string() + " --knowledge FILE (for example kitchen.sqlite).\n"));
 }
 
