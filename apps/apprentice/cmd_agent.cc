@@ -1,5 +1,6 @@
 #include "cmd_agent.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -156,6 +157,34 @@ CommandResult run_experiment(const ExperimentOptions& options, const std::string
 
 namespace {
 
+// Each goal assertion that does not hold in `now`, in English, once, with
+// how many times it occurs: look-alikes are named by where they were at the
+// start ("the glass tumbler from the dish rack should be in the cupboard").
+std::vector<std::pair<std::string, int>> unmet_assertions(const Scenario& scenario, const World& now) {
+  const Universe& u = *now.universe;
+  std::vector<std::pair<std::string, int>> unmet;
+  for (const Literal& l : scenario.goal_assertions()) {
+    if (now.state.satisfies(l)) continue;
+    std::string sentence = language::expected_fact(now, l);
+    if (l.fact.arity > 0 && u.info(l.fact.args[0]).kind == ObjectKind::kItem) {
+      ObjectId item = l.fact.args[0];
+      std::string name = language::spoken_name(now, item);
+      std::string from = language::spoken_location(scenario.world, item);
+      std::size_t space = from.find(' ');
+      std::vector<ObjectId> alike = u.with_category(u.info(item).category);
+      bool elsewhere = std::any_of(alike.begin(), alike.end(), [&](ObjectId other) {
+        return language::spoken_location(scenario.world, other) != from;
+      });
+      if (elsewhere && space != std::string::npos && sentence.rfind(name, 0) == 0)
+        sentence.insert(name.size(), " from" + from.substr(space));
+    }
+    auto same = std::find_if(unmet.begin(), unmet.end(), [&](const auto& entry) { return entry.first == sentence; });
+    if (same == unmet.end()) unmet.emplace_back(sentence, 1);
+    else ++same->second;
+  }
+  return unmet;
+}
+
 // The end of a teaching session, in English: how much of the scenario's
 // intent holds (where it has one), which assertions do not, and where the
 // knowledge is, or that nothing was kept.
@@ -171,11 +200,11 @@ void print_teach_summary(const Scenario& scenario, const State& state, bool fini
         << (achieved == 1 ? " holds" : " hold") << ", after " << instructions_phrase << ".\n";
   World now = scenario.world;
   now.state = state;
-  for (const Literal& l : assertions)
-    if (!state.satisfies(l)) out << "Not done: " << language::expected_fact(now, l) << ".\n";
+  for (const auto& [sentence, times] : unmet_assertions(scenario, now))
+    out << "Not done: " << sentence << (times > 1 ? " (" + std::to_string(times) + " of them)" : std::string()) << ".\n";
   if (store) out << "What you taught me is kept in " << store->path().string() << ".\n";
   else
-    out << "Nothing was saved. To keep what you teach, give a knowledge store: teach --scenario " << scenario.source.string()
+    out << "Nothing was saved. To keep what you teach, give a knowledge store: apprentice teach --scenario " << scenario.source.string()
         << " --knowledge FILE (for example kitchen.sqlite).\n";
 }
 

@@ -223,21 +223,40 @@ void TaskLearningAgent::Session::status(const Question& asked) {
 Status TaskLearningAgent::Session::forget(const std::string& kind) {
   std::optional<std::string> category = agent_.understanding_.category(world(), kind);
   if (!category) {
-    // A kind that is not here may still be known.
+    // A kind that is not here may still be known, and a kind may be named
+    // by its last word or its plural ("plates"): the known kinds that fit.
     std::string key = to_lower(trim(kind));
     std::replace(key.begin(), key.end(), ' ', '-');
-    for (const GoalKnowledge& g : agent_.knowledge_.goals.all())
-      if (g.key.category == key) category = key;
+    std::vector<std::string> singular = {key};
+    if (key.size() > 1 && key.back() == 's') singular.push_back(key.substr(0, key.size() - 1));
+    if (key.size() > 2 && key.ends_with("es")) singular.push_back(key.substr(0, key.size() - 2));
+    std::vector<std::string> fits;
+    for (const GoalKnowledge& g : agent_.knowledge_.goals.all()) {
+      const std::string& c = g.key.category;
+      bool fit = std::any_of(singular.begin(), singular.end(), [&](const std::string& k) {
+        return c == k || (c.size() > k.size() && c.ends_with("-" + k));
+      });
+      if (fit && std::find(fits.begin(), fits.end(), c) == fits.end()) fits.push_back(c);
+    }
+    if (fits.size() > 1) {
+      std::vector<std::string> named;
+      for (const std::string& c : fits) named.push_back("the " + language::spoken_category(c));
+      say("Which kind do you mean: " + language::list_phrase(named) + "? Say, for example, \"forget " +
+              language::spoken_category(fits.front()) + "\".",
+          Voice::kResponse);
+      return {};
+    }
+    if (fits.size() == 1) category = fits.front();
   }
   std::vector<GoalKey> keys;
   if (category)
     for (const GoalKnowledge& g : agent_.knowledge_.goals.all())
       if (g.key.category == *category) keys.push_back(g.key);
   if (keys.empty()) {
-    say("I did not know where " +
+    say("I have not learned where to put " +
             (category ? std::string(language::article_for(*category)) + " " + language::spoken_category(*category)
                       : std::string(trim(kind))) +
-            " goes, so there is nothing to forget.",
+            ", so there is nothing to forget.",
         Voice::kResponse);
     return {};
   }

@@ -16,9 +16,10 @@ namespace {
 // down whatever is in hand first.
 constexpr int kInstructorSearchDepth = 8;
 
-bool has_objects_at(const World& world, ObjectId place) {
+bool has_objects_at(const World& world, const std::vector<ObjectId>& places) {
   for (const Fact& f : world.state.facts())
-    if ((f.predicate == world.vocabulary.on || f.predicate == world.vocabulary.in) && f.arity == 2 && f.args[1] == place)
+    if ((f.predicate == world.vocabulary.on || f.predicate == world.vocabulary.in) && f.arity == 2 &&
+        std::find(places.begin(), places.end(), f.args[1]) != places.end())
       return true;
   return false;
 }
@@ -58,8 +59,7 @@ std::string SimulatedInstructor::next_task_step(const World& now) {
       case Phase::kAnnounceLoop:
         // A subtask whose place is already empty (an agent that knew the
         // task has done it) is not taught.
-        if (std::none_of(subtask.places.begin(), subtask.places.end(),
-                         [&](ObjectId place) { return has_objects_at(now, place); })) {
+        if (!has_objects_at(now, subtask.places)) {
           ++subtask_index_;
           continue;
         }

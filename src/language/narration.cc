@@ -10,6 +10,15 @@
 namespace apprentice::language {
 namespace {
 
+// Whether a thing's name is a plural ("crackers", "granola bars"), for verb
+// agreement: the last word ends in "s" but not in "ss", "us" or "is".
+bool plural_name(const World& world, ObjectId object) {
+  const std::string& c = world.universe->info(object).category;
+  if (c.size() < 3 || c.back() != 's') return false;
+  char before = c[c.size() - 2];
+  return before != 's' && before != 'u' && before != 'i';
+}
+
 // A clause whose noun phrases are still objects, so that one already
 // mentioned can become "it".
 struct Clause {
@@ -56,7 +65,15 @@ struct Clause {
       } else {
         ObjectId o = std::get<ObjectId>(part);
         if (it && *it == o && !pronoun_used) {
-          words.emplace_back("it");
+          std::string pronoun = plural_name(world, o) ? "them" : "it";
+          // A pronoun goes before the particle of a phrasal verb: "picked it up".
+          const std::string suffix = " up";
+          if (!words.empty() && words.back().size() > suffix.size() &&
+              words.back().compare(words.back().size() - suffix.size(), suffix.size(), suffix) == 0) {
+            words.back().insert(words.back().size() - suffix.size(), " " + pronoun);
+          } else {
+            words.push_back(pronoun);
+          }
           pronoun_used = true;
         } else {
           words.push_back(spoken_name(world, o));
@@ -81,6 +98,8 @@ std::string fact_sentence(const World& world, const Literal& literal, std::strin
   const Vocabulary& v = world.vocabulary;
   const Fact& f = literal.fact;
   std::string is = " " + std::string(literal.positive ? be : be_not) + " ";
+  if (be == "is" && f.arity > 0 && plural_name(world, f.args[0]))
+    is = literal.positive ? " are " : " are not ";
   if (is_placement(world, f))
     return spoken_name(world, f.args[0]) + is + (f.predicate == v.in ? "in " : "on ") + spoken_name(world, f.args[1]);
   if (f.predicate == v.closed && f.arity == 1) return spoken_name(world, f.args[0]) + " " + std::string(be) + (literal.positive ? " closed" : " open");
@@ -110,7 +129,12 @@ std::string outcome(const World& world, ObjectId object, const Literal& literal,
   if (is_placement(world, f)) {
     std::string where = (f.predicate == v.in ? "in " : "on ") + spoken_name(world, f.args[1]);
     if (!literal.positive) where = (f.predicate == v.in ? "out of " : "off ") + spoken_name(world, f.args[1]);
-    if (f.args[0] == object) return std::string(subject) + (literal.positive ? " goes " : " ends ") + where;
+    if (f.args[0] == object) {
+      bool plural = plural_name(world, object) && subject != "it";
+      if (subject == "they") plural = true;
+      return std::string(subject) + (literal.positive ? (plural ? " go " : " goes ") : (plural ? " end " : " ends ")) +
+             where;
+    }
     return spoken_name(world, f.args[0]) + " ends " + where;
   }
   if (f.predicate == v.closed && f.arity == 1)
@@ -322,7 +346,8 @@ std::string read_back_goal(const World& world, ObjectId object, const Goal& goal
 }
 
 std::string announce_known_goal(const World& world, ObjectId object, const Goal& goal) {
-  return "Next, " + spoken_name_and_location(world, object) + ": " + goal_outcome(world, object, goal, "it") + ".";
+  return "Next, " + spoken_name_and_location(world, object) + ": " +
+         goal_outcome(world, object, goal, plural_name(world, object) ? "they" : "it") + ".";
 }
 
 std::string expected_fact(const World& world, const Literal& literal) {

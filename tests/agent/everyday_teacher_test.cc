@@ -54,7 +54,7 @@ class EverydayTeacher {
     if (subtask_ >= subtasks.size()) return "That's all.";
     const Subtask& s = subtasks[subtask_];
     const World& w = scenario_.world;
-    std::string place = language::spoken_name(w, s.places.front());
+    std::string place = language::spoken_places(w, s.places);
     std::string reply;
     if (subtask_ == 0) reply = "First, " + s.verb + " " + place + ".";
     else if (subtask_ % 2 == 1)
@@ -69,7 +69,7 @@ class EverydayTeacher {
     const World& w = scenario_.world;
     const IntentEntry* wanted = nullptr;
     for (const Subtask& s : scenario_.task.subtasks) {
-      if (language::spoken_name(w, s.places.front()) != "the " + place_words) continue;
+      if (language::spoken_places(w, s.places) != "the " + place_words) continue;
       for (const IntentEntry& e : scenario_.intent)
         if (e.subtask == s.verb && language::spoken_category(e.category) == thing) wanted = &e;
     }
@@ -78,6 +78,8 @@ class EverydayTeacher {
       return "";
     }
     std::string r = language::spoken_category(w.universe->info(wanted->place).category);
+    // "in the fridge", "on the shelf".
+    std::string at = std::string(language::relation_word(w, wanted->place));
     int form = next_form_++;
     if (wanted->closed) {
       switch (form % 4) {
@@ -88,10 +90,10 @@ class EverydayTeacher {
       }
     }
     switch (form % 4) {
-      case 0: return "the " + thing + " goes in the " + r;
-      case 1: return thing + " belongs in the " + r;
-      case 2: return "in the " + r;
-      default: return "put it in the " + r;
+      case 0: return "the " + thing + " goes " + at + " the " + r;
+      case 1: return thing + " belongs " + at + " the " + r;
+      case 2: return at + " the " + r;
+      default: return "put it " + at + " the " + r;
     }
   }
 

@@ -115,6 +115,21 @@ TEST_F(Narration, ReadsGoalsBack) {
             "the milk should be in the fridge");
 }
 
+TEST_F(Narration, PluralThingsTakePluralVerbsAndPronouns) {
+  const World& w = kitchen_.world;
+  Goal pantry = goal({{"in", {"crackers1", "pantry1"}}, {"closed", {"pantry1"}}});
+  EXPECT_EQ(read_back_goal(w, id("crackers1"), pantry), "So the crackers go in the pantry, and the pantry ends closed.");
+  EXPECT_EQ(announce_known_goal(w, id("granola-bars1"), goal({{"in", {"granola-bars1", "pantry1"}}})),
+            "Next, the granola bars on the counter: they go in the pantry.");
+  EXPECT_EQ(ask_next_action(w, pantry), "What should I do next so that the crackers are in the pantry and the pantry is closed?");
+  std::vector<Action> steps = {action(w, "(pick-up crackers1 counter1)"), action(w, "(put-on crackers1 table1)"),
+                               action(w, "(pick-up crackers1 table1)")};
+  EXPECT_EQ(report_actions(w, steps), "I put the crackers on the table and picked them up.");
+  // "glass" and "half and half" are not plurals.
+  EXPECT_EQ(read_back_goal(w, id("half-and-half1"), goal({{"in", {"half-and-half1", "fridge1"}}})),
+            "So the half and half goes in the fridge.");
+}
+
 TEST_F(Narration, ReportsWhatWasDoneWithPronouns) {
   const World& w = kitchen_.world;
   std::vector<Action> steps = {action(w, "(open fridge1)"), action(w, "(pick-up ketchup1 table1)"),

@@ -226,11 +226,12 @@ TEST_F(Teach, ForgetAKindOfObjectForgetsWhereItGoes) {
   // Teach the ketchup's goal, forget it, and end: the store no longer has it.
   Process teach(teach_args());
   std::vector<std::string> script = {full_script()[0], full_script()[1], full_script()[2], kKetchupGoal,
-                                     "forget ketchup", "forget zebra", "quit"};
+                                     "forget zebra", "forget ketchups", "quit"};
   ASSERT_TRUE(teach.write(lines(script)));
   EXPECT_EQ(teach.wait(), 1) << teach.out() << teach.err();
+  EXPECT_THAT(teach.out(), HasSubstr("Agent: I have not learned where to put zebra, so there is nothing to forget.\n"));
+  // A plural names the kind too.
   EXPECT_THAT(teach.out(), HasSubstr("Agent: I forgot where a ketchup goes; I will ask when I meet one.\n"));
-  EXPECT_THAT(teach.out(), HasSubstr("Agent: I did not know where zebra goes, so there is nothing to forget.\n"));
   EXPECT_THAT(teach.out(), HasSubstr("Stopped: 2 of 3 goal assertions hold, after 4 instructions.\n"));
   EXPECT_EQ(stored().goals.size(), 0u);
 }
@@ -291,11 +292,24 @@ TEST_F(Teach, EndOfInputBeforeAnythingIsStillCleanAndNamesWhatIsNotDone) {
                                     kept()));
 }
 
+TEST_F(Teach, TheSummaryTellsLookAlikesApartByWhereTheyWereAndSaysRepeatsOnce) {
+  Process teach({APPRENTICE_BINARY, "teach", "--scenario",
+                 testing::source_path("data/scenarios/tidy-kitchen.yaml").string()});
+  ASSERT_TRUE(teach.write("tidy the kitchen\nquit\n"));
+  EXPECT_EQ(teach.wait(), 1);
+  // Two mugs start on the counter and in the dish rack; both ceramic plates
+  // on the table.
+  EXPECT_THAT(teach.out(), HasSubstr("Not done: the mug from the counter should be in the dishwasher.\n"
+                                     "Not done: the half and half should be in the fridge.\n"));
+  EXPECT_THAT(teach.out(), HasSubstr("Not done: the mug from the dish rack should be in the cupboard.\n"));
+  EXPECT_THAT(teach.out(), HasSubstr("Not done: the ceramic plate should be in the dishwasher (2 of them).\n"));
+}
+
 TEST_F(Teach, WithoutAStoreItSaysNothingWasSavedAndHowToKeepIt) {
   Process teach({APPRENTICE_BINARY, "teach", "--scenario", scenario_.string()});
   ASSERT_TRUE(teach.write(lines(full_script())));
   EXPECT_EQ(teach.wait(), 0) << teach.out() << teach.err();
-  EXPECT_THAT(teach.out(), EndsWith("Nothing was saved. To keep what you teach, give a knowledge store: teach --scenario " +
+  EXPECT_THAT(teach.out(), EndsWith("Nothing was saved. To keep what you teach, give a knowledge store: apprentice teach --scenario " +
                                     scenario_.string() + " --knowledge FILE (for example kitchen.sqlite).\n"));
 }
 
@@ -344,8 +358,8 @@ TEST_F(Teach, AGoalAboutAnotherObjectIsAskedBackNotStored) {
   EXPECT_EQ(teach.wait(), 0) << teach.out() << teach.err();
   EXPECT_THAT(teach.out(), HasSubstr("Agent: Where should the ketchup on the table go?\n"
                                      "Instructor: the goal is that the paper-plate is in the garbage.\n"
-                                     "Agent: That says what becomes of the paper plate, but I asked about the ketchup on "
-                                     "the table."));
+                                     "Agent: I asked about the ketchup, not the paper-plate. Where should the ketchup "
+                                     "go?"));
   EXPECT_THAT(teach.out(), HasSubstr("3 of 3 goal assertions hold, after 9 instructions."));
 }
 
