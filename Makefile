@@ -6,7 +6,7 @@ JOBS ?= $(shell nproc)
 BUILD ?= build
 ASAN_BUILD ?= build-asan
 
-.PHONY: all deps build run test test-release test-asan test-fuzz bench figure clean
+.PHONY: all deps build run test test-release test-asan test-fuzz fuzz-long bench figure clean
 
 # `make` builds the program, the libraries and the Python module
 # (build/python/apprentice; PYTHONPATH=build/python /usr/bin/python3).
@@ -35,8 +35,13 @@ test-asan: deps
 	cmake --build $(ASAN_BUILD) -j $(JOBS)
 	cd $(ASAN_BUILD) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j $(JOBS)
 
+# Each libFuzzer target of fuzz/ briefly (10 s), seeded from data/ and
+# fuzz/seeds (docs/fuzzing.md); fuzz-long runs each for 10 minutes.
 test-fuzz: deps
-	@if [ -x scripts/fuzz-parser.sh ]; then bash scripts/fuzz-parser.sh; fi
+	bash scripts/fuzz.sh
+
+fuzz-long: deps build
+	FUZZ_SECONDS=600 bash scripts/fuzz.sh
 
 test: test-release test-asan test-fuzz
 

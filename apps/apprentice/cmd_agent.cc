@@ -5,6 +5,7 @@
 #include <fstream>
 #include <iostream>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "agent/explanation.h"
@@ -282,6 +283,24 @@ CommandResult run_teach(const TeachOptions& options, const std::string& program,
   return achieved == total ? Outcome::kSuccess : Outcome::kGoalNotReached;
 }
 
+namespace {
+
+// Why `run --task NAME` has nothing to perform, naming the store and what it
+// holds; nothing when there is a task to perform.
+std::optional<Error> unknown_task(const Knowledge& knowledge, const std::string& name, const std::string& store) {
+  if (knowledge.tasks.empty())
+    return Error{ErrorCode::kNotFound, store + " holds no learned task yet; teach one with 'apprentice teach'"};
+  if (knowledge.find_task(name) != nullptr || (name.empty() && knowledge.tasks.size() == 1)) return std::nullopt;
+  std::vector<std::string> names;
+  for (const TaskKnowledge& task : knowledge.tasks) names.push_back(apprentice::quoted(task.name));
+  const std::string holds = " holds " + language::count_phrase(static_cast<long long>(names.size()), "task") + ": " +
+                            join(names, ", ");
+  if (name.empty()) return Error{ErrorCode::kInvalidInput, "name the task with --task: " + store + holds};
+  return Error{ErrorCode::kNotFound, "no task " + apprentice::quoted(name) + " has been learned; " + store + holds};
+}
+
+}  // namespace
+
 CommandResult run_run(const RunOptions& options, std::ostream& out) {
   auto scenario = load_scenario(options.scenario);
   if (!scenario) return tl::unexpected(scenario.error());
@@ -293,6 +312,7 @@ CommandResult run_run(const RunOptions& options, std::ostream& out) {
   agent_options.condition = Condition{"knowledge-only", false, 0, false};
   TaskLearningAgent agent(agent_options, std::move(*knowledge), Understanding(), nullptr, nullptr);
   Simulator simulator(scenario->world);
+  if (auto missing = unknown_task(*knowledge, options.task, options.knowledge)) return tl::unexpected(*missing);
   auto report = agent.perform(simulator, options.task);
   if (!report) return tl::unexpected(report.error());
   int achieved = count_achieved_assertions(*scenario, simulator.state());
@@ -314,7 +334,8 @@ CommandResult run_run(const RunOptions& options, std::ostream& out) {
   } else {
     out << "Performed with learned knowledge alone: ";
     if (measured)
-      out << achieved << " of " << language::count_phrase(total, "goal assertion") << " (" << completion << "%), ";
+      out << achieved << " of " << language::count_phrase(total, "goal assertion") << " ("
+          << fmt::format("{:.1f}", completion) << "%), ";
     out << language::count_phrase(report->actions_executed, "action") << ", 0 instructions, "
         << language::count_phrase(static_cast<long long>(report->search_nodes), "search node") << ", 0 LLM calls.\n";
     if (report->help_needed.empty()) out << "No help was needed.\n";

@@ -12,22 +12,22 @@
 #include "search/greedy_best_first.h"
 #include "search/iterative_deepening.h"
 #include "util/json.h"
+#include "util/text.h"
 #include "world/pddl.h"
 #include "world/scenario.h"
+#include "world/state_lookup.h"
 
 namespace apprentice::cli {
 
 namespace {
 
-// Where each item is, as "on table1", "in fridge1" or "in hand".
+// Where each item is, as "on table1", "in fridge1" or "in hand": binary
+// searches in the sorted facts, so that listing n items is n log n.
 std::string location_of(const World& world, ObjectId item) {
   const Vocabulary& v = world.vocabulary;
-  for (const Fact& f : world.state.facts()) {
-    if (f.arity == 0 || f.args[0] != item) continue;
-    if (f.predicate == v.on) return "on " + world.universe->name(f.args[1]);
-    if (f.predicate == v.in) return "in " + world.universe->name(f.args[1]);
-    if (f.predicate == v.holding) return "in hand";
-  }
+  if (auto on = facts_about(world.state, v.on, item); !on.empty()) return "on " + world.universe->name(on.front().args[1]);
+  if (auto in = facts_about(world.state, v.in, item); !in.empty()) return "in " + world.universe->name(in.front().args[1]);
+  if (world.state.holds(Fact(v.holding, {item}))) return "in hand";
   return "nowhere";
 }
 
@@ -36,6 +36,11 @@ std::string location_of(const World& world, ObjectId item) {
 // task, as the instructor wants it done).
 Result<Goal> goal_of(const Scenario& scenario, const std::string& text) {
   if (text == kIntentGoal) return Goal(scenario.goal_assertions());
+  if (std::string_view t = trim(text); !t.empty() && t.front() != '(')
+    return make_error(ErrorCode::kInvalidInput,
+                      "--goal " + apprentice::quoted(text) + " is not a goal: a goal is PDDL, such as (in ketchup1 fridge1) or "
+                      "(and (in ketchup1 fridge1) (closed fridge1)), or 'intent' for the whole task; "
+                      "'apprentice interpret' reads English");
   return parse_goal(*scenario.world.domain, *scenario.world.universe, text);
 }
 

@@ -9,7 +9,13 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <algorithm>
+#include <functional>
+#include <limits>
 #include <iostream>
+#include <map>
+#include <string_view>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -17,6 +23,8 @@
 #include "cmd_core.h"
 #include "cmd_interpret.h"
 #include "util/log.h"
+#include "util/spelling.h"
+#include "util/text.h"
 
 namespace apprentice::cli {
 namespace {
@@ -44,15 +52,143 @@ int finish(const CommandResult& result) {
   return *result == Outcome::kSuccess ? 0 : 1;
 }
 
+// Validators whose messages name the value the way git does: "--depth: 'abc'
+// is not a number" (CLI11 puts the option's name in front).
+CLI::Validator whole_number_in(long low, long high) {
+  return CLI::Validator(
+      [low, high](std::string& text) -> std::string {
+        long value = 0;
+        if (!CLI::detail::lexical_cast(text, value)) return "'" + text + "' is not a whole number";
+        if (value < low || value > high)
+          return "'" + text + "' is out of range (" + std::to_string(low) + " to " + std::to_string(high) + ")";
+        return {};
+      },
+      "INT in [" + std::to_string(low) + " - " + std::to_string(high) + "]");
+}
+CLI::Validator positive_number() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        double value = 0;
+        if (!CLI::detail::lexical_cast(text, value)) return "'" + text + "' is not a number";
+        if (!(value > 0)) return "'" + text + "' is not a positive number";
+        return {};
+      },
+      "POSITIVE");
+}
+
+// --llm names a backend before anything runs, so that a slip is blamed on
+// the flag, not on the first condition that would have used it. The
+// backends themselves are checked by llm::make_llm_client.
+void check_llm_flag(const LlmFlags& flags) {
+  const std::string_view spec = trim(flags.spec);
+  if (spec.empty()) return;
+  const std::string_view scheme = spec.substr(0, spec.find(':'));
+  for (std::string_view known : {"openai", "llama", "replay", "record", "corpus"})
+    if (scheme == known) return;
+  throw CLI::ValidationError("--llm", apprentice::quoted(spec) +
+                                          " is not an LLM backend: expected openai:URL, llama:URL, replay:FILE, "
+                                          "record:FILE,SPEC or corpus:FILE (docs/llm.md)");
+}
+
+// The subcommands a user can name, for "did you mean".
+std::vector<std::string> command_names(const CLI::App& app) {
+  std::vector<std::string> names;
+  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) names.push_back(sub->get_name());
+  return names;
+}
+
+// The first word that is not an option of the program itself, or nothing.
+std::optional<std::string> first_word(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    std::string_view arg = argv[i];
+    if (arg == "--") return i + 1 < argc ? std::optional<std::string>(argv[i + 1]) : std::nullopt;
+    if (!arg.starts_with("-")) return std::string(arg);
+  }
+  return std::nullopt;
+}
+
+// "apprentice: 'frobnicate' is not a command. See 'apprentice --help'." and
+// "did you mean" for a near miss, as git says it.
+int not_a_command(const CLI::App& app, const std::string& word) {
+  std::cerr << "apprentice: '" << word << "' is not a command. See 'apprentice --help'.\n";
+  if (auto near = closest_match(word, command_names(app))) std::cerr << "\nThe most similar command is\n\t" << *near << "\n";
+  return 2;
+}
+
+// `apprentice help [COMMAND]`, as `git help`.
+int help(const CLI::App& app, int argc, char** argv) {
+  int at = 1;
+  while (at < argc && std::string_view(argv[at]) != "help") ++at;
+  if (at + 1 >= argc) {
+    std::cout << app.help();
+    return 0;
+  }
+  const std::string word = argv[at + 1];
+  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
+    if (sub->get_name() == word) {
+      std::cout << sub->help();
+      return 0;
+    }
+  return not_a_command(app, word);
+}
+
+// A CLI11 error as the rest of our errors read: "apprentice: " first, the
+// subcommand named, and where to look for help.
+int parse_failure(const CLI::App& app, const CLI::ParseError& e) {
+  std::string command;
+  for (const CLI::App* sub : app.get_subcommands()) command = sub->get_name();
+  std::string message = e.what();
+  if (dynamic_cast<const CLI::ExtrasError*>(&e) != nullptr) {
+    // "The following argument was not expected: --frob"
+    const auto colon = message.find(": ");
+    const std::string what = colon == std::string::npos ? message : message.substr(colon + 2);
+    message = (what.starts_with("-") ? "unknown option " : "unexpected argument ") + apprentice::quoted(what);
+  }
+  std::cerr << "apprentice: " << (command.empty() ? "" : command + ": ") << message << ". See 'apprentice help"
+            << (command.empty() ? "" : " " + command) << "'.\n";
+  return 2;
+}
+
+// Options marked required are checked after the rest of the command line,
+// so that an unknown option or a bad value is what is reported first (CLI11
+// checks requirements before leftovers). Call once every option exists.
+std::map<const CLI::App*, std::vector<CLI::Option*>> defer_requirements(CLI::App& app) {
+  std::map<const CLI::App*, std::vector<CLI::Option*>> required;
+  for (CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
+    for (CLI::Option* option : sub->get_options([](const CLI::Option* o) { return o->get_required(); })) {
+      option->required(false);
+      required[sub].push_back(option);
+    }
+  return required;
+}
+
 int run(int argc, char** argv) {
   CLI::App app{"apprentice: an agent that learns new tasks online, in one shot, from an instructor, "
                "its own search, an LLM and WordNet"};
+  app.name("apprentice");
   app.require_subcommand(1);
   app.set_version_flag("--version", "apprentice 0.1.0");
-  bool verbose = false;
+  // -v and -q are the program's, accepted before or after the subcommand
+  // (fallthrough), as in `apprentice run -v ...`.
+  app.fallthrough();
+  bool verbose = false, quiet = false;
   app.add_flag("-v,--verbose", verbose, "Log what the agent does to stderr")->each([](const std::string&) {
     spdlog::set_level(spdlog::level::info);
   });
+  app.add_flag("-q,--quiet", quiet, "Log only errors")->each([](const std::string&) {
+    spdlog::set_level(spdlog::level::err);
+  });
+
+  // Each subcommand's action; the options it requires are checked first
+  // (see defer_requirements).
+  std::map<const CLI::App*, std::vector<CLI::Option*>> required;
+  auto on_run = [&required](CLI::App* command, std::function<void()> action) {
+    command->callback([&required, command, action = std::move(action)] {
+      for (const CLI::Option* option : required[command])
+        if (option->count() == 0) throw CLI::RequiredError(option->get_name());
+      action();
+    });
+  };
 
   CommandResult result = Outcome::kSuccess;
 
@@ -60,7 +196,7 @@ int run(int argc, char** argv) {
   auto* world_cmd = app.add_subcommand("world", "Print the perceived world of a scenario (never its intent)");
   world_cmd->add_option("--scenario", world.scenario, "Scenario file (YAML)")->required();
   world_cmd->add_flag("--json", world.json, "Machine-readable output");
-  world_cmd->callback([&] { result = run_world(world, std::cout); });
+  on_run(world_cmd, [&] { result = run_world(world, std::cout); });
 
   PlanOptions plan;
   auto* plan_cmd = app.add_subcommand(
@@ -70,14 +206,14 @@ int run(int argc, char** argv) {
                        "Goal, e.g. '(and (in ketchup1 fridge1) (closed fridge1))', or 'intent' for the whole task")
       ->required();
   plan_cmd->add_option("--depth", plan.depth, "Iterative deepening to this depth (a shortest plan)")
-      ->check(CLI::Range(0, 64));
+      ->check(whole_number_in(0, 64));
   plan_cmd->add_option("--node-limit,--max-nodes", plan.node_limit, "Stop after expanding this many nodes")
-      ->check(CLI::PositiveNumber);
+      ->check(whole_number_in(1, std::numeric_limits<long>::max()));
   plan_cmd->add_option("--time-limit", plan.time_limit_s, "Stop after this many seconds")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   plan_cmd->add_flag("--no-pruning", plan.no_pruning, "Ground every object, not only those relevant to the goal");
   plan_cmd->add_flag("--json", plan.json, "Machine-readable output");
-  plan_cmd->callback([&] {
+  on_run(plan_cmd, [&] {
     plan.progress = isatty(fileno(stderr)) != 0;
     result = run_plan(plan, std::cout, std::cerr);
   });
@@ -87,7 +223,7 @@ int run(int argc, char** argv) {
   export_cmd->add_option("--scenario", export_pddl.scenario, "Scenario file (YAML)")->required();
   export_cmd->add_option("--goal", export_pddl.goal, "Goal, as for plan ('intent' for the whole task)")->required();
   export_cmd->add_option("--out", export_pddl.out_dir, "Directory to write domain.pddl and problem.pddl into")->required();
-  export_cmd->callback([&] { result = run_export_pddl(export_pddl, std::cout); });
+  on_run(export_cmd, [&] { result = run_export_pddl(export_pddl, std::cout); });
 
   auto add_llm_flags = [](CLI::App* cmd, LlmFlags& flags) {
     cmd->add_option("--llm", flags.spec,
@@ -96,10 +232,10 @@ int run(int argc, char** argv) {
     cmd->add_option("--llm-model", flags.model, "Model name sent to the LLM server (default: $OPENAI_MODEL)");
     cmd->add_option("--llm-api-key", flags.api_key, "API key for the LLM server (default: $OPENAI_API_KEY)");
     cmd->add_option("--llm-timeout-ms", flags.timeout_ms, "Total time allowed for one LLM request (default 30000)")
-        ->check(CLI::PositiveNumber);
+        ->check(whole_number_in(1, std::numeric_limits<int>::max()));
     cmd->add_option("--llm-connect-timeout-ms", flags.connect_timeout_ms,
                     "Time allowed to connect to the LLM server (default 5000)")
-        ->check(CLI::PositiveNumber);
+        ->check(whole_number_in(1, std::numeric_limits<int>::max()));
     cmd->add_flag("--llm-optional", flags.optional,
                   "Go on without the LLM when its server cannot be reached or fails (else exit 4)");
     cmd->add_option("--goal-repair", flags.goal_repair,
@@ -131,7 +267,7 @@ int run(int argc, char** argv) {
   interpret_cmd->add_option("--recent", interpret_recent, "With --asked: the place named last (an id)");
   interpret_cmd->add_option("--choices", interpret.choices, "With --asked which: the ids offered")->delimiter(',');
   interpret_cmd->add_option("sentence", interpret_sentence, "The sentence to interpret");
-  interpret_cmd->callback([&] {
+  on_run(interpret_cmd, [&] {
     if (!interpret_asked.empty()) interpret.asked = interpret_asked;
     if (!interpret_recent.empty()) interpret.recent = interpret_recent;
     if (!interpret_sentence.empty()) interpret.sentence = interpret_sentence;
@@ -159,7 +295,15 @@ int run(int argc, char** argv) {
       ->capture_default_str();
   experiment_cmd->add_flag("--no-rules", experiment.no_rules, "Do not use learned policy rules");
   add_llm_flags(experiment_cmd, experiment.llm);
-  experiment_cmd->callback([&] { result = run_experiment(experiment, program, std::cout); });
+  on_run(experiment_cmd, [&] {
+    // "instruction, inst+search4": spaces around the commas are not part of the names.
+    std::vector<std::string> conditions;
+    for (const std::string& c : experiment.conditions)
+      if (!trim(c).empty()) conditions.emplace_back(trim(c));
+    experiment.conditions = std::move(conditions);
+    check_llm_flag(experiment.llm);
+    result = run_experiment(experiment, program, std::cout);
+  });
 
   TeachOptions teach;
   auto* teach_cmd = app.add_subcommand("teach", "Teach the agent at the terminal: it asks, you answer");
@@ -171,7 +315,10 @@ int run(int argc, char** argv) {
       ->capture_default_str();
   teach_cmd->add_flag("-q,--quiet", teach.quiet, "Print only the agent's questions and the summary");
   add_llm_flags(teach_cmd, teach.llm);
-  teach_cmd->callback([&] { result = run_teach(teach, program, stdin, std::cout); });
+  on_run(teach_cmd, [&] {
+    check_llm_flag(teach.llm);
+    result = run_teach(teach, program, stdin, std::cout);
+  });
 
   RunOptions run_options;
   auto* run_cmd = app.add_subcommand("run", "Perform a learned task with learned knowledge alone");
@@ -179,7 +326,7 @@ int run(int argc, char** argv) {
   run_cmd->add_option("--knowledge", run_options.knowledge, "Knowledge store (SQLite)")->required();
   run_cmd->add_option("--task", run_options.task, "Task name (default: the only one learned)");
   run_cmd->add_flag("--json", run_options.json, "Machine-readable output");
-  run_cmd->callback([&] { result = run_run(run_options, std::cout); });
+  on_run(run_cmd, [&] { result = run_run(run_options, std::cout); });
 
   KnowledgeOptions knowledge;
   auto* knowledge_cmd = app.add_subcommand("knowledge", "Print what was learned (tasks, goals, rules) in English, with where each came from");
@@ -187,13 +334,19 @@ int run(int argc, char** argv) {
   knowledge_cmd->add_option("--domain", knowledge.domain, "PDDL domain the rules use (default: the kitchen)");
   knowledge_cmd->add_flag("--json", knowledge.json, "Machine-readable output");
   knowledge_cmd->add_flag("--pddl", knowledge.pddl, "Goals and rules in PDDL terms instead of English");
-  knowledge_cmd->callback([&] { result = run_knowledge(knowledge, program, std::cout); });
+  on_run(knowledge_cmd, [&] { result = run_knowledge(knowledge, program, std::cout); });
 
+  required = defer_requirements(app);
+  if (auto word = first_word(argc, argv)) {
+    if (*word == "help") return help(app, argc, argv);
+    const std::vector<std::string> names = command_names(app);
+    if (std::find(names.begin(), names.end(), *word) == names.end()) return not_a_command(app, *word);
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    int code = app.exit(e);
-    return code == 0 ? 0 : 2;
+    if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
+    return parse_failure(app, e);
   }
   return finish(result);
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "world/goal.h"
+#include "world/goal_reader.h"
 #include "world/sexpr.h"
 
 namespace apprentice {
@@ -104,8 +105,9 @@ Result<Action> parse_action(const Domain& domain, const Universe& universe, std:
     const SExpr& term = expr->items[i];
     auto object = term.is_list ? std::nullopt : universe.find(term.atom);
     if (!object)
-      return tl::unexpected(syntax_error("action", term.position, "expected an object; there is no " +
-                                                                      (term.is_list ? "list" : term.atom)));
+      return tl::unexpected(syntax_error("action", term.position,
+                                         term.is_list ? "expected an object; there is no list"
+                                                      : no_such_object(universe, term.atom)));
     if (!domain.is_subtype(universe.info(*object).type, schema.parameters[i - 1].type))
       return tl::unexpected(syntax_error("action", term.position,
                                          "expected a " + type_word(domain, schema.parameters[i - 1].type) +

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "util/spelling.h"
 #include "world/goal_reader.h"
 #include "world/sexpr.h"
 
@@ -44,6 +45,15 @@ std::string format_goal(const Domain& domain, const Universe& universe, const Go
   return out + ")";
 }
 
+std::string no_such_object(const Universe& universe, std::string_view name) {
+  std::string message = "expected an object; there is no " + std::string(name);
+  std::vector<std::string> ids;
+  ids.reserve(universe.size());
+  for (const ObjectInfo& o : universe.objects()) ids.push_back(o.id);
+  if (auto near = closest_match(name, ids)) message += "; did you mean " + *near + "?";
+  return message;
+}
+
 Result<Fact> fact_from_sexpr(const Domain& domain, const Universe& universe, const SExpr& expr,
                              std::string_view source) {
   if (!expr.is_list || expr.items.empty() || expr.items[0].is_list)
@@ -65,7 +75,7 @@ Result<Fact> fact_from_sexpr(const Domain& domain, const Universe& universe, con
       return tl::unexpected(syntax_error(source, term.position, "expected an object name, not a list"));
     auto object = universe.find(term.atom);
     if (!object)
-      return tl::unexpected(syntax_error(source, term.position, "expected an object; there is no " + term.atom));
+      return tl::unexpected(syntax_error(source, term.position, no_such_object(universe, term.atom)));
     TypeId wanted = schema.parameter_types[i - 1];
     if (!domain.is_subtype(universe.info(*object).type, wanted))
       return tl::unexpected(syntax_error(source, term.position,

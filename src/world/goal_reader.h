@@ -2,6 +2,7 @@
 // already-parsed s-expressions (shared by parse_goal and the problem reader).
 #pragma once
 
+#include <string>
 #include <string_view>
 
 #include "util/result.h"
@@ -18,5 +19,8 @@ Result<Fact> fact_from_sexpr(const Domain& domain, const Universe& universe, con
 // (and L...) or L, where L is a fact or (not fact).
 Result<Goal> goal_from_sexpr(const Domain& domain, const Universe& universe, const SExpr& expr,
                              std::string_view source);
+
+// "expected an object; there is no ketchup; did you mean ketchup1?"
+std::string no_such_object(const Universe& universe, std::string_view name);
 
 }  // namespace apprentice

@@ -1,6 +1,7 @@
 #include "world/state.h"
 
 #include <algorithm>
+#include <iterator>
 
 namespace apprentice {
 
@@ -44,13 +45,24 @@ bool State::holds(const Fact& fact) const {
 }
 
 State State::with_changes(std::span<const Fact> removed, std::span<const Fact> added) const {
+  // Linear in the state's size (a merge of sorted ranges), not n log n: the
+  // simulator and the agent change states with millions of facts.
+  std::vector<Fact> removed_sorted(removed.begin(), removed.end());
+  std::sort(removed_sorted.begin(), removed_sorted.end());
+  std::vector<Fact> added_sorted(added.begin(), added.end());
+  std::sort(added_sorted.begin(), added_sorted.end());
+  added_sorted.erase(std::unique(added_sorted.begin(), added_sorted.end()), added_sorted.end());
+  std::vector<Fact> kept;
+  kept.reserve(facts_->size());
+  std::set_difference(facts_->begin(), facts_->end(), removed_sorted.begin(), removed_sorted.end(),
+                      std::back_inserter(kept));
   std::vector<Fact> facts;
-  facts.reserve(facts_->size() + added.size());
-  for (const Fact& fact : *facts_) {
-    if (std::find(removed.begin(), removed.end(), fact) == removed.end()) facts.push_back(fact);
-  }
-  facts.insert(facts.end(), added.begin(), added.end());
-  return State(std::move(facts));
+  facts.reserve(kept.size() + added_sorted.size());
+  std::set_union(kept.begin(), kept.end(), added_sorted.begin(), added_sorted.end(), std::back_inserter(facts));
+  State next;
+  next.hash_ = hash_facts(facts);
+  next.facts_ = std::make_shared<const std::vector<Fact>>(std::move(facts));
+  return next;
 }
 
 bool operator==(const State& a, const State& b) {

@@ -71,7 +71,9 @@ TEST_F(Goals, ErrorsNameTheColumnAndWhatWasExpected) {
     const char* message;
   };
   const Case cases[] = {
-      {"(in ketchup9 fridge1)", "goal:1:5: expected an object; there is no ketchup9"},
+      {"(in ketchup9 fridge1)", "goal:1:5: expected an object; there is no ketchup9; did you mean ketchup1?"},
+      {"(in ketchup fridge1)", "goal:1:5: expected an object; there is no ketchup; did you mean ketchup1?"},
+      {"(in wardrobe1 fridge1)", "goal:1:5: expected an object; there is no wardrobe1"},
       {"(inside ketchup1 fridge1)", "goal:1:2: expected a predicate of domain kitchen, not inside"},
       {"(in ketchup1)", "goal:1:1: expected 2 arguments for in"},
       {"(in ketchup1 table1)", "goal:1:14: expected an object of type receptacle; table1 is a surface"},

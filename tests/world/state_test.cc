@@ -2,6 +2,7 @@
 // duplicates they were built from), equal states hash alike, copies share
 // their storage, and "changing" a state makes a new one.
 #include "world/state.h"
+#include "world/state_lookup.h"
 
 #include <algorithm>
 #include <random>
@@ -182,6 +183,51 @@ TEST(State, UndoingAChangeGivesBackAnEqualState) {
   EXPECT_EQ(back, start);
   EXPECT_EQ(back.hash(), start.hash());
   EXPECT_NE(back.facts().data(), start.facts().data());
+}
+
+// Random facts over a few predicates and objects, with duplicates.
+std::vector<Fact> random_facts(std::mt19937& rng, int n) {
+  std::uniform_int_distribution<int> predicate(0, 3), object(0, 9), arity(0, 3);
+  std::vector<Fact> facts;
+  for (int i = 0; i < n; ++i) {
+    std::vector<ObjectId> args;
+    for (int a = arity(rng); a > 0; --a) args.push_back(static_cast<ObjectId>(object(rng)));
+    facts.emplace_back(static_cast<PredicateId>(predicate(rng)), std::span<const ObjectId>(args));
+  }
+  return facts;
+}
+
+TEST(State, WithChangesAgreesWithRemovingThenAddingOneByOne) {
+  std::mt19937 rng(11);
+  for (int trial = 0; trial < 300; ++trial) {
+    const std::vector<Fact> start = random_facts(rng, 40);
+    const std::vector<Fact> removed = random_facts(rng, 15);
+    const std::vector<Fact> added = random_facts(rng, 15);
+    std::set<Fact> expected(start.begin(), start.end());
+    for (const Fact& f : removed) expected.erase(f);
+    expected.insert(added.begin(), added.end());
+    State after = State(start).with_changes(removed, added);
+    EXPECT_EQ(after, State(std::vector<Fact>(expected.begin(), expected.end())));
+    EXPECT_TRUE(std::equal(after.facts().begin(), after.facts().end(), expected.begin(), expected.end()));
+    EXPECT_EQ(after.hash(), State(std::vector<Fact>(expected.begin(), expected.end())).hash());
+  }
+}
+
+TEST(State, FactsAboutFindsExactlyThePairsWithThatFirstArgument) {
+  std::mt19937 rng(12);
+  for (int trial = 0; trial < 300; ++trial) {
+    const State state(random_facts(rng, 60));
+    for (PredicateId p = 0; p < 4; ++p) {
+      for (ObjectId first = 0; first < 10; ++first) {
+        std::vector<Fact> expected;
+        for (const Fact& f : state.facts())
+          if (f.predicate == p && f.arity == 2 && f.args[0] == first) expected.push_back(f);
+        const auto found = facts_about(state, p, first);
+        EXPECT_TRUE(std::equal(found.begin(), found.end(), expected.begin(), expected.end()))
+            << "predicate " << p << ", first argument " << first;
+      }
+    }
+  }
 }
 
 }  // namespace

@@ -1,0 +1,137 @@
+// Command-line conventions (issue 11), tried as a new user would, against
+// git's and ripgrep's: every error starts "apprentice:", names the flag or
+// word at fault, suggests the near miss, and exits 2.
+#include <filesystem>
+#include <string>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "common/paths.h"
+#include "common/process.h"
+#include "common/scratch.h"
+
+namespace apprentice {
+namespace {
+
+using ::testing::AllOf;
+using ::testing::HasSubstr;
+using ::testing::Not;
+using ::testing::StartsWith;
+using testing::Invocation;
+
+namespace fs = std::filesystem;
+
+class Conventions : public testing::ScratchTest {
+ protected:
+  Invocation run(const std::vector<std::string>& args) const { return testing::run_cli(args, dir_, fs::path()); }
+  std::string kitchen() const { return testing::scenario_path("tidy-kitchen").string(); }
+};
+
+TEST_F(Conventions, AnUnknownCommandIsNamedWithWhereToLook) {
+  Invocation r = run({"frobnicate"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, StartsWith("apprentice: 'frobnicate' is not a command. See 'apprentice --help'.\n"));
+  EXPECT_THAT(r.err, Not(HasSubstr("most similar")));
+}
+
+TEST_F(Conventions, ANearMissSuggestsTheCommand) {
+  Invocation r = run({"tech", "--scenario", kitchen()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, HasSubstr("'tech' is not a command"));
+  EXPECT_THAT(r.err, HasSubstr("The most similar command is\n\tteach\n"));
+}
+
+TEST_F(Conventions, HelpAsACommandPrintsHelp) {
+  Invocation all = run({"help"});
+  EXPECT_EQ(all.exit_code, 0);
+  EXPECT_THAT(all.out, AllOf(HasSubstr("Usage: apprentice"), HasSubstr("teach"), HasSubstr("experiment")));
+  Invocation teach = run({"help", "teach"});
+  EXPECT_EQ(teach.exit_code, 0);
+  EXPECT_THAT(teach.out, AllOf(HasSubstr("Teach the agent"), HasSubstr("--knowledge")));
+  Invocation bad = run({"help", "frob"});
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_THAT(bad.err, HasSubstr("'frob' is not a command"));
+}
+
+TEST_F(Conventions, AnUnknownFlagIsReportedBeforeAMissingOne) {
+  Invocation r = run({"teach", "--frob"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "apprentice: teach: unknown option \"--frob\". See 'apprentice help teach'.\n");
+  Invocation missing = run({"teach"});
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_EQ(missing.err, "apprentice: teach: --scenario is required. See 'apprentice help teach'.\n");
+}
+
+TEST_F(Conventions, ANumberThatIsNotANumberSaysSo) {
+  Invocation r = run({"plan", "--scenario", kitchen(), "--goal", "(closed fridge1)", "--depth", "abc"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, HasSubstr("apprentice: plan: --depth: 'abc' is not a whole number"));
+  Invocation range = run({"plan", "--scenario", kitchen(), "--goal", "(closed fridge1)", "--depth", "99"});
+  EXPECT_EQ(range.exit_code, 2);
+  EXPECT_THAT(range.err, HasSubstr("--depth: '99' is out of range (0 to 64)"));
+  Invocation seconds = run({"plan", "--scenario", kitchen(), "--goal", "(closed fridge1)", "--time-limit", "soon"});
+  EXPECT_EQ(seconds.exit_code, 2);
+  EXPECT_THAT(seconds.err, HasSubstr("--time-limit: 'soon' is not a number"));
+}
+
+TEST_F(Conventions, AGoalInEnglishIsToldWhatAGoalIs) {
+  Invocation r = run({"plan", "--scenario", kitchen(), "--goal", "put the ketchup in the fridge"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, AllOf(HasSubstr("is not a goal"), HasSubstr("(in ketchup1 fridge1)"), HasSubstr("interpret")));
+}
+
+TEST_F(Conventions, AnObjectWithoutItsNumberIsSuggested) {
+  Invocation r = run({"plan", "--scenario", kitchen(), "--goal", "(in ketchup fridge1)"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, HasSubstr("there is no ketchup; did you mean ketchup1?"));
+}
+
+TEST_F(Conventions, SpacesAfterCommasInConditionsAreTolerated) {
+  Invocation r = run({"experiment", "--scenario", kitchen(), "--conditions", "instruction, inst+search4", "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, AllOf(HasSubstr("\"instruction\""), HasSubstr("\"inst+search4\"")));
+}
+
+TEST_F(Conventions, ABadLlmSpecIsBlamedOnTheFlag) {
+  Invocation r = run({"experiment", "--scenario", kitchen(), "--conditions", "inst+llm", "--llm", "bogus"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, HasSubstr("apprentice: experiment: --llm: \"bogus\" is not an LLM backend"));
+  EXPECT_THAT(r.err, Not(HasSubstr("condition")));
+}
+
+TEST_F(Conventions, VerboseAndQuietAreAcceptedAfterEverySubcommand) {
+  for (const char* flag : {"-v", "--verbose", "-q", "--quiet"}) {
+    Invocation r = run({"world", "--scenario", kitchen(), flag});
+    EXPECT_EQ(r.exit_code, 0) << flag << ": " << r.err;
+  }
+  Invocation verbose = run({"plan", "--scenario", kitchen(), "--goal", "(closed fridge1)", "-v"});
+  EXPECT_EQ(verbose.exit_code, 0) << verbose.err;
+  EXPECT_THAT(verbose.err, HasSubstr("[info]"));
+}
+
+TEST_F(Conventions, RunNamesTheStoreAndTheTasksItHolds) {
+  const fs::path out = dir_ / "out";
+  ASSERT_EQ(run({"experiment", "--scenario", kitchen(), "--conditions", "instruction", "-q", "--knowledge-out",
+                 out.string()})
+                .exit_code,
+            0);
+  const std::string store = (out / "instruction.sqlite").string();
+  Invocation r = run({"run", "--scenario", kitchen(), "--knowledge", store, "--task", "clean house"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, HasSubstr(store));
+  EXPECT_THAT(r.err, Not(HasSubstr("no task 'clean house' has been learned\n")));
+}
+
+TEST_F(Conventions, EveryErrorHasThePrefix) {
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{}, {"world"}, {"world", "--scenario"}, {"plan", "--depth", "x"}, {"frob"},
+        {"world", "--scenario", kitchen(), "extra"}}) {
+    Invocation r = run(args);
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_THAT(r.err, StartsWith("apprentice: ")) << testing::shell_quote(args.empty() ? "" : args[0]);
+  }
+}
+
+}  // namespace
+}  // namespace apprentice
