@@ -1,5 +1,6 @@
 #include "instructor/simulated_instructor.h"
 
+#include <algorithm>
 #include <cctype>
 
 #include "instructor/dialogue.h"
@@ -57,7 +58,8 @@ std::string SimulatedInstructor::next_task_step(const World& now) {
       case Phase::kAnnounceLoop:
         // A subtask whose place is already empty (an agent that knew the
         // task has done it) is not taught.
-        if (!has_objects_at(now, subtask.place)) {
+        if (std::none_of(subtask.places.begin(), subtask.places.end(),
+                         [&](ObjectId place) { return has_objects_at(now, place); })) {
           ++subtask_index_;
           continue;
         }
@@ -110,7 +112,7 @@ std::string SimulatedInstructor::which(const Question& question, const World& wo
   if (question.object) {
     if (const IntentEntry* entry = scenario_.find_intent(question.subtask, world.universe->info(*question.object).category)) {
       for (ObjectId c : question.choices)
-        if (c == entry->receptacle) chosen = c;
+        if (c == entry->place) chosen = c;
     }
   }
   return language::spoken_name(world, chosen);
