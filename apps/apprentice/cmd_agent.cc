@@ -81,6 +81,21 @@ std::string skipped_hint(const std::vector<std::string>& skipped) {
          "OpenAI-compatible\nserver, or corpus:FILE for recorded responses (see docs/llm.md).\n";
 }
 
+// What the conditions carried over from the knowledge they started from:
+// the words taken for learned ones (the same in every condition), and each
+// condition's goals by analogy.
+void print_transfer(const std::vector<ConditionResult>& results, std::ostream& out) {
+  const std::vector<std::string>& renamed = results.front().report.renamed;
+  if (renamed.empty()) out << "No learned word needed another here.\n";
+  else out << "The knowledge brought in, in this world's words (every condition):\n";
+  for (const std::string& note : renamed) out << "  " << note << "\n";
+  for (const ConditionResult& r : results) {
+    if (r.report.analogies.empty()) continue;
+    out << r.condition << ", by analogy:\n";
+    for (const std::string& note : r.report.analogies) out << "  " << note << "\n";
+  }
+}
+
 CommandResult run_experiment(const ExperimentOptions& options, const std::string& program, std::ostream& out) {
   (void)program;
   auto scenario = load_scenario(options.scenario);
@@ -140,6 +155,7 @@ CommandResult run_experiment(const ExperimentOptions& options, const std::string
         break;
       }
     out << "\n" << format_results_table(results, scenario->reference == "table3") << "\n" << kTableLegend;
+    if (request.options.knowledge_in && !results.empty()) print_transfer(results, out);
     if (!run->skipped.empty()) out << skipped_hint(run->skipped);
   }
   if (!options.plot.empty()) {
@@ -322,7 +338,8 @@ CommandResult run_run(const RunOptions& options, std::ostream& out) {
   const bool measured = scenario->has_intent;
   if (options.json) {
     nlohmann::json j{{"instructions", 0}, {"search_nodes", report->search_nodes}, {"llm_calls", 0},
-                     {"actions", report->actions_executed}, {"help_needed", report->help_needed}};
+                     {"actions", report->actions_executed}, {"help_needed", report->help_needed},
+                     {"renamed", report->renamed}, {"analogies", report->analogies}};
     if (measured) {
       j["completion_rate"] = completion;
       j["assertions_achieved"] = achieved;
@@ -338,6 +355,8 @@ CommandResult run_run(const RunOptions& options, std::ostream& out) {
           << fmt::format("{:.1f}", completion) << "%), ";
     out << language::count_phrase(report->actions_executed, "action") << ", 0 instructions, "
         << language::count_phrase(static_cast<long long>(report->search_nodes), "search node") << ", 0 LLM calls.\n";
+    for (const std::string& note : report->renamed) out << "From another world: I " << note << ".\n";
+    for (const std::string& note : report->analogies) out << "By analogy: I " << note << ".\n";
     if (report->help_needed.empty()) out << "No help was needed.\n";
     for (const std::string& help : report->help_needed) out << "Would need help: " << help << "\n";
   }

@@ -35,23 +35,28 @@ Result<AgentReport> TaskLearningAgent::learn(Simulator& simulator, Dialogue& dia
 }
 
 Result<AgentReport> TaskLearningAgent::perform(Simulator& simulator, const std::string& task_name) {
+  Session session(*this, simulator, nullptr, false);  // first: it may rename what is known (transfer.h)
   const TaskKnowledge* task = knowledge_.find_task(task_name);
   if (task == nullptr && task_name.empty() && knowledge_.tasks.size() == 1) task = &knowledge_.tasks.front();
   if (task == nullptr)
     return make_error(ErrorCode::kNotFound, "no task '" + task_name + "' has been learned");
-  Session session(*this, simulator, nullptr, false);
   return session.perform_task(*task);
 }
 
 TaskLearningAgent::Session::Session(TaskLearningAgent& agent, Simulator& simulator, Dialogue* dialogue,
                                     bool learning)
-    : agent_(agent), simulator_(simulator), dialogue_(dialogue), learning_(learning) {}
+    : agent_(agent), simulator_(simulator), dialogue_(dialogue), learning_(learning),
+      transfer_(agent.knowledge_, simulator.world(), agent.understanding_.lexicon()) {
+  for (const CategoryMatch& m : transfer_.matches())
+    report_.renamed.push_back("took the " + m.world + " for the " + m.learned + " (" + m.reason + ")");
+}
 
 std::string TaskLearningAgent::Session::describe_object(ObjectId object) const {
   return world().universe->name(object) + " (" + world().universe->info(object).category + ")";
 }
 
 Result<AgentReport> TaskLearningAgent::Session::learn_task() {
+  if (std::string renamed = say_renamings(transfer_.matches()); !renamed.empty()) say(renamed);
   while (!progress_.finished) {
     Step step = next_step();
     // An undo has put everything back as it was before the last lesson:
@@ -288,10 +293,16 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::start_object(Object
       if (learning_) say(language::announce_known_goal(world(), object, *goal));
     }
   }
+  if (!goal) {
+    auto analogous = goal_by_analogy(object, report);
+    if (!analogous) return tl::unexpected(analogous.error());
+    goal = *analogous;
+  }
   if (!goal && !learning_) {
+    std::string doubt = report.note.empty() ? "" : ": " + report.note;
     report.note = "no goal known";
     report_.help_needed.push_back("where " + language::spoken_name_and_location(world(), object) + " goes (" +
-                                  current().verb + ")");
+                                  current().verb + ")" + doubt);
   } else if (!goal) {
     auto acquired = acquire_goal(object, report);
     if (!acquired) return tl::unexpected(acquired.error());

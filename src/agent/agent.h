@@ -76,6 +76,11 @@ struct AgentReport {
   int rules_learned = 0;
   // Where the agent would have needed help it could not get (for `run`).
   std::vector<std::string> help_needed;
+  // What the agent carried over from other worlds (transfer.h), one line
+  // each: the categories it took for learned ones, and the goals it
+  // adopted by analogy.
+  std::vector<std::string> renamed;
+  std::vector<std::string> analogies;
   bool task_finished = false;  // the instructor said the task was done
 };
 

@@ -15,6 +15,7 @@
 #include <set>
 
 #include "agent/agent.h"
+#include "agent/transfer.h"
 #include "language/reply.h"
 
 namespace apprentice {
@@ -154,6 +155,12 @@ class TaskLearningAgent::Session {
   Flow<std::optional<Goal>> goal_from_llm(ObjectId object, ObjectReport& report);
   Flow<std::optional<Goal>> goal_from_instructor(ObjectId object, ObjectReport& report);
   Status learn_goal(ObjectId object, const Goal& goal, const std::string& source);
+  // Knowledge across worlds (agent_transfer.cc): the goal of the nearest
+  // kind learned before, proposed to the teacher as a yes/no question, or,
+  // alone, adopted at kAdoptAnalogyAt or more. nullopt when there is none,
+  // the teacher says no, or it is too doubtful (then `report.note` says why
+  // when performing).
+  Flow<std::optional<Goal>> goal_by_analogy(ObjectId object, ObjectReport& report);
   GoalKey goal_key(ObjectId object) const;
   llm::TaskContext llm_context(ObjectId object) const;
 
@@ -185,6 +192,9 @@ class TaskLearningAgent::Session {
   AgentReport report_;           // the counters of search and actions; objects come from progress_
   std::optional<ObjectId> recent_place_;  // the place named last: what "the door" means
   std::string advice_;  // the words of the last action advised by the LLM or the instructor
+  // What the agent knew, in this world's words, and the analogies it offers.
+  // Constructed last: it renames the agent's knowledge when the session starts.
+  KnowledgeTransfer transfer_;
 };
 
 }  // namespace apprentice

@@ -1,10 +1,12 @@
 #include "agent/transfer.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <set>
 
 #include <spdlog/spdlog.h>
 
+#include "language/narration.h"
 #include "util/text.h"
 
 namespace apprentice {
@@ -195,6 +197,27 @@ Knowledge rename_categories(const Knowledge& knowledge, const Domain& domain, st
     out.rules.add(domain, std::move(rule));
   }
   return out;
+}
+
+std::string say_renamings(std::span<const CategoryMatch> matches) {
+  if (matches.empty()) return "";
+  std::vector<std::string> pairs;
+  for (const CategoryMatch& m : matches)
+    pairs.push_back("the " + language::spoken_category(m.world) + " for the " + language::spoken_category(m.learned));
+  return "Here I take " + language::list_phrase(pairs) + ".";
+}
+
+std::string ask_analogy(const World& world, ObjectId object, const Analogy& analogy) {
+  return "Does " + language::spoken_name_and_location(world, object) + " go like the " +
+         language::spoken_category(analogy.learned_as) + ": " + language::goal_outcome(world, object, analogy.goal, "it") +
+         "?";
+}
+
+std::string doubtful_analogy(const Analogy& analogy) {
+  char confidence[16];
+  std::snprintf(confidence, sizeof confidence, "%.2f", analogy.confidence);
+  return "it may go like the " + language::spoken_category(analogy.learned_as) + ", but I am not sure enough (confidence " +
+         confidence + ", below " + std::to_string(kAdoptAnalogyAt).substr(0, 3) + ")";
 }
 
 KnowledgeTransfer::KnowledgeTransfer(Knowledge& knowledge, const World& world, const language::Lexicon& lexicon)

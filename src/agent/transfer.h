@@ -93,6 +93,21 @@ inline constexpr int kMaxAnalogyDistance = 2;
 // left, and reported as needing help.
 inline constexpr double kAdoptAnalogyAt = 0.5;
 
+// What the agent says on meeting a world whose words differ: "Here I take
+// the refrigerator for the fridge and the trash can for the garbage." ""
+// when nothing was renamed.
+std::string say_renamings(std::span<const CategoryMatch> matches);
+
+// The yes/no question that proposes an analogy to the teacher: "Does the
+// cream go like the half-and-half: in the fridge, and the fridge ends
+// closed?"
+std::string ask_analogy(const World& world, ObjectId object, const Analogy& analogy);
+
+// Why the agent, alone, did not adopt an analogy (Analogy::confidence below
+// kAdoptAnalogyAt), for the report's help list: "it may go like the
+// half-and-half, but I am not sure enough (confidence 0.33)".
+std::string doubtful_analogy(const Analogy& analogy);
+
 // The agent's view of its knowledge in one world, for one session.
 class KnowledgeTransfer {
  public:

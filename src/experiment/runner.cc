@@ -100,6 +100,7 @@ std::string results_json(const std::vector<ConditionResult>& results) {
                                  {"llm_calls", r.llm_calls},
                                  {"llm_tokens", r.llm_tokens},
                                  {"search_nodes", r.search_nodes},
+                                 {"transfer", nlohmann::json{{"renamed", r.report.renamed}, {"analogies", r.report.analogies}}},
                                  {"wall_ms", r.wall_ms}});
   return dump_json(all, 2);
 }

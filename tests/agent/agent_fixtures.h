@@ -81,7 +81,7 @@ inline CallbackInstructor::Reply replies(std::vector<std::string> lines) {
   };
 }
 
-// One learning run from empty knowledge with the simulated instructor.
+// One learning run with the simulated instructor.
 struct LearningRun {
   Result<AgentReport> report = make_error(ErrorCode::kCancelled, "not run");
   DialogueCounts counts;
@@ -107,15 +107,16 @@ inline std::unique_ptr<LlmAdvisor> corpus_advisor() {
   return std::make_unique<LlmAdvisor>(std::move(*client), std::move(*templates));
 }
 
+// `start`: what the agent knows before (empty by default).
 inline LearningRun learn(const Scenario& scenario, std::string_view condition_name, LlmAdvisor* llm = nullptr,
-                         KnowledgeStore* store = nullptr) {
+                         KnowledgeStore* store = nullptr, Knowledge start = {}) {
   LearningRun run;
   auto condition = parse_condition(condition_name);
   EXPECT_TRUE(condition.has_value());
   if (!condition) return run;
   AgentOptions options;
   options.condition = *condition;
-  TaskLearningAgent agent(options, Knowledge{}, Understanding(), store, llm);
+  TaskLearningAgent agent(options, std::move(start), Understanding(), store, llm);
   Simulator simulator(scenario.world);
   SimulatedInstructor simulated(scenario);
   RecordingInstructor instructor(simulated);

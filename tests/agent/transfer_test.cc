@@ -191,5 +191,94 @@ TEST(Analogy, OnlyKnowledgeBroughtIntoTheSession) {
   EXPECT_FALSE(transfer.analogy(kitchen.world, GoalKey{"tidy kitchen", "store", "mug", "counter"}, mug).has_value());
 }
 
+
+// --- The agent meeting another world ----------------------------------------
+
+namespace {
+
+const ObjectReport* report_for(const AgentReport& report, std::string_view object) {
+  for (const ObjectReport& o : report.objects)
+    if (o.object == object) return &o;
+  return nullptr;
+}
+
+}  // namespace
+
+// `run` in the renamed kitchen with what was learned in the kitchen: the
+// task, goals and rules apply under the world's words; a near kind in the
+// same subtask is adopted by analogy; a farther one is left as needing help.
+TEST(TransferInTheAgent, PerformsTheRenamedKitchenWithTheKitchensKnowledge) {
+  ASSERT_TRUE(lexicon().has_wordnet());
+  Scenario renamed = testing::load_or_die(testing::source_path("data/scenarios/tidy-kitchen-renamed.yaml"));
+  AgentOptions options;
+  options.condition = Condition{"knowledge-only", false, 0, false};
+  TaskLearningAgent agent(options, kitchen_knowledge(), Understanding(), nullptr, nullptr);
+  Simulator simulator(renamed.world);
+  auto report = agent.perform(simulator, "tidy kitchen");
+  ASSERT_TRUE(report.has_value()) << report.error().describe();
+  EXPECT_THAT(report->renamed, ::testing::Contains(HasSubstr("took the refrigerator for the fridge")));
+  // The task structure in the world's words.
+  const TaskKnowledge* task = agent.knowledge().find_task("tidy kitchen");
+  ASSERT_NE(task, nullptr);
+  EXPECT_EQ(task->subtasks.front().place_category, "dining-table");
+  // A synonym's goal, from memory.
+  const ObjectReport* catsup = report_for(*report, "catsup1");
+  ASSERT_NE(catsup, nullptr);
+  EXPECT_EQ(catsup->goal_source, "memory");
+  EXPECT_TRUE(catsup->achieved);
+  EXPECT_EQ(catsup->goal, "(and (in catsup1 refrigerator1) (closed refrigerator1))");
+  // Saltines are crackers (distance 1, the same subtask): adopted.
+  const ObjectReport* saltines = report_for(*report, "saltines1");
+  ASSERT_NE(saltines, nullptr);
+  EXPECT_EQ(saltines->goal_source, "analogy");
+  EXPECT_TRUE(saltines->achieved);
+  EXPECT_THAT(report->analogies, ::testing::Contains(HasSubstr("the goal of the crackers for saltines1")));
+  // Cream and half-and-half are sisters (0.33): not adopted alone.
+  const ObjectReport* cream = report_for(*report, "cream1");
+  ASSERT_NE(cream, nullptr);
+  EXPECT_FALSE(cream->achieved);
+  EXPECT_THAT(report->help_needed,
+              ::testing::Contains(::testing::AllOf(HasSubstr("the cream"), HasSubstr("like the half and half"))));
+}
+
+// Teaching the renamed kitchen to an agent that knows the kitchen: it asks
+// only what its knowledge does not answer, and proposes analogies as yes/no
+// questions.
+TEST(TransferInTheAgent, TheTeacherConfirmsAnalogiesAndTeachesTheRest) {
+  Scenario renamed = testing::load_or_die(testing::source_path("data/scenarios/tidy-kitchen-renamed.yaml"));
+  testing::LearningRun scratch = testing::learn(renamed, "inst+search4");
+  testing::LearningRun carried = testing::learn(renamed, "inst+search4", nullptr, nullptr, kitchen_knowledge());
+  ASSERT_TRUE(scratch.report.has_value());
+  ASSERT_TRUE(carried.report.has_value()) << carried.report.error().describe();
+  EXPECT_EQ(scratch.achieved, scratch.total);
+  EXPECT_EQ(carried.achieved, carried.total);
+  EXPECT_LT(carried.counts.instructions, scratch.counts.instructions);
+  EXPECT_LT(carried.counts.words, scratch.counts.words);
+  EXPECT_GT(carried.counts.yes, 0);
+  EXPECT_EQ(scratch.counts.yes_no, 0);
+  EXPECT_THAT(carried.transcript_text, ::testing::StartsWith("Agent: Here I take the coffee mill for the coffee grinder"));
+  EXPECT_THAT(carried.transcript_text, HasSubstr(", the refrigerator for the fridge, the trash can for the garbage,"));
+  EXPECT_THAT(carried.transcript_text, HasSubstr("Does the cream on the sideboard go like the half and half: it goes in "
+                                                 "the refrigerator, and the refrigerator ends closed?\nInstructor: yes."));
+  // The confirmed analogy is learned, in this world's words, with its source.
+  const GoalKnowledge* cream = carried.knowledge.goals.find(GoalKey{"tidy kitchen", "store", "cream", "sideboard"});
+  ASSERT_NE(cream, nullptr);
+  EXPECT_THAT(cream->provenance.source, HasSubstr("analogy: like the half and half (confirmed)"));
+}
+
+// Where the nearest kind went elsewhere in its own task, the teacher says
+// no, and the agent asks for the goal as it would have.
+TEST(TransferInTheAgent, ANoFallsBackToAsking) {
+  Scenario groceries = testing::load_or_die(testing::source_path("data/scenarios/unpack-groceries.yaml"));
+  testing::LearningRun carried = testing::learn(groceries, "inst+search4", nullptr, nullptr, kitchen_knowledge());
+  ASSERT_TRUE(carried.report.has_value()) << carried.report.error().describe();
+  EXPECT_EQ(carried.achieved, carried.total);
+  EXPECT_GT(carried.counts.yes, 0);
+  EXPECT_LT(carried.counts.yes, carried.counts.yes_no);  // the kitchen's soda can went to the recycling bin
+  const GoalKnowledge* soda = carried.knowledge.goals.find(GoalKey{"unpack groceries", "unload", "soda-can", "bag"});
+  ASSERT_NE(soda, nullptr);
+  EXPECT_THAT(soda->provenance.source, ::testing::StartsWith("instructor"));
+}
+
 }  // namespace
 }  // namespace apprentice
