@@ -59,13 +59,6 @@ Status write_file(const std::filesystem::path& path, const std::string& text) {
   return {};
 }
 
-// The knowledge in a store, read once; the store is left as it was.
-Result<Knowledge> load_knowledge_copy(const std::filesystem::path& path, const Domain& domain) {
-  auto store = KnowledgeStore::open(path, StoreAccess::kReadOnly);
-  if (!store) return tl::unexpected(store.error());
-  return store->load(domain);
-}
-
 }  // namespace
 
 // Printed under the table: what its columns mean where that is not plain.
@@ -105,7 +98,7 @@ CommandResult run_experiment(const ExperimentOptions& options, const std::string
   if (!generalization) return tl::unexpected(generalization.error());
   ExperimentRequest request;
   if (!options.knowledge_in.empty()) {
-    auto knowledge = load_knowledge_copy(options.knowledge_in, *scenario->world.domain);
+    auto knowledge = load_knowledge_read_only(options.knowledge_in, *scenario->world.domain);
     if (!knowledge) return tl::unexpected(knowledge.error());
     request.options.knowledge_in = std::move(*knowledge);
   }

@@ -2,6 +2,7 @@
 // `apprentice experiment --json` (one implementation: experiment/runner.h).
 #include "bindings.h"
 #include "experiment/runner.h"
+#include "knowledge/store.h"
 
 namespace apprentice::python {
 
@@ -12,10 +13,11 @@ namespace {
 std::string experiment_json(const py::object& scenario_path, const std::vector<std::string>& conditions,
                             const std::optional<std::string>& llm, const std::string& generalization,
                             const py::object& knowledge_in, bool use_rules) {
-  if (!knowledge_in.is_none())
-    throw py::value_error("knowledge_in is not supported by this build yet (experiment --knowledge-in)");
   ScenarioHandle scenario = scenario_from(scenario_path);
   ExperimentRequest request;
+  if (!knowledge_in.is_none())
+    request.options.knowledge_in =
+        unwrap(load_knowledge_read_only(py::cast<std::string>(knowledge_in), *scenario.scenario->world.domain));
   request.conditions = conditions;
   request.llm_spec = llm::resolve_llm_spec(llm.value_or(""));
   request.options.generalization = unwrap(parse_generalization(generalization));

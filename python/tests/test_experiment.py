@@ -60,3 +60,26 @@ def test_paper_rows_are_table_3():
     row = apprentice.paper_row("inst+search4+llm")
     assert (row["instructions"], row["words"], row["yes_no"], row["relevance"]) == (70, 360, 43, 30.2)
     assert apprentice.paper_row("inst+search3") is None
+
+
+def test_knowledge_in_starts_every_condition_from_a_store(tmp_path):
+    # The CLI keeps what inst+search4 learned; starting from it, the same
+    # condition needs fewer instructions and still tidies everything.
+    subprocess.run([str(BINARY), "experiment", "--scenario", str(KITCHEN), "--conditions", "inst+search4",
+                    "--knowledge-out", str(tmp_path), "--quiet"], check=True, capture_output=True)
+    store = tmp_path / "inst+search4.sqlite"
+    fresh = apprentice.experiment(KITCHEN, conditions=["inst+search4"])[0]
+    taught = apprentice.experiment(KITCHEN, conditions=["inst+search4"], knowledge_in=store)[0]
+    assert taught["completion_rate"] == 100.0
+    assert taught["instructions"] < fresh["instructions"]
+    cli = json.loads(subprocess.run([str(BINARY), "experiment", "--scenario", str(KITCHEN), "--conditions",
+                                     "inst+search4", "--knowledge-in", str(store), "--json"], check=True,
+                                    capture_output=True, text=True).stdout)[0]
+    assert (taught["instructions"], taught["words"]) == (cli["instructions"], cli["words"])
+
+
+def test_knowledge_in_that_is_not_a_store_raises_apprentice_error(tmp_path):
+    broken = tmp_path / "not-a-store.sqlite"
+    broken.write_text("this is not a knowledge store\n")
+    with pytest.raises(apprentice.Error):
+        apprentice.experiment(KITCHEN, conditions=["inst+search4"], knowledge_in=broken)

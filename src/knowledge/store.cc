@@ -559,4 +559,10 @@ Result<Knowledge> KnowledgeStore::load(const Domain& domain) const {
   return knowledge;
 }
 
+Result<Knowledge> load_knowledge_read_only(const std::filesystem::path& path, const Domain& domain) {
+  auto store = KnowledgeStore::open(path, StoreAccess::kReadOnly);
+  if (!store) return tl::unexpected(store.error());
+  return store->load(domain);
+}
+
 }  // namespace apprentice

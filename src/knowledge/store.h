@@ -112,4 +112,9 @@ class KnowledgeStore {
   std::unique_ptr<SQLite::Database> db_;
 };
 
+// The knowledge in the store at `path`, read once and read-only (what
+// `experiment --knowledge-in` and the Python module's knowledge_in start
+// from); the store is left as it was. Errors: those of open and load.
+Result<Knowledge> load_knowledge_read_only(const std::filesystem::path& path, const Domain& domain);
+
 }  // namespace apprentice
