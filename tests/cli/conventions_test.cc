@@ -123,6 +123,15 @@ TEST_F(Conventions, RunNamesTheStoreAndTheTasksItHolds) {
   EXPECT_THAT(r.err, Not(HasSubstr("no task 'clean house' has been learned\n")));
 }
 
+TEST_F(Conventions, APlanThatCannotBeFoundSaysWhatToTry) {
+  Invocation lidless = run({"plan", "--scenario", kitchen(), "--goal", "(closed recycling-bin1)"});
+  EXPECT_EQ(lidless.exit_code, 1);
+  EXPECT_THAT(lidless.err, HasSubstr("apprentice: no sequence of actions reaches the goal from this state"));
+  Invocation shallow = run({"plan", "--scenario", kitchen(), "--goal", "(in ketchup1 fridge1)", "--depth", "1"});
+  EXPECT_EQ(shallow.exit_code, 1);
+  EXPECT_THAT(shallow.err, HasSubstr("try a larger --depth"));
+}
+
 TEST_F(Conventions, EveryErrorHasThePrefix) {
   for (const std::vector<std::string>& args :
        {std::vector<std::string>{}, {"world"}, {"world", "--scenario"}, {"plan", "--depth", "x"}, {"frob"},
