@@ -21,12 +21,14 @@ trials="${1:-100}"
 scenario="$root/data/scenarios/tidy-kitchen.yaml"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
-run() { "$app" experiment --scenario "$scenario" --conditions instruction --knowledge-out "$1" -q >/dev/null 2>"$2"; }
+# exec: a background `run` is then the apprentice process itself, which the
+# kill must reach (not a subshell waiting for it).
+run() { exec "$app" experiment --scenario "$scenario" --conditions instruction --knowledge-out "$1" -q >/dev/null 2>"$2"; }
 goals() { "$app" knowledge --knowledge "$1" --json 2>"$work/knowledge.err" |
-  /usr/bin/python3 -c 'import json,sys; print(len(json.load(sys.stdin)["goals"]))'; }
+  /usr/bin/python3 -c 'import json,sys; print(len(json.load(sys.stdin)["goals"]))' 2>/dev/null; }
 
 start=$(date +%s%N)
-run "$work/reference" "$work/reference.err"
+(run "$work/reference" "$work/reference.err")
 run_us=$(( ($(date +%s%N) - start) / 1000 ))
 [[ "$(goals "$work/reference/instruction.sqlite")" == 26 ]] || { echo "kill-test: a complete run did not store 26 goals" >&2; exit 2; }
 echo "kill-test: one run takes $((run_us / 1000)) ms; $trials trials"
@@ -36,9 +38,9 @@ RANDOM=11
 for ((t = 1; t <= trials; ++t)); do
   dir="$work/t$t"
   delay_us=$(( (RANDOM * 32768 + RANDOM) % (run_us + 1) ))
-  run "$dir" "$work/first.err" & first=$!
+  (run "$dir" "$work/first.err") & first=$!
   sleep 0.0$(( RANDOM % 10 ))
-  run "$dir" "$work/second.err" & second=$!
+  (run "$dir" "$work/second.err") & second=$!
   sleep "$(printf '%d.%06d' $((delay_us / 1000000)) $((delay_us % 1000000)))"
   kill -KILL "$first" 2>/dev/null || true
   set +e

@@ -317,11 +317,11 @@ CommandResult run_run(const RunOptions& options, std::ostream& out) {
   if (!store) return tl::unexpected(store.error());
   auto knowledge = store->load(*scenario->world.domain);
   if (!knowledge) return tl::unexpected(knowledge.error());
+  if (auto missing = unknown_task(*knowledge, options.task, options.knowledge)) return tl::unexpected(*missing);
   AgentOptions agent_options;
   agent_options.condition = Condition{"knowledge-only", false, 0, false};
   TaskLearningAgent agent(agent_options, std::move(*knowledge), Understanding(), nullptr, nullptr);
   Simulator simulator(scenario->world);
-  if (auto missing = unknown_task(*knowledge, options.task, options.knowledge)) return tl::unexpected(*missing);
   auto report = agent.perform(simulator, options.task);
   if (!report) return tl::unexpected(report.error());
   int achieved = count_achieved_assertions(*scenario, simulator.state());

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <iostream>
 #include <map>
 #include <ostream>
 
@@ -145,6 +146,15 @@ CommandResult run_plan(const PlanOptions& options, std::ostream& out, std::ostre
     }
     out << s.relevant_objects << " relevant objects, " << s.ground_actions << " ground actions, " << s.elapsed_ms
         << " ms\n";
+  }
+  if (result.status == SearchStatus::kExhausted) {
+    if (greedy)
+      progress_out << "apprentice: no sequence of actions reaches the goal from this state: some part of it can "
+                   "never hold here\n";
+    else
+      progress_out << "apprentice: no plan of at most " << *options.depth
+                << " steps reaches the goal; try a larger --depth, or leave --depth out for greedy best-first "
+                   "search\n";
   }
   return result.status == SearchStatus::kSolved ? Outcome::kSuccess : Outcome::kGoalNotReached;
 }

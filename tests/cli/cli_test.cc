@@ -61,7 +61,9 @@ TEST_F(Cli, PlanWithDepthTwoIsExhaustedAndExitsOne) {
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_THAT(r.out, StartsWith(";; status exhausted, 0 steps, "));
   EXPECT_THAT(r.out, HasSubstr("depth limit 2"));
-  EXPECT_EQ(r.err, "");
+  EXPECT_EQ(r.err,
+            "apprentice: no plan of at most 2 steps reaches the goal; try a larger --depth, or leave --depth out "
+            "for greedy best-first search\n");
 }
 
 TEST_F(Cli, PlanWithATinyNodeBudgetStopsAndExitsOne) {

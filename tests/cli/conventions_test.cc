@@ -120,7 +120,17 @@ TEST_F(Conventions, RunNamesTheStoreAndTheTasksItHolds) {
   Invocation r = run({"run", "--scenario", kitchen(), "--knowledge", store, "--task", "clean house"});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_THAT(r.err, HasSubstr(store));
-  EXPECT_THAT(r.err, Not(HasSubstr("no task 'clean house' has been learned\n")));
+  EXPECT_THAT(r.err, HasSubstr("no task \"clean house\" has been learned"));
+  EXPECT_THAT(r.err, HasSubstr("holds 1 task: \"tidy kitchen\""));
+}
+
+TEST_F(Conventions, APlanThatCannotBeFoundSaysWhatToTry) {
+  Invocation lidless = run({"plan", "--scenario", kitchen(), "--goal", "(closed recycling-bin1)"});
+  EXPECT_EQ(lidless.exit_code, 1);
+  EXPECT_THAT(lidless.err, HasSubstr("apprentice: no sequence of actions reaches the goal from this state"));
+  Invocation shallow = run({"plan", "--scenario", kitchen(), "--goal", "(in ketchup1 fridge1)", "--depth", "1"});
+  EXPECT_EQ(shallow.exit_code, 1);
+  EXPECT_THAT(shallow.err, HasSubstr("try a larger --depth"));
 }
 
 TEST_F(Conventions, EveryErrorHasThePrefix) {
