@@ -65,7 +65,7 @@ TEST(LlmGoals, AfterANoTheModelIsAskedAgainWithTheRejectedAnswer) {
   EXPECT_TRUE(reprompted);
   // Objects the model knows nothing usable about were re-asked once, with
   // what it said listed, then described by the instructor.
-  EXPECT_GT(occurrences(result.transcript, "What is the next goal or subtask of clear?\nInstructor: If the object is"), 0);
+  EXPECT_GT(occurrences(result.transcript, " go?\nInstructor: "), 0);  // "Where should ... go?"
 }
 
 TEST(LlmGoals, WithoutAnInstructorAnUnusableAnswerIsFollowedByARePrompt) {
