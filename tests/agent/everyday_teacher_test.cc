@@ -54,11 +54,11 @@ class EverydayTeacher {
     if (subtask_ >= subtasks.size()) return "That's all.";
     const Subtask& s = subtasks[subtask_];
     const World& w = scenario_.world;
-    std::string place = language::spoken_name(w, s.place);
+    std::string place = language::spoken_name(w, s.places.front());
     std::string reply;
     if (subtask_ == 0) reply = "First, " + s.verb + " " + place + ".";
     else if (subtask_ % 2 == 1)
-      reply = "Then " + s.verb + " the things " + std::string(language::relation_word(w, s.place)) + " " + place + ".";
+      reply = "Then " + s.verb + " the things " + std::string(language::relation_word(w, s.places.front())) + " " + place + ".";
     else
       reply = "Now " + s.verb + " " + place + ".";
     ++subtask_;
@@ -69,7 +69,7 @@ class EverydayTeacher {
     const World& w = scenario_.world;
     const IntentEntry* wanted = nullptr;
     for (const Subtask& s : scenario_.task.subtasks) {
-      if (language::spoken_name(w, s.place) != "the " + place_words) continue;
+      if (language::spoken_name(w, s.places.front()) != "the " + place_words) continue;
       for (const IntentEntry& e : scenario_.intent)
         if (e.subtask == s.verb && language::spoken_category(e.category) == thing) wanted = &e;
     }
@@ -77,7 +77,7 @@ class EverydayTeacher {
       ADD_FAILURE() << "the teacher wants nothing for the " << thing << " " << place_words;
       return "";
     }
-    std::string r = language::spoken_category(w.universe->info(wanted->receptacle).category);
+    std::string r = language::spoken_category(w.universe->info(wanted->place).category);
     int form = next_form_++;
     if (wanted->closed) {
       switch (form % 4) {

@@ -44,11 +44,11 @@ Instructor: Repeat the following tasks while an object is on the table.
 Agent: So I repeat the next steps while something is on the table.
 Agent: What should I do next to tidy the kitchen?
 Instructor: Clear an object that is on the tabel.
-Agent: I do not know the word 'tabel'. You could say, for example, "Repeat the following tasks while an object is on the table." or "Clear an object that is on the table."
+Agent: I do not know the word 'tabel'. You could say, for example, "clear the table" or "that's all".
 Agent: What should I do next to tidy the kitchen?
 Instructor: help
 Agent: I asked: What should I do next to tidy the kitchen?
-Agent: Tell me the next step of the task: a subtask with the place it is about, or that the task is done, for example "Repeat the following tasks while an object is on the table.", "Clear an object that is on the table." or "You are done."
+Agent: Tell me the next step of the task: a subtask with the place it is about, or that the task is done, for example "clear the table" or "that's all".
 Agent: You can also type: help; status (what I see and what I have learned); undo (forget what your last answer taught me); forget <kind of object> (forget where that kind of thing goes); quit, or Ctrl-D (stop; what I learned is kept).
 Agent: What should I do next to tidy the kitchen?
 Instructor: Clear an object that is on the table.
