@@ -265,7 +265,7 @@ int run(int argc, char** argv) {
                             "Read the sentence as a reply to a question: task, task-step, subtask-end, goal, action, "
                             "yes-no or which");
   interpret_cmd->add_option("--recent", interpret_recent, "With --asked: the place named last (an id)");
-  interpret_cmd->add_option("--choices", interpret.choices, "With --asked which: the ids offered")->delimiter(',');
+  interpret_cmd->add_option("--choices", interpret.choices, "With --asked which: the ids offered")->delimiter(',')->allow_extra_args(false);
   interpret_cmd->add_option("sentence", interpret_sentence, "The sentence to interpret");
   on_run(interpret_cmd, [&] {
     if (!interpret_asked.empty()) interpret.asked = interpret_asked;

@@ -173,6 +173,11 @@ std::vector<std::string> Lexicon::verb_lemmas(std::string_view word) const {
   return wordnet_->verb_base_forms(spaced(word));
 }
 
+std::vector<std::string> Lexicon::adjective_lemmas(std::string_view word) const {
+  if (!wordnet_) return {};
+  return wordnet_->adjective_base_forms(spaced(word));
+}
+
 bool Lexicon::has_verb(std::string_view word) const { return wordnet_ && wordnet_->has_verb(spaced(word)); }
 
 bool Lexicon::has_noun(std::string_view word) const { return wordnet_ && wordnet_->has_noun(spaced(word)); }

@@ -76,6 +76,9 @@ class Lexicon {
   // Verb base forms of an inflected word ("tidying" -> {"tidy"}, "threw"
   // -> {"throw"}); {} for a base form, an unknown word, or without WordNet.
   std::vector<std::string> verb_lemmas(std::string_view word) const;
+  // Adjective base forms of a comparative or superlative ("smaller" ->
+  // {"small"}); {} for a base form, an unknown word, or without WordNet.
+  std::vector<std::string> adjective_lemmas(std::string_view word) const;
   // Whether WordNet has the word (a base form) as a verb / as a noun.
   bool has_verb(std::string_view word) const;
   bool has_noun(std::string_view word) const;

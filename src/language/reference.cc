@@ -123,23 +123,30 @@ GroundingFailure unresolved(const std::string& phrase, const ReferenceContext& c
   return {FailureKind::kUngroundedObject, phrase, not_seen_message(phrase, context.world)};
 }
 
-// Words before the rest of a phrase that are properties of objects here:
-// "top drawer" -> {"top"} and "drawer".
-std::pair<std::vector<std::string>, std::string> split_properties(const std::string& phrase, const World& world) {
-  std::set<std::string> known;
-  for (const ObjectInfo& info : world.universe->objects())
-    for (const std::string& property : info.properties) known.insert(property);
+bool has_property(const ObjectInfo& info, const std::string& word, const Lexicon& lexicon) {
+  return std::any_of(info.properties.begin(), info.properties.end(),
+                     [&](const std::string& p) { return says_property(word, p, lexicon); });
+}
+
+// Words before the rest of a phrase that name properties of objects here:
+// "top drawer" -> {"top"} and "drawer", "lower drawer" -> {"lower"} and
+// "drawer".
+std::pair<std::vector<std::string>, std::string> split_properties(const std::string& phrase, const World& world,
+                                                                  const Lexicon& lexicon) {
   std::vector<std::string> words = split_words(phrase);
+  auto is_property_here = [&](const std::string& word) {
+    const auto& objects = world.universe->objects();
+    return std::any_of(objects.begin(), objects.end(),
+                       [&](const ObjectInfo& info) { return has_property(info, word, lexicon); });
+  };
   std::vector<std::string> properties;
   std::size_t i = 0;
-  while (i + 1 < words.size() && known.count(words[i])) properties.push_back(words[i++]);
+  while (i + 1 < words.size() && is_property_here(words[i])) properties.push_back(words[i++]);
   return {properties, join(std::vector<std::string>(words.begin() + static_cast<std::ptrdiff_t>(i), words.end()), " ")};
 }
 
-bool has_properties(const ObjectInfo& info, const std::vector<std::string>& properties) {
-  return std::all_of(properties.begin(), properties.end(), [&](const std::string& p) {
-    return std::find(info.properties.begin(), info.properties.end(), p) != info.properties.end();
-  });
+bool has_properties(const ObjectInfo& info, const std::vector<std::string>& said, const Lexicon& lexicon) {
+  return std::all_of(said.begin(), said.end(), [&](const std::string& w) { return has_property(info, w, lexicon); });
 }
 
 // A word's noun forms: itself, WordNet's base forms, and a plain singular.
@@ -172,19 +179,26 @@ std::optional<Candidates> by_parts(const std::string& phrase, Role role, const R
   for (const ObjectInfo& info : universe.objects()) {
     if (!fits(info, role)) continue;
     std::vector<std::string> parts = name_parts(info.category);
-    // Parts run together count too: "poptarts" is pop + tart.
+    // Parts run together count too: "poptarts" is pop + tart; and so do
+    // their base forms: "granola bar" is part of "granola-bars".
     std::vector<std::string> pieces = parts;
     for (std::size_t i = 0; i < parts.size(); ++i) {
       std::string joined = parts[i];
       for (std::size_t j = i + 1; j < parts.size(); ++j) pieces.push_back(joined += parts[j]);
     }
+    for (const std::string& part : parts)
+      for (std::string& form : noun_forms(part, context.lexicon)) pieces.push_back(std::move(form));
     bool all_in = std::all_of(forms.begin(), forms.end(), [&](const std::vector<std::string>& f) {
       return std::any_of(f.begin(), f.end(), [&](const std::string& form) {
         return std::find(pieces.begin(), pieces.end(), form) != pieces.end();
       });
     });
     if (all_in) within.insert(info.category);
-    if (!all_in && parts.size() < forms.size() && std::all_of(parts.begin(), parts.end(), said)) {
+    auto part_said = [&](const std::string& part) {
+      std::vector<std::string> part_forms = noun_forms(part, context.lexicon);
+      return std::any_of(part_forms.begin(), part_forms.end(), said);
+    };
+    if (!all_in && parts.size() < forms.size() && std::all_of(parts.begin(), parts.end(), part_said)) {
       if (parts.size() > longest) containing.clear();
       if (parts.size() >= longest) {
         longest = parts.size();
@@ -236,16 +250,26 @@ std::variant<Candidates, GroundingFailure> candidates(const NounPhrase& np, Role
   if (np.words.size() == 1)
     if (auto id = context.world.universe->find(phrase))
       return Candidates{{*id}, ReferenceMethod::kCategory, "'" + phrase + "' is the id of " + phrase};
-  if (auto named = by_name(phrase, role, context.world, ReferenceMethod::kCategory, "")) return *named;
+  // A whole name wins, unless it names only things of the other role and
+  // the phrase also reads as properties of things of this one: "the paper
+  // bag" a thing is taken out of is the bag with the property paper, not
+  // the paper-bag lying on the counter.
+  std::optional<Candidates> whole = by_name(phrase, role, context.world, ReferenceMethod::kCategory, "");
+  auto fits_role = [&](const std::vector<ObjectId>& objects) {
+    return std::any_of(objects.begin(), objects.end(),
+                       [&](ObjectId id) { return fits(context.world.universe->info(id), role); });
+  };
+  if (whole && (role == Role::kAny || fits_role(whole->objects))) return *whole;
   // Properties tell look-alikes apart: "the top drawer" is the drawer with
   // the property "top".
-  if (auto [properties, rest] = split_properties(phrase, context.world); !properties.empty()) {
+  if (auto [properties, rest] = split_properties(phrase, context.world, context.lexicon); !properties.empty()) {
     NounPhrase head{"", split_words(rest)};
     auto found = candidates(head, role, context);
     if (auto* c = std::get_if<Candidates>(&found)) {
       std::vector<ObjectId> kept;
       for (ObjectId id : c->objects)
-        if (has_properties(context.world.universe->info(id), properties)) kept.push_back(id);
+        if (has_properties(context.world.universe->info(id), properties, context.lexicon)) kept.push_back(id);
+      if (whole && !fits_role(kept)) return *whole;
       if (kept.empty())
         return GroundingFailure{FailureKind::kUngroundedObject, phrase, not_seen_message(phrase, context.world)};
       c->objects = std::move(kept);
@@ -253,6 +277,7 @@ std::variant<Candidates, GroundingFailure> candidates(const NounPhrase& np, Role
       return *c;
     }
   }
+  if (whole) return *whole;
   for (const std::string& form : context.lexicon.lemmas(phrase)) {
     std::string reason = "WordNet's morphology gives the base form '" + form + "'";
     if (auto named = by_name(form, role, context.world, ReferenceMethod::kMorphology, reason)) return *named;
@@ -293,6 +318,31 @@ std::optional<ObjectId> only_one_at(const ReferenceContext& context, const std::
 std::variant<CandidateSet, GroundingFailure> candidates_for(const NounPhrase& phrase, Role role,
                                                             const ReferenceContext& context) {
   return candidates(phrase, role, context);
+}
+
+bool says_property(std::string_view word, std::string_view property, const Lexicon& lexicon) {
+  if (word.empty() || property.empty()) return false;
+  if (word == property) return true;
+  // The ends of the scales people tell look-alikes apart by, in base forms.
+  static const std::vector<std::vector<std::string_view>> kSameEnd{
+      {"top", "upper", "high", "uppermost", "topmost"},
+      {"bottom", "low", "lowermost", "bottommost", "nether"},
+      {"big", "large", "huge", "bigger"},
+      {"small", "little", "tiny", "smaller"},
+      {"middle", "center", "centre", "central", "mid"},
+      {"back", "rear", "hind", "behind"},
+      {"left", "leftmost", "lefthand"},
+      {"right", "rightmost", "righthand"}};
+  std::vector<std::string> forms{std::string(word)};
+  for (std::string& base : lexicon.adjective_lemmas(word)) forms.push_back(std::move(base));
+  for (const std::string& form : forms) {
+    if (form == property) return true;
+    for (const auto& end : kSameEnd) {
+      bool has_form = std::find(end.begin(), end.end(), form) != end.end();
+      if (has_form && std::find(end.begin(), end.end(), property) != end.end()) return true;
+    }
+  }
+  return false;
 }
 
 std::string not_seen_message(std::string_view phrase, const World& world) {

@@ -72,6 +72,13 @@ std::variant<CandidateSet, GroundingFailure> candidates_for(const NounPhrase& ph
 // names here, "I don't see a glass here; do you mean the glass tumbler?".
 std::string not_seen_message(std::string_view phrase, const World& world);
 
+// Whether a word a person says names the property `property` of a thing
+// (ObjectInfo::properties): the word itself; its adjective base form
+// ("smaller" for small, "lower" for low); or a word for the same end of
+// one scale of position or size ("upper" and "higher" for top, "lower"
+// for bottom, "large" for big, "little" for small).
+bool says_property(std::string_view word, std::string_view property, const Lexicon& lexicon);
+
 Resolution resolve(const NounPhrase& phrase, Role role, const ReferenceContext& context);
 
 // The category a phrase names ("a ketchup" in "If the object is a

@@ -4,6 +4,7 @@
 #include <array>
 #include <utility>
 
+#include "language/reference.h"
 #include "language/utterance.h"
 #include "util/text.h"
 
@@ -415,6 +416,12 @@ ReplyVocabulary::ReplyVocabulary(const Universe& universe, const Lexicon& lexico
   for (std::string_view function : {"in", "on", "and", "of", "the", "a", "an", "to", "with", "at", "from", "is", "for",
                                     "by", "off", "out", "up", "into"})
     names_.erase(std::string(function));
+}
+
+bool ReplyVocabulary::is_property(std::string_view word) const {
+  if (properties_.count(std::string(word))) return true;
+  return std::any_of(properties_.begin(), properties_.end(),
+                     [&](const std::string& p) { return says_property(word, p, lexicon_); });
 }
 
 bool ReplyVocabulary::is_name_word(std::string_view word) const {

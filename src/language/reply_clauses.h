@@ -37,7 +37,9 @@ class ReplyVocabulary {
   const Lexicon& lexicon() const { return lexicon_; }
   // A word of a name here: a category's part, a property, an id (plurals too).
   bool is_name_word(std::string_view word) const;
-  bool is_property(std::string_view word) const { return properties_.count(std::string(word)) > 0; }
+  // A property of something here, or a word for it ("lower" for bottom:
+  // language::says_property).
+  bool is_property(std::string_view word) const;
   // The base form if `word` is a household verb ("threw" -> "throw"), else "".
   std::string household_verb(std::string_view word) const;
   // The base form if WordNet has `word` as a verb ("tidying" -> "tidy"), else "".

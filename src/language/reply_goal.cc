@@ -11,6 +11,7 @@
 #include <algorithm>
 
 #include "language/generation.h"
+#include "language/narration.h"
 #include "language/reply_reading.h"
 #include "language/utterance.h"
 #include "util/text.h"
@@ -338,7 +339,7 @@ Reply read_goal(const ReplyInput& in) {
   for (const Event& e : events) {
     if (e.kind == Event::Kind::kPlace) {
       if (asked && *e.item != *asked) {
-        if (e.item_named) other = e.item_words;
+        if (e.item_named && other.empty()) other = spoken_name(world, *e.item);
         continue;
       }
       if (destination && *destination != *e.place)
@@ -358,8 +359,9 @@ Reply read_goal(const ReplyInput& in) {
   }
   if (!destination) {
     if (!other.empty())
-      return unusable(in, Problem{"I asked about " + asked_noun + ", not the " + other + ". Where should " +
-                                      asked_noun + " go?",
+      return unusable(in, Problem{"That says what becomes of " + other + ", but I asked about " +
+                                      (asked ? spoken_name_and_location(world, *asked) : asked_noun) +
+                                      ". Where should " + asked_noun + " go?",
                                   std::nullopt});
     // A door's state alone is checked first: it may be impossible.
     if (!goal.conjuncts.empty()) {

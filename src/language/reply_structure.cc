@@ -132,7 +132,39 @@ bool proceed_words(const Words& words) {
            {"all", "of", "them"}, {"one", "more"}, {"not", "yet"}, {"not", "done"}, {"not", "finished"},
            {"there", "is", "more"}})
     if (contains(words, phrase)) return true;
+  // "keep clearing", "continue unloading": more of the part under way.
+  for (std::size_t i = 0; i + 1 < words.size(); ++i)
+    if (is_one_of(words[i], {"keep", "continue", "go", "carry"}) && words[i + 1].size() > 5 &&
+        words[i + 1].ends_with("ing"))
+      return true;
   return words.size() == 1 && is_one_of(words[0], {"more", "go", "same"});
+}
+
+// "The first thing is to clear the table", "the last step is unloading
+// the dish rack", "next up is storing ...": a copula after words that only
+// say where in the sequence a part comes. The words after it, or nullopt
+// when the reply has no such frame.
+std::optional<Words> after_sequence_frame(const Words& words) {
+  bool sequence_noun = false;
+  for (std::size_t i = 0; i < words.size(); ++i) {
+    const std::string& w = words[i];
+    if (is_one_of(w, {"thing", "step", "part", "stage", "task", "job", "bit", "subtask", "one", "up"})) {
+      sequence_noun = true;
+      continue;
+    }
+    if (is_copula(w) || w == ",") {
+      if (!sequence_noun || i + 1 >= words.size()) return std::nullopt;
+      std::size_t from = i + 1;
+      while (from < words.size() && is_one_of(words[from], {"to", "that", "we", "you", ","})) ++from;
+      if (from >= words.size()) return std::nullopt;
+      return Words(words.begin() + static_cast<std::ptrdiff_t>(from), words.end());
+    }
+    if (!is_determiner(w) && !ordinal(w) &&
+        !is_one_of(w, {"first", "next", "last", "final", "then", "and", "after", "that", "our", "your", "my",
+                       "second", "third", "fourth", "very", "main", "other"}))
+      return std::nullopt;
+  }
+  return std::nullopt;
 }
 
 // Whether the reply asks for a loop: "repeat this for everything on the
@@ -412,7 +444,9 @@ const std::vector<std::vector<std::string_view>>& yes_phrases() {
       {"agreed"}, {"precisely"}, {"alright"}, {"that", "is", "right"}, {"that", "is", "correct"},
       {"that", "is", "it"}, {"that", "is", "true"}, {"that", "is", "the", "one"}, {"it", "is"}, {"it", "does"},
       {"sure", "thing"}, {"yes", "please"}, {"please"}, {"why", "not"}, {"that", "one"}, {"correct", "answer"},
-      {"that", "is", "fine"}, {"that", "is", "good"}, {"very", "good"}, {"spot", "on"}};
+      {"that", "is", "fine"}, {"that", "is", "good"}, {"very", "good"}, {"spot", "on"}, {"go", "for", "it"},
+      {"do", "that"}, {"that", "will", "do"}, {"i", "agree"}, {"makes", "sense"}, {"that", "makes", "sense"},
+      {"bingo"}, {"you", "are", "right"}, {"right", "on"}, {"please", "go", "ahead"}, {"that", "is", "what", "i", "want"}};
   return kYes;
 }
 
@@ -513,7 +547,13 @@ Reply read_task(const ReplyInput& in) {
   return TaskNamed{name};
 }
 
-Reply read_structure(const ReplyInput& in) { return StructureReader(in).read(); }
+Reply read_structure(const ReplyInput& in) {
+  if (auto rest = after_sequence_frame(in.words)) {
+    ReplyInput inner(in.grounder, in.world, in.context, std::move(*rest));
+    return StructureReader(inner).read();
+  }
+  return StructureReader(in).read();
+}
 
 bool says_finished(const std::vector<std::string>& words, const ReplyInput& in) {
   return finished_words(without_fillers(words, in.vocabulary));

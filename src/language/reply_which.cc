@@ -82,19 +82,24 @@ Reply read_which(const ReplyInput& in) {
   if (content.empty() && excluded.empty())
     return unusable(in, Problem{"Which one? " + say_which_question(world, choices), std::nullopt});
   Resolver resolver(in);
-  // The choices a word fits, by name, property or place; a word the world
-  // knows in other terms ("trash") by what it names; nullopt for a word
-  // that names nothing here ("dirty"), which then says nothing about which.
-  auto fitting = [&](const std::string& word, const std::vector<ObjectId>& among) -> std::optional<std::vector<ObjectId>> {
-    std::vector<ObjectId> fit;
-    for (ObjectId id : among)
-      if (said_for(word, words_for(world, id))) fit.push_back(id);
-    if (!fit.empty()) return fit;
-    auto named = resolver.candidates(Chunk::of_words({word}), Role::kAny);
-    if (!std::holds_alternative<std::vector<ObjectId>>(named))
-      named = resolver.candidates(Chunk::of_words({word}), Role::kPlace);
+  // The choices among `among` that a phrase names, or that are at a place
+  // it names; nullopt when it names nothing here.
+  auto named_among = [&](const std::vector<std::string>& phrase,
+                         const std::vector<ObjectId>& among) -> std::optional<std::vector<ObjectId>> {
+    if (phrase.empty()) return std::nullopt;
+    auto named = resolver.candidates(Chunk::of_words(phrase), Role::kAny);
+    // Places offered are named as places: "the trash can" is the garbage,
+    // though "can" alone names the soda cans.
+    bool offered_places = std::none_of(choices.begin(), choices.end(), [&](ObjectId id) {
+      return world.universe->info(id).kind == ObjectKind::kItem;
+    });
+    if (!std::holds_alternative<std::vector<ObjectId>>(named) || offered_places)
+      if (auto as_place = resolver.candidates(Chunk::of_words(phrase), Role::kPlace);
+          std::holds_alternative<std::vector<ObjectId>>(as_place) || !offered_places)
+        named = std::move(as_place);
     const auto* objects = std::get_if<std::vector<ObjectId>>(&named);
     if (!objects) return std::nullopt;
+    std::vector<ObjectId> fit;
     for (ObjectId id : among) {
       auto where = place_of(world, id);
       bool is = std::find(objects->begin(), objects->end(), id) != objects->end();
@@ -103,6 +108,30 @@ Reply read_which(const ReplyInput& in) {
     }
     return fit;
   };
+  // The choices a word fits, by name, property or place; a word the world
+  // knows in other terms ("trash") by what it names; nullopt for a word
+  // that names nothing here ("dirty"), which then says nothing about which.
+  auto fitting = [&](const std::string& word, const std::vector<ObjectId>& among) -> std::optional<std::vector<ObjectId>> {
+    std::vector<ObjectId> fit;
+    const Lexicon& lexicon = in.grounder.lexicon();
+    for (ObjectId id : among) {
+      const auto& properties = world.universe->info(id).properties;
+      if (said_for(word, words_for(world, id)) ||
+          std::any_of(properties.begin(), properties.end(),
+                      [&](const std::string& p) { return says_property(word, p, lexicon); }))
+        fit.push_back(id);
+    }
+    if (!fit.empty()) return fit;
+    return named_among({word}, among);
+  };
+  // The words together first: "the trash can" names the garbage as a
+  // whole, though "can" alone names the soda cans.
+  if (excluded.empty() && content.size() > 1) {
+    std::vector<std::string> phrase;
+    for (const std::string& w : content)
+      if (!ordinal(w)) phrase.push_back(w);
+    if (auto fit = named_among(phrase, choices); fit && fit->size() == 1) return Chosen{fit->front()};
+  }
   std::vector<ObjectId> kept = choices;
   bool said_something = false;
   for (const std::string& word : excluded) {

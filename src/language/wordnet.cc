@@ -146,6 +146,8 @@ std::vector<std::string> WordNet::noun_base_forms(std::string_view word) const {
 
 std::vector<std::string> WordNet::verb_base_forms(std::string_view word) const { return base_forms(word, VERB); }
 
+std::vector<std::string> WordNet::adjective_base_forms(std::string_view word) const { return base_forms(word, ADJ); }
+
 std::vector<SynsetOffset> WordNet::noun_senses(std::string_view lemma) const {
   if (!usable(lemma)) return {};
   std::lock_guard lock(library().mutex);

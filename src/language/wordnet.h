@@ -53,6 +53,8 @@ class WordNet {
   std::vector<std::string> noun_base_forms(std::string_view word) const;
   // The same for verbs: "tidying" -> {"tidy"}, "threw" -> {"throw"}.
   std::vector<std::string> verb_base_forms(std::string_view word) const;
+  // The same for adjectives: "smaller" -> {"small"}, "lower" -> {"low"}.
+  std::vector<std::string> adjective_base_forms(std::string_view word) const;
   // The noun synsets of an exact lemma ("trash can" or "trash_can"), most
   // frequent sense first; {} if WordNet has no such noun.
   std::vector<SynsetOffset> noun_senses(std::string_view lemma) const;

@@ -262,7 +262,7 @@ TEST(ReplyReasons, PlainEnglish) {
   // A goal about another object is a question back, never that object's goal.
   Reply milk = read_reply(grounder(), kitchen, asking(Asked::kGoal, in(kitchen, "ketchup1")), "the milk goes in the fridge");
   ASSERT_TRUE(std::holds_alternative<Unusable>(milk));
-  EXPECT_EQ(std::get<Unusable>(milk).reason, "I asked about the ketchup, not the milk. Where should the ketchup go?");
+  EXPECT_EQ(std::get<Unusable>(milk).reason, "That says what becomes of the milk, but I asked about the ketchup on the table. Where should the ketchup go?");
 }
 
 TEST(ReplyReasons, YesNoKeepsTheCorrection) {
