@@ -59,8 +59,8 @@ class KitchenTeacher final : public Instructor {
     if (subtask_ >= scenario_.task.subtasks.size()) return language::say_done();
     const Subtask& subtask = scenario_.task.subtasks[subtask_];
     switch (step_++) {
-      case 0: return language::say_repeat_while(world, subtask.place);
-      case 1: return language::say_subtask(subtask.verb, world, subtask.place);
+      case 0: return language::say_repeat_while(world, subtask.places);
+      case 1: return language::say_subtask(subtask.verb, world, subtask.places);
       default:
         ++subtask_;
         step_ = 0;

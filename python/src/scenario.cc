@@ -11,7 +11,7 @@ namespace {
 // A subtask as Python sees it: the verb and the place's id.
 struct SubtaskView {
   std::string verb;   // "clear"
-  std::string place;  // "table1"
+  std::string place;  // "table1", or a kind ("bag") for every place of it
 };
 
 struct TaskView {
@@ -125,7 +125,10 @@ void bind_scenario(py::module_& m) {
           [](const ScenarioHandle& h) {
             TaskView task{h.scenario->task.name, {}};
             for (const Subtask& s : h.scenario->task.subtasks)
-              task.subtasks.push_back(SubtaskView{s.verb, h.scenario->world.universe->name(s.place)});
+              // One place by its id ("table1"); every place of a kind by the kind ("bag"), as in the file.
+              task.subtasks.push_back(SubtaskView{s.verb, s.places.size() == 1
+                                                              ? h.scenario->world.universe->name(s.places.front())
+                                                              : h.scenario->world.universe->info(s.places.front()).category});
             return task;
           },
           "The task the instructor will teach (the agent learns it from the instructor's words).")

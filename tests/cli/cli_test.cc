@@ -114,7 +114,7 @@ TEST_F(Cli, PlanTheWholeIntent) {
   ASSERT_EQ(e.exit_code, 0) << e.err;
   auto domain = read_domain_file(dir_ / "domain.pddl");
   ASSERT_TRUE(domain.has_value()) << domain.error().describe();
-  auto problem = parse_problem(*domain, read_file(dir_ / "problem.pddl"), "problem.pddl");
+  auto problem = parse_problem(*domain, testing::read_text(dir_ / "problem.pddl"), "problem.pddl");
   ASSERT_TRUE(problem.has_value()) << problem.error().describe();
   EXPECT_EQ(problem->goal.literals.size(), 35u);
 }
@@ -141,13 +141,13 @@ TEST_F(Cli, PlanLimitsStopTheSearchAndExitOne) {
 
 TEST_F(Cli, PlanProgressGoesToTheTerminalOnly) {
   if (std::system("command -v script >/dev/null 2>&1") != 0) GTEST_SKIP() << "no script(1) to give a terminal";
-  const std::string plan = shell_quote(APPRENTICE_BINARY) + " plan --scenario " + shell_quote(tidy_kitchen()) +
+  const std::string plan = testing::shell_quote(APPRENTICE_BINARY) + " plan --scenario " + testing::shell_quote(tidy_kitchen()) +
                            " --goal '(and (in ketchup1 fridge1) (in ketchup1 pantry1))' --no-pruning --time-limit 1.6";
   const fs::path out = dir_ / "terminal.txt";
-  const std::string command = "script -qec " + shell_quote(plan) + " /dev/null > " + shell_quote(out.string()) +
+  const std::string command = "script -qec " + testing::shell_quote(plan) + " /dev/null > " + testing::shell_quote(out.string()) +
                               " 2>&1 </dev/null";
   ASSERT_EQ(std::system(command.c_str()) == -1, false);
-  const std::string text = read_file(out);
+  const std::string text = testing::read_text(out);
   EXPECT_THAT(text, HasSubstr("searching: "));
   EXPECT_THAT(text, HasSubstr(" nodes/s), best heuristic value "));
   EXPECT_THAT(text, HasSubstr(";; status budget-exhausted"));
