@@ -11,8 +11,8 @@ namespace {
 // A subtask as Python sees it: the verb and the place's id.
 struct SubtaskView {
   std::string verb;                 // "clear"
-  std::string place;                // "table1": the first of `places`
-  std::vector<std::string> places;  // every place it empties ("bag1", "bag2" for `place: bag`)
+  std::string place;                // "table1", or a kind ("bag") for every place of it, as in the file
+  std::vector<std::string> places;  // every place it empties: "table1"; "bag1", "bag2" for `place: bag`
 };
 
 struct TaskView {
@@ -127,9 +127,12 @@ void bind_scenario(py::module_& m) {
           [](const ScenarioHandle& h) {
             TaskView task{h.scenario->task.name, {}};
             for (const Subtask& s : h.scenario->task.subtasks) {
+              const Universe& universe = *h.scenario->world.universe;
               SubtaskView view{s.verb, "", {}};
-              for (ObjectId place : s.places) view.places.push_back(h.scenario->world.universe->name(place));
-              if (!view.places.empty()) view.place = view.places.front();
+              for (ObjectId place : s.places) view.places.push_back(universe.name(place));
+              if (!s.places.empty())
+                view.place = s.places.size() == 1 ? universe.name(s.places.front())
+                                                  : universe.info(s.places.front()).category;
               task.subtasks.push_back(std::move(view));
             }
             return task;
