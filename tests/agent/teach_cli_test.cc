@@ -305,6 +305,28 @@ TEST_F(Teach, TheSummaryTellsLookAlikesApartByWhereTheyWereAndSaysRepeatsOnce) {
   EXPECT_THAT(teach.out(), HasSubstr("Not done: the ceramic plate should be in the dishwasher (2 of them).\n"));
 }
 
+TEST_F(Teach, LeaveItAndSameAsAKindNotLearnedAnswerAGoalQuestion) {
+  Process teach(teach_args());
+  ASSERT_TRUE(teach.write(lines({"Tidy kitchen.", "clear the table", "same as the paper plate", "leave it", "garbage",
+                                 "You are done."})));
+  EXPECT_EQ(teach.wait(), 1) << teach.out() << teach.err();
+  EXPECT_THAT(teach.out(), HasSubstr("Instructor: same as the paper plate\n"
+                                     "Agent: I have not learned where a paper plate goes yet. Where should the ketchup "
+                                     "go? You could say"));
+  EXPECT_THAT(teach.out(), HasSubstr("Instructor: leave it\nAgent: I will leave the ketchup on the table as it is.\n"
+                                     "Agent: Where should the paper plate on the table go?\n"));
+  EXPECT_THAT(teach.out(), HasSubstr("Not done: the ketchup should be in the fridge.\n"));
+}
+
+TEST_F(Teach, SameAsALearnedKindTakesItsGoal) {
+  Process teach(teach_args());
+  ASSERT_TRUE(teach.write(lines({"Tidy kitchen.", "clear the table", kKetchupGoal, "same as the ketchup.", "You are done."})));
+  EXPECT_EQ(teach.wait(), 1) << teach.out() << teach.err();
+  EXPECT_THAT(teach.out(), HasSubstr("Instructor: same as the ketchup.\n"
+                                     "Agent: So the paper plate goes in the fridge, and the fridge ends closed.\n"));
+  EXPECT_THAT(teach.out(), HasSubstr("Not done: the paper plate should be in the garbage.\n"));
+}
+
 TEST_F(Teach, WithoutAStoreItSaysNothingWasSavedAndHowToKeepIt) {
   Process teach({APPRENTICE_BINARY, "teach", "--scenario", scenario_.string()});
   ASSERT_TRUE(teach.write(lines(full_script())));
