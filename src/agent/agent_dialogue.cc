@@ -262,8 +262,7 @@ Status TaskLearningAgent::Session::forget(const std::string& kind) {
       if (g.key.category == *category) keys.push_back(g.key);
   if (keys.empty()) {
     say("I have not learned where to put " +
-            (category ? std::string(language::article_for(*category)) + " " + language::spoken_category(*category)
-                      : std::string(trim(kind))) +
+            (category ? "the " + language::spoken_category(*category) : std::string(trim(kind))) +
             ", so there is nothing to forget.",
         Voice::kResponse);
     return {};
@@ -276,8 +275,7 @@ Status TaskLearningAgent::Session::forget(const std::string& kind) {
       if (auto s = agent_.store_->remove_goal(key); !s) return s;
     }
   }
-  say("I forgot where " + std::string(language::article_for(*category)) + " " + language::spoken_category(*category) +
-          " goes; I will ask when I meet one.",
+  say("I forgot where " + language::kind_goes(*category) + "; I will ask when I meet one.",
       Voice::kResponse);
   return {};
 }

@@ -171,9 +171,8 @@ std::optional<language::Reply> TaskLearningAgent::Session::goal_like_another(Obj
     if (known == nullptr && g.key.category == kinds.front()) known = &g;
   if (known == nullptr)
     return language::Reply(language::Unusable{
-        "I have not learned where " + std::string(language::article_for(kinds.front())) + " " +
-            language::spoken_category(kinds.front()) + " goes yet. Where should " + language::spoken_name(world(), object) +
-            " go?",
+        "I have not learned where " + language::kind_goes(kinds.front()) + " yet. Where should " +
+            language::spoken_name(world(), object) + " go?",
         agent_.understanding_.example_replies(world(), context(language::Asked::kGoal, object)), std::nullopt});
   std::optional<Goal> goal = instantiate_goal(world(), *known, object);
   if (!goal) return std::nullopt;

@@ -231,7 +231,7 @@ TEST_F(Teach, ForgetAKindOfObjectForgetsWhereItGoes) {
   EXPECT_EQ(teach.wait(), 1) << teach.out() << teach.err();
   EXPECT_THAT(teach.out(), HasSubstr("Agent: I have not learned where to put zebra, so there is nothing to forget.\n"));
   // A plural names the kind too.
-  EXPECT_THAT(teach.out(), HasSubstr("Agent: I forgot where a ketchup goes; I will ask when I meet one.\n"));
+  EXPECT_THAT(teach.out(), HasSubstr("Agent: I forgot where the ketchup goes; I will ask when I meet one.\n"));
   EXPECT_THAT(teach.out(), HasSubstr("Stopped: 2 of 3 goal assertions hold, after 4 instructions.\n"));
   EXPECT_EQ(stored().goals.size(), 0u);
 }
@@ -311,7 +311,7 @@ TEST_F(Teach, LeaveItAndSameAsAKindNotLearnedAnswerAGoalQuestion) {
                                  "You are done."})));
   EXPECT_EQ(teach.wait(), 1) << teach.out() << teach.err();
   EXPECT_THAT(teach.out(), HasSubstr("Instructor: same as the paper plate\n"
-                                     "Agent: I have not learned where a paper plate goes yet. Where should the ketchup "
+                                     "Agent: I have not learned where the paper plate goes yet. Where should the ketchup "
                                      "go? You could say"));
   EXPECT_THAT(teach.out(), HasSubstr("Instructor: leave it\nAgent: I will leave the ketchup on the table as it is.\n"
                                      "Agent: Where should the paper plate on the table go?\n"));
