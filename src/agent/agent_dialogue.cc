@@ -75,7 +75,7 @@ void TaskLearningAgent::Session::say(const std::string& statement, Voice voice) 
 }
 
 TaskLearningAgent::Session::Flow<TaskLearningAgent::Session::Heard> TaskLearningAgent::Session::converse(
-    const Question& asked, language::ReplyContext context, const Accept& accept) {
+    const Question& asked, language::ReplyContext context, const Accept& accept, const Rescue& rescue) {
   APPRENTICE_CHECK(dialogue_ != nullptr);
   int unusable = 0;
   for (;;) {
@@ -93,6 +93,8 @@ TaskLearningAgent::Session::Flow<TaskLearningAgent::Session::Heard> TaskLearning
       if (!settled) return tl::unexpected(settled.error());
       reply = *settled;
     }
+    if (rescue && std::holds_alternative<language::Unusable>(reply))
+      if (auto rescued = rescue(*text)) reply = std::move(*rescued);
     std::optional<std::string> why;
     if (const auto* u = std::get_if<language::Unusable>(&reply)) why = u->reason;
     else why = accept(reply);
@@ -220,24 +222,30 @@ void TaskLearningAgent::Session::status(const Question& asked) {
   say(doing, Voice::kResponse);
 }
 
+std::vector<std::string> TaskLearningAgent::Session::known_kinds(std::string_view phrase) const {
+  std::string key = to_lower(trim(phrase));
+  for (std::string_view article : {"the ", "a ", "an "})
+    if (key.starts_with(article)) key = key.substr(article.size());
+  std::replace(key.begin(), key.end(), ' ', '-');
+  std::vector<std::string> singular = {key};
+  if (key.size() > 1 && key.back() == 's') singular.push_back(key.substr(0, key.size() - 1));
+  if (key.size() > 2 && key.ends_with("es")) singular.push_back(key.substr(0, key.size() - 2));
+  std::vector<std::string> fits;
+  for (const GoalKnowledge& g : agent_.knowledge_.goals.all()) {
+    const std::string& c = g.key.category;
+    bool fit = std::any_of(singular.begin(), singular.end(), [&](const std::string& k) {
+      return !k.empty() && (c == k || (c.size() > k.size() && c.ends_with("-" + k)));
+    });
+    if (fit && std::find(fits.begin(), fits.end(), c) == fits.end()) fits.push_back(c);
+  }
+  return fits;
+}
+
 Status TaskLearningAgent::Session::forget(const std::string& kind) {
   std::optional<std::string> category = agent_.understanding_.category(world(), kind);
   if (!category) {
-    // A kind that is not here may still be known, and a kind may be named
-    // by its last word or its plural ("plates"): the known kinds that fit.
-    std::string key = to_lower(trim(kind));
-    std::replace(key.begin(), key.end(), ' ', '-');
-    std::vector<std::string> singular = {key};
-    if (key.size() > 1 && key.back() == 's') singular.push_back(key.substr(0, key.size() - 1));
-    if (key.size() > 2 && key.ends_with("es")) singular.push_back(key.substr(0, key.size() - 2));
-    std::vector<std::string> fits;
-    for (const GoalKnowledge& g : agent_.knowledge_.goals.all()) {
-      const std::string& c = g.key.category;
-      bool fit = std::any_of(singular.begin(), singular.end(), [&](const std::string& k) {
-        return c == k || (c.size() > k.size() && c.ends_with("-" + k));
-      });
-      if (fit && std::find(fits.begin(), fits.end(), c) == fits.end()) fits.push_back(c);
-    }
+    // A kind that is not here may still be known.
+    std::vector<std::string> fits = known_kinds(kind);
     if (fits.size() > 1) {
       std::vector<std::string> named;
       for (const std::string& c : fits) named.push_back("the " + language::spoken_category(c));
@@ -254,8 +262,7 @@ Status TaskLearningAgent::Session::forget(const std::string& kind) {
       if (g.key.category == *category) keys.push_back(g.key);
   if (keys.empty()) {
     say("I have not learned where to put " +
-            (category ? std::string(language::article_for(*category)) + " " + language::spoken_category(*category)
-                      : std::string(trim(kind))) +
+            (category ? "the " + language::spoken_category(*category) : std::string(trim(kind))) +
             ", so there is nothing to forget.",
         Voice::kResponse);
     return {};
@@ -268,8 +275,7 @@ Status TaskLearningAgent::Session::forget(const std::string& kind) {
       if (auto s = agent_.store_->remove_goal(key); !s) return s;
     }
   }
-  say("I forgot where " + std::string(language::article_for(*category)) + " " + language::spoken_category(*category) +
-          " goes; I will ask when I meet one.",
+  say("I forgot where " + language::kind_goes(*category) + "; I will ask when I meet one.",
       Voice::kResponse);
   return {};
 }

@@ -10,6 +10,26 @@
 
 namespace apprentice {
 
+namespace {
+
+// "done", "leave it", "skip it": the object stays where it is (the reader
+// takes the script's "You are done." at a goal question; these are what
+// people say instead).
+bool leaves_it_alone(const std::string& text) {
+  std::string said = to_lower(trim(text));
+  while (!said.empty() && (said.back() == '.' || said.back() == '!')) said.pop_back();
+  for (std::string_view polite : {"please ", "just ", "ok ", "okay "})
+    if (said.starts_with(polite)) said = said.substr(polite.size());
+  static const char* const kAlone[] = {"done", "skip", "skip it", "skip that", "skip this one", "leave it",
+                                       "leave it there", "leave it alone", "leave that", "leave that one",
+                                       "it stays", "it stays there", "it stays where it is", "nowhere", "nothing",
+                                       "pass", "ignore it", "don't move it", "do not move it", "keep it there",
+                                       "it can stay", "it can stay there", "leave it be"};
+  return std::any_of(std::begin(kAlone), std::end(kAlone), [&](const char* a) { return said == a; });
+}
+
+}  // namespace
+
 GoalKey TaskLearningAgent::Session::goal_key(ObjectId object) const {
   return GoalKey{progress_.task.name, current().verb, world().universe->info(object).category,
                  world().universe->info(current().places.front()).category};
@@ -172,6 +192,10 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
                             if (w.universe->info(o).kind == ObjectKind::kItem) names.push_back(language::spoken_name(w, o));
                           return "That says what becomes of " + (names.empty() ? "other things" : language::list_phrase(names)) +
                                  ", but I asked about " + language::spoken_name_and_location(w, object) + ".";
+                        },
+                        [&](const std::string& text) {
+                          if (leaves_it_alone(text)) return std::optional<language::Reply>(language::Finished{});
+                          return goal_like_another(object, text);
                         });
   if (!heard) return tl::unexpected(heard.error());
   if (!heard->reply) {
@@ -189,6 +213,44 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
   if (auto s = learn_goal(object, goal, "instructor: " + apprentice::quoted(heard->text)); !s) return stop(s.error());
   report.goal_source = "instructor";
   return std::optional<Goal>(goal);
+}
+
+std::optional<language::Reply> TaskLearningAgent::Session::goal_like_another(ObjectId object,
+                                                                             const std::string& text) const {
+  std::string said = to_lower(trim(text));
+  while (!said.empty() && (said.back() == '.' || said.back() == '!')) said.pop_back();
+  // "same as the soda can", "the same place as the mug", "like the soda
+  // cans", "where the soda can goes".
+  std::string other;
+  for (std::string_view marker : {"same place as ", "same way as ", "same as ", "just like ", "like ", "where "}) {
+    std::size_t at = said.find(marker);
+    if (at == std::string::npos) continue;
+    other = said.substr(at + marker.size());
+    break;
+  }
+  for (std::string_view tail : {" goes", " go", " went", " did", " does"})
+    if (other.size() > tail.size() && other.ends_with(tail)) other.resize(other.size() - tail.size());
+  for (std::string_view lead : {"those ", "that ", "this ", "the ", "a ", "an "})
+    if (other.starts_with(lead)) other = other.substr(lead.size());
+  if (other.empty()) return std::nullopt;
+  std::vector<std::string> kinds;
+  if (auto here = agent_.understanding_.category(world(), other)) kinds = {*here};
+  else kinds = known_kinds(other);
+  if (kinds.size() != 1) return std::nullopt;
+  // The goal learned for that kind in this subtask, else in any.
+  GoalKey key = goal_key(object);
+  key.category = kinds.front();
+  const GoalKnowledge* known = agent_.knowledge_.goals.find(key);
+  for (const GoalKnowledge& g : agent_.knowledge_.goals.all())
+    if (known == nullptr && g.key.category == kinds.front()) known = &g;
+  if (known == nullptr)
+    return language::Reply(language::Unusable{
+        "I have not learned where " + language::kind_goes(kinds.front()) + " yet. Where should " +
+            language::spoken_name(world(), object) + " go?",
+        agent_.understanding_.example_replies(world(), context(language::Asked::kGoal, object)), std::nullopt});
+  std::optional<Goal> goal = instantiate_goal(world(), *known, object);
+  if (!goal) return std::nullopt;
+  return language::Reply(language::GoalGiven{*goal});
 }
 
 Status TaskLearningAgent::Session::learn_goal(ObjectId object, const Goal& goal, const std::string& source) {

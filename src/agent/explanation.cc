@@ -101,7 +101,9 @@ std::string explain_task(const TaskKnowledge& task) {
 
 std::string explain_goal(const GoalKnowledge& goal) {
   const GoalKey& key = goal.key;
-  std::string subject = std::string(language::article_for(key.category)) + " " + spoken_category(key.category);
+  // "the ketchup", "the crackers": a kind, as people name what they put away.
+  std::string subject = "the " + spoken_category(key.category);
+  const bool plural = language::is_plural_category(key.category);
   std::vector<std::string> parts;
   // What becomes of the object comes first, as the agent reads goals back.
   std::vector<GoalTemplateLiteral> ordered = goal.literals;
@@ -113,7 +115,7 @@ std::string explain_goal(const GoalKnowledge& goal) {
     bool about_object = !l.arguments.empty() && l.arguments[0].object_of_interest;
     if ((l.predicate == "in" || l.predicate == "on") && args.size() == 2) {
       std::string where = l.positive ? l.predicate : (l.predicate == "in" ? "out of" : "off");
-      parts.push_back((about_object ? subject + (l.positive ? " goes " : " ends ") : args[0] + " ends ") + where + " " + args[1]);
+      parts.push_back((about_object ? subject + (l.positive ? (plural ? " go " : " goes ") : (plural ? " end " : " ends ")) : args[0] + " ends ") + where + " " + args[1]);
     } else if (l.predicate == "closed" && args.size() == 1) {
       parts.push_back(args[0] + " ends " + (l.positive ? "closed" : "open"));
     } else {

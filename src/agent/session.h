@@ -108,6 +108,9 @@ class TaskLearningAgent::Session {
   // Why a reply, though understood, does not answer this question; nullopt
   // if it does.
   using Accept = std::function<std::optional<std::string>(const language::Reply&)>;
+  // What the agent itself can make of a reply the reader cannot use (from
+  // what it knows), or nullopt.
+  using Rescue = std::function<std::optional<language::Reply>(const std::string& text)>;
 
   // The steps (agent.cc).
   Step next_step();
@@ -128,7 +131,8 @@ class TaskLearningAgent::Session {
   Question question(QuestionKind kind, std::string text, std::optional<ObjectId> object = std::nullopt,
                     std::optional<Goal> goal = std::nullopt, std::optional<Action> action = std::nullopt) const;
   language::ReplyContext context(language::Asked asked, std::optional<ObjectId> object = std::nullopt) const;
-  Flow<Heard> converse(const Question& question, language::ReplyContext context, const Accept& accept);
+  Flow<Heard> converse(const Question& question, language::ReplyContext context, const Accept& accept,
+                       const Rescue& rescue = nullptr);
   Flow<language::Reply> settle(const language::Ambiguous& ambiguous, const Question& asked,
                                language::ReplyContext& context, const std::string& text);
   Flow<bool> confirm(const Question& question);
@@ -137,6 +141,9 @@ class TaskLearningAgent::Session {
   void help(const Question& question, const language::ReplyContext& context);
   void status(const Question& question);
   Status forget(const std::string& kind);
+  // The kinds of object with a learned goal that `phrase` names: exactly,
+  // by a plural, or by the last word ("plates": ceramic-plate, paper-plate).
+  std::vector<std::string> known_kinds(std::string_view phrase) const;
   void say(const std::string& statement, Voice voice = Voice::kNarration);
   bool person() const { return dialogue_ != nullptr && dialogue_->instructor_is_person(); }
 
@@ -161,6 +168,9 @@ class TaskLearningAgent::Session {
   // the teacher says no, or it is too doubtful (then `report.note` says why
   // when performing).
   Flow<std::optional<Goal>> goal_by_analogy(ObjectId object, ObjectReport& report);
+  // "same as the soda can", "like the mug": the goal of a kind already
+  // learned, for `object`; nullopt if the reply is not such a comparison.
+  std::optional<language::Reply> goal_like_another(ObjectId object, const std::string& text) const;
   GoalKey goal_key(ObjectId object) const;
   llm::TaskContext llm_context(ObjectId object) const;
 

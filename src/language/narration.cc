@@ -10,13 +10,8 @@
 namespace apprentice::language {
 namespace {
 
-// Whether a thing's name is a plural ("crackers", "granola bars"), for verb
-// agreement: the last word ends in "s" but not in "ss", "us" or "is".
 bool plural_name(const World& world, ObjectId object) {
-  const std::string& c = world.universe->info(object).category;
-  if (c.size() < 3 || c.back() != 's') return false;
-  char before = c[c.size() - 2];
-  return before != 's' && before != 'u' && before != 'i';
+  return is_plural_category(world.universe->info(object).category);
 }
 
 // A clause whose noun phrases are still objects, so that one already
@@ -220,6 +215,16 @@ Clause failed_precondition(const World& world, const State& state, const Literal
 }  // namespace
 
 // --- Words -------------------------------------------------------------------
+
+bool is_plural_category(std::string_view category) {
+  if (category.size() < 3 || category.back() != 's') return false;
+  char before = category[category.size() - 2];
+  return before != 's' && before != 'u' && before != 'i';
+}
+
+std::string kind_goes(std::string_view category) {
+  return "the " + spoken_category(category) + (is_plural_category(category) ? " go" : " goes");
+}
 
 std::string spoken_category(std::string_view category) {
   std::string out(category);

@@ -27,6 +27,11 @@ namespace apprentice::language {
 
 // "glass-tumbler" -> "glass tumbler".
 std::string spoken_category(std::string_view category);
+// Whether a kind is named in the plural ("crackers", "granola-bars"), for
+// verb agreement: the last word ends in "s" but not in "ss", "us" or "is".
+bool is_plural_category(std::string_view category);
+// "the ketchup goes", "the crackers go": a kind as the subject of "go".
+std::string kind_goes(std::string_view category);
 // "the glass tumbler"; a look-alike (another object of its category exists)
 // with properties is named by them: "the top drawer".
 std::string spoken_name(const World& world, ObjectId object);

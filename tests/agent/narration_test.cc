@@ -165,7 +165,7 @@ TEST(Explanation, KnowledgeReadsAsEnglish) {
                       GoalTemplateLiteral{"in", true, {GoalTemplateArgument{true, ""}, GoalTemplateArgument{false, "dishwasher"}}}},
                      Provenance{"ceramic-plate1 (ceramic-plate)", "instructor: \"...\""}};
   EXPECT_EQ(explain_goal(goal),
-            "When I clear the table (to tidy the kitchen), a ceramic plate goes in the dishwasher, and the dishwasher "
+            "When I clear the table (to tidy the kitchen), the ceramic plate goes in the dishwasher, and the dishwasher "
             "ends closed.");
   EXPECT_EQ(explain_provenance(goal.provenance), "learned on ceramic-plate1 (ceramic-plate) from the instructor: \"...\"");
 }

@@ -231,7 +231,7 @@ TEST_F(Teach, ForgetAKindOfObjectForgetsWhereItGoes) {
   EXPECT_EQ(teach.wait(), 1) << teach.out() << teach.err();
   EXPECT_THAT(teach.out(), HasSubstr("Agent: I have not learned where to put zebra, so there is nothing to forget.\n"));
   // A plural names the kind too.
-  EXPECT_THAT(teach.out(), HasSubstr("Agent: I forgot where a ketchup goes; I will ask when I meet one.\n"));
+  EXPECT_THAT(teach.out(), HasSubstr("Agent: I forgot where the ketchup goes; I will ask when I meet one.\n"));
   EXPECT_THAT(teach.out(), HasSubstr("Stopped: 2 of 3 goal assertions hold, after 4 instructions.\n"));
   EXPECT_EQ(stored().goals.size(), 0u);
 }
@@ -303,6 +303,28 @@ TEST_F(Teach, TheSummaryTellsLookAlikesApartByWhereTheyWereAndSaysRepeatsOnce) {
                                      "Not done: the half and half should be in the fridge.\n"));
   EXPECT_THAT(teach.out(), HasSubstr("Not done: the mug from the dish rack should be in the cupboard.\n"));
   EXPECT_THAT(teach.out(), HasSubstr("Not done: the ceramic plate should be in the dishwasher (2 of them).\n"));
+}
+
+TEST_F(Teach, LeaveItAndSameAsAKindNotLearnedAnswerAGoalQuestion) {
+  Process teach(teach_args());
+  ASSERT_TRUE(teach.write(lines({"Tidy kitchen.", "clear the table", "same as the paper plate", "leave it", "garbage",
+                                 "You are done."})));
+  EXPECT_EQ(teach.wait(), 1) << teach.out() << teach.err();
+  EXPECT_THAT(teach.out(), HasSubstr("Instructor: same as the paper plate\n"
+                                     "Agent: I have not learned where the paper plate goes yet. Where should the ketchup "
+                                     "go? You could say"));
+  EXPECT_THAT(teach.out(), HasSubstr("Instructor: leave it\nAgent: I will leave the ketchup on the table as it is.\n"
+                                     "Agent: Where should the paper plate on the table go?\n"));
+  EXPECT_THAT(teach.out(), HasSubstr("Not done: the ketchup should be in the fridge.\n"));
+}
+
+TEST_F(Teach, SameAsALearnedKindTakesItsGoal) {
+  Process teach(teach_args());
+  ASSERT_TRUE(teach.write(lines({"Tidy kitchen.", "clear the table", kKetchupGoal, "same as the ketchup.", "You are done."})));
+  EXPECT_EQ(teach.wait(), 1) << teach.out() << teach.err();
+  EXPECT_THAT(teach.out(), HasSubstr("Instructor: same as the ketchup.\n"
+                                     "Agent: So the paper plate goes in the fridge, and the fridge ends closed.\n"));
+  EXPECT_THAT(teach.out(), HasSubstr("Not done: the paper plate should be in the garbage.\n"));
 }
 
 TEST_F(Teach, WithoutAStoreItSaysNothingWasSavedAndHowToKeepIt) {
