@@ -125,7 +125,7 @@ void bind_scenario(py::module_& m) {
           [](const ScenarioHandle& h) {
             TaskView task{h.scenario->task.name, {}};
             for (const Subtask& s : h.scenario->task.subtasks)
-              task.subtasks.push_back(SubtaskView{s.verb, h.scenario->world.universe->name(s.place)});
+              task.subtasks.push_back(SubtaskView{s.verb, h.scenario->world.universe->name(s.places.front())});
             return task;
           },
           "The task the instructor will teach (the agent learns it from the instructor's words).")
