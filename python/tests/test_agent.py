@@ -161,7 +161,8 @@ def test_perform_in_a_kitchen_it_has_never_seen(tmp_path):
     report = agent.perform(similar)
     # Only the ketchup and paper plate kinds were taught: the rest needs help.
     assert report["help_needed"]
-    assert all("goal for" in h or "which" in h for h in report["help_needed"])
+    # Each says in English what it would need: where an untaught kind goes.
+    assert all((h.startswith("where ") and " goes" in h) or "which" in h for h in report["help_needed"])
 
 
 def test_a_condition_with_an_llm_needs_one(monkeypatch):

@@ -66,7 +66,9 @@ def test_a_file_that_is_not_a_store_is_refused(tmp_path):
     junk.write_bytes(b"this is not a database at all" * 10)
     with pytest.raises(apprentice.Error) as raised:
         apprentice.KnowledgeStore(junk)
-    assert raised.value.code == "data loss"
+    # Not a store at all: refused as such (the CLI's exit 2), never as damage.
+    assert raised.value.code == "failed precondition"
+    assert "not an apprentice knowledge store" in str(raised.value)
     empty = tmp_path / "empty.sqlite"
     empty.write_bytes(b"")
     with pytest.raises(apprentice.Error, match="empty"):

@@ -380,8 +380,11 @@ TEST_F(Teach, AGoalAboutAnotherObjectIsAskedBackNotStored) {
   EXPECT_EQ(teach.wait(), 0) << teach.out() << teach.err();
   EXPECT_THAT(teach.out(), HasSubstr("Agent: Where should the ketchup on the table go?\n"
                                      "Instructor: the goal is that the paper-plate is in the garbage.\n"
-                                     "Agent: I asked about the ketchup, not the paper-plate. Where should the ketchup "
-                                     "go?"));
+                                     "Agent: That says what becomes of the paper plate, but I asked about the ketchup "
+                                     "on the table. Where should the ketchup go?"));
+  // Nothing about the paper plate was stored from that reply: its goal is
+  // learned once, from its own question.
+  EXPECT_THAT(teach.out(), HasSubstr("Agent: So the paper plate goes in the garbage."));
   EXPECT_THAT(teach.out(), HasSubstr("3 of 3 goal assertions hold, after 9 instructions."));
 }
 
