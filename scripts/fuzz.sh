@@ -5,7 +5,7 @@
 # trips ASan or UBSan, breaks the target's stated contract, or takes longer
 # than the per-input timeout. A finding is kept in build-fuzz/findings/.
 #
-#   scripts/fuzz.sh                       # every target, 10 s each (make test)
+#   scripts/fuzz.sh                       # every target, 10 s each (make test: FUZZ_SECONDS=5)
 #   scripts/fuzz.sh goal store            # only these targets
 #   FUZZ_SECONDS=600 scripts/fuzz.sh      # make fuzz-long: 10 minutes each
 #
