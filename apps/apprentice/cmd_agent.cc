@@ -326,7 +326,7 @@ CommandResult run_run(const RunOptions& options, std::ostream& out) {
   if (!report) return tl::unexpected(report.error());
   int achieved = count_achieved_assertions(*scenario, simulator.state());
   int total = static_cast<int>(scenario->goal_assertions().size());
-  double completion = total == 0 ? 100.0 : 100.0 * achieved / total;
+  double completion = completion_percent(achieved, total);
   // Without an intent nothing says what the task should achieve: no completion.
   const bool measured = scenario->has_intent;
   if (options.json) {

@@ -111,7 +111,7 @@ py::dict report_dict(const Scenario& scenario, const Simulator& simulator, const
   int total = static_cast<int>(scenario.goal_assertions().size());
   py::dict out;
   out["task_finished"] = report.task_finished;
-  out["completion_rate"] = total == 0 ? 100.0 : 100.0 * achieved / total;
+  out["completion_rate"] = completion_percent(achieved, total);
   out["assertions_achieved"] = achieved;
   out["assertions_total"] = total;
   out["objects"] = object_reports(report.objects);

@@ -9,6 +9,8 @@
 
 namespace apprentice {
 
+double completion_percent(int achieved, int total) { return total == 0 ? 100.0 : 100.0 * achieved / total; }
+
 int count_achieved_assertions(const Scenario& scenario, const State& state) {
   int achieved = 0;
   for (const Literal& l : scenario.goal_assertions())
@@ -148,7 +150,7 @@ Result<ConditionResult> run_condition(const Scenario& scenario, const Condition&
   result.condition = condition.name;
   result.assertions_total = static_cast<int>(scenario.goal_assertions().size());
   result.assertions_achieved = count_achieved_assertions(scenario, simulator.state());
-  result.completion_rate = result.assertions_total == 0 ? 100.0 : 100.0 * result.assertions_achieved / result.assertions_total;
+  result.completion_rate = completion_percent(result.assertions_achieved, result.assertions_total);
   result.objects_total = static_cast<int>(scenario.objects_to_tidy().size());
   result.objects_done = count_objects_done(scenario, simulator.state());
   result.counts = dialogue.counts();

@@ -91,6 +91,9 @@ Result<ConditionResult> run_condition(const Scenario& scenario, const Condition&
 
 // The goal assertions of the scenario's intent that hold in `state`.
 int count_achieved_assertions(const Scenario& scenario, const State& state);
+// The paper's completion rate in percent: `achieved` of `total` goal
+// assertions; 100 when there are none.
+double completion_percent(int achieved, int total);
 // The objects to tidy whose whole intended goal holds in `state`.
 int count_objects_done(const Scenario& scenario, const State& state);
 
