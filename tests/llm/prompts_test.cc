@@ -104,9 +104,9 @@ TEST(PromptsTest, AGoalRepromptListsTheRejectedAnswers) {
   TaskContext context = plate();
   context.rejected = {"the goal is that the ceramic-plate is in the cupboard",
                       "The goal is that the ceramic-plate is in the sink."};
-  EXPECT_EQ(templates.goal_prompt(context), std::string(kExamples) + kTaskLine +
-                                                "Not: the ceramic-plate is in the cupboard.\n"
-                                                "Not: the ceramic-plate is in the sink.\n(RESULT)");
+  EXPECT_EQ(templates.goal_prompt(context),
+            concatenated({kExamples, kTaskLine, "Not: the ceramic-plate is in the cupboard.\n",
+                          "Not: the ceramic-plate is in the sink.\n(RESULT)"}));
   QueryAbout about = about_for(context, QueryKind::kGoal);
   EXPECT_EQ(about.rejected, context.rejected);
   EXPECT_TRUE(about_for(context, QueryKind::kActionWord).rejected.empty());
