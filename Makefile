@@ -35,10 +35,12 @@ test-release: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
 # -g1: line tables only; ASan and UBSan reports keep file:line, and the
-# build is quicker than with full debug info. The Python module and its
-# tests run in the release build only (pybind11 at -O0 costs minutes).
+# build is quicker than with full debug info. -O1 for the libraries and the
+# program (the test files stay at -O0, tests/CMakeLists.txt): the tests run
+# about twice as fast under ASan as at -O0. The Python module and its tests
+# run in the release build only (pybind11 at -O0 costs minutes).
 test-asan: deps
-	cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG=-g1 -DAPPRENTICE_SANITIZE=ON -DAPPRENTICE_BENCH=OFF -DAPPRENTICE_PYTHON=OFF
+	cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-g1 -O1" -DAPPRENTICE_SANITIZE=ON -DAPPRENTICE_BENCH=OFF -DAPPRENTICE_PYTHON=OFF
 	cmake --build $(ASAN_BUILD) -j $(JOBS)
 	cd $(ASAN_BUILD) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j $(JOBS)
 
