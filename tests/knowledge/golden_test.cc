@@ -12,6 +12,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "common/golden_note.h"
 #include "knowledge_fixtures.h"
 
 namespace apprentice {
@@ -47,24 +48,23 @@ std::string golden_text(const World& world, const std::vector<Rule>& rules, Gene
   return out;
 }
 
-bool update_requested() {
-  const char* value = std::getenv("APPRENTICE_UPDATE_GOLDEN");
-  return value != nullptr && std::string(value) == "1";
-}
-
 void check_golden(Generalization generalization, const std::string& file_name) {
   Scenario scenario = tidy_kitchen();
   const World& world = scenario.world;
   std::vector<Rule> rules = learn(world, ceramic_plate_episode(world), generalization);
   std::string actual = golden_text(world, rules, generalization);
   fs::path path = fs::path(APPRENTICE_GOLDEN_DIR) / file_name;
-  if (update_requested()) {
-    std::ofstream(path, std::ios::binary) << actual;
-    std::cout << "[ golden   ] rewrote " << path.string() << "\n";
+  // The reviewed note at the top is the reader's, not the code's: kept on
+  // a rewrite, left out of the comparison.
+  auto [note, expected] = fs::exists(path) ? apprentice::testing::split_golden_note(read_text(path))
+                                           : std::pair<std::string, std::string>{};
+  if (apprentice::testing::golden_update_requested()) {
+    std::ofstream(path, std::ios::binary) << note << actual;
+    std::cout << apprentice::testing::golden_update_reminder(path);
     return;
   }
   ASSERT_TRUE(fs::exists(path)) << path << " is missing; create it with APPRENTICE_UPDATE_GOLDEN=1";
-  std::vector<std::string> expected_lines = lines_of(read_text(path));
+  std::vector<std::string> expected_lines = lines_of(expected);
   std::vector<std::string> actual_lines = lines_of(actual);
   // The rule lines first, so that a change to learning reads as such.
   auto rule_lines = [](const std::vector<std::string>& lines) {
