@@ -129,7 +129,7 @@ TEST(PromptsTest, MatchesEveryPromptPrintedInThePaper) {
   buffer << in.rdbuf();
   const std::string paper = buffer.str();
   PromptTemplates templates = load();
-  const std::string goal_dot = std::string(kGoal) + ".";
+  const std::string goal_dot = concatenated({kGoal, "."});
   const std::vector<std::string> opened = {"Open dishwasher"};
   struct Case {
     std::string title;
