@@ -10,8 +10,12 @@
 #     (`apprentice knowledge --json` exits 0);
 #   - if the second run exited 0, the store holds all 26 of its goals.
 # A store that does not load, or a completed run whose goals are missing, is
-# a lost store. Prints one line per trial and a summary; exits 1 if any
-# store was lost.
+# a lost store. A store is created whole under a temporary name
+# (.instruction.sqlite.creating-PID-RANDOM) and then moved into place, so a
+# kill during creation leaves no store or a complete one; the temporary
+# files such kills leave are counted (the next writer of the store removes
+# them). Prints one line per trial and a summary; exits 1 if any store was
+# lost.
 #
 #   scripts/kill-test.sh [TRIALS]        # default 100; build/apprentice
 set -euo pipefail
@@ -33,7 +37,7 @@ run_us=$(( ($(date +%s%N) - start) / 1000 ))
 [[ "$(goals "$work/reference/instruction.sqlite")" == 26 ]] || { echo "kill-test: a complete run did not store 26 goals" >&2; exit 2; }
 echo "kill-test: one run takes $((run_us / 1000)) ms; $trials trials"
 
-lost=0 landed=0 in_use=0 second_ok=0 partial=0
+lost=0 landed=0 in_use=0 second_ok=0 partial=0 leftovers=0 unfinished=0
 RANDOM=11
 for ((t = 1; t <= trials; ++t)); do
   dir="$work/t$t"
@@ -69,9 +73,14 @@ for ((t = 1; t <= trials; ++t)); do
     verdict="the second run completed but left no store"
   fi
   [[ $verdict == ok ]] || lost=$((lost + 1))
-  printf 'trial %3d: kill after %6d us: first %s, second exit %d, %s goals: %s\n' "$t" "$delay_us" \
-    "$([[ $first_rc -eq 137 ]] && echo killed || echo "exit $first_rc")" "$second_rc" "$n" "$verdict"
+  # Temporary files of killed creations, and stores whose first run was
+  # killed before it created the store (nothing to lose yet).
+  left=$(find "$dir" -maxdepth 1 -name '.instruction.sqlite.creating-*' 2>/dev/null | wc -l)
+  leftovers=$((leftovers + left))
+  [[ -e "$store" ]] || unfinished=$((unfinished + 1))
+  printf 'trial %3d: kill after %6d us: first %s, second exit %d, %s goals, %d temporary files: %s\n' "$t" "$delay_us" \
+    "$([[ $first_rc -eq 137 ]] && echo killed || echo "exit $first_rc")" "$second_rc" "$n" "$left" "$verdict"
   rm -rf "$dir"
 done
-echo "kill-test: $trials trials, $landed kills landed, second run: $second_ok completed, $in_use told 'in use'; $partial stores held part of a run; $lost stores lost"
+echo "kill-test: $trials trials, $landed kills landed, second run: $second_ok completed, $in_use told 'in use'; $partial stores held part of a run; $unfinished trials left no store; $leftovers temporary files left; $lost stores lost"
 [[ $lost -eq 0 ]]

@@ -10,8 +10,10 @@
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
 
+#include "language/narration.h"
 #include "search/greedy_best_first.h"
 #include "search/iterative_deepening.h"
+#include "search/unreachable.h"
 #include "util/json.h"
 #include "util/text.h"
 #include "world/pddl.h"
@@ -112,6 +114,12 @@ CommandResult run_plan(const PlanOptions& options, std::ostream& out, std::ostre
                              : find_plan(*world.domain, *world.universe, world.state, *goal, search);
   for (const std::string& note : result.notes) spdlog::info("{}", note);
   const SearchStatistics& s = result.statistics;
+  // Why a goal that no plan reaches can never hold, if one of its parts
+  // cannot on its own: "The garbage can never be closed: it has no door,
+  // so I cannot close it."
+  std::string why_not;
+  if (result.status == SearchStatus::kExhausted)
+    why_not = language::never_holds(world, explain_unreachable(*world.domain, *world.universe, world.state, *goal));
   if (options.json) {
     nlohmann::json plan = nlohmann::json::array();
     for (const Action& a : result.plan) plan.push_back(format_action(*world.domain, *world.universe, a));
@@ -120,6 +128,7 @@ CommandResult run_plan(const PlanOptions& options, std::ostream& out, std::ostre
                      {"nodes_expanded", s.nodes_expanded}, {"nodes_generated", s.nodes_generated},
                      {"relevant_objects", s.relevant_objects}, {"ground_actions", s.ground_actions},
                      {"elapsed_ms", s.elapsed_ms}, {"relevance", result.notes}};
+    if (!why_not.empty()) j["never_holds"] = why_not;
     if (greedy) {
       j["nodes_evaluated"] = s.nodes_evaluated;
       j["dead_ends"] = s.dead_ends;
@@ -148,9 +157,11 @@ CommandResult run_plan(const PlanOptions& options, std::ostream& out, std::ostre
         << " ms\n";
   }
   if (result.status == SearchStatus::kExhausted) {
-    if (greedy)
-      progress_out << "apprentice: no sequence of actions reaches the goal from this state: some part of it can "
-                   "never hold here\n";
+    if (!why_not.empty())
+      progress_out << "apprentice: " << why_not << "\n";
+    else if (greedy)
+      progress_out << "apprentice: no sequence of actions reaches the goal from this state, though each part of it "
+                      "could hold on its own: its parts cannot all hold at once here\n";
     else
       progress_out << "apprentice: no plan of at most " << *options.depth
                 << " steps reaches the goal; try a larger --depth, or leave --depth out for greedy best-first "

@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 #include <SQLiteCpp/SQLiteCpp.h>
 
+#include "knowledge/store_creation.h"
 #include "util/json.h"
 #include "util/text.h"
 
@@ -23,7 +24,6 @@ namespace {
 
 using nlohmann::json;
 
-constexpr const char* kFormatName = "apprentice-knowledge";
 constexpr int kBusyTimeoutMs = 5000;
 
 // What an SQLite failure means to the user, by SQLite's result code.
@@ -238,24 +238,6 @@ constexpr const char* kTasksQuery = "SELECT name, structure FROM tasks ORDER BY 
 constexpr const char* kGoalsQuery = "SELECT task, subtask, category, place, literals, object, source FROM goals ORDER BY id";
 constexpr const char* kRulesQuery = "SELECT body, object, source FROM rules ORDER BY id";
 
-void create_schema(SQLite::Database& db) {
-  db.exec("CREATE TABLE meta(key TEXT PRIMARY KEY, value TEXT NOT NULL)");
-  db.exec("CREATE TABLE goals(id INTEGER PRIMARY KEY, task TEXT NOT NULL, subtask TEXT NOT NULL, "
-          "category TEXT NOT NULL, place TEXT NOT NULL, literals TEXT NOT NULL, object TEXT NOT NULL, "
-          "source TEXT NOT NULL, UNIQUE(task, subtask, category, place))");
-  db.exec("CREATE TABLE tasks(name TEXT PRIMARY KEY, structure TEXT NOT NULL)");
-  db.exec("CREATE TABLE rules(id INTEGER PRIMARY KEY, signature TEXT NOT NULL UNIQUE, body TEXT NOT NULL, "
-          "object TEXT NOT NULL, source TEXT NOT NULL)");
-  SQLite::Statement insert(db, "INSERT INTO meta(key, value) VALUES (?, ?)");
-  for (auto [key, value] : {std::pair<std::string, std::string>{"format", kFormatName},
-                            {"schema_version", std::to_string(kKnowledgeSchemaVersion)}}) {
-    insert.bind(1, key);
-    insert.bind(2, value);
-    insert.exec();
-    insert.reset();
-  }
-}
-
 int table_count(SQLite::Database& db) {
   SQLite::Statement tables(db, "SELECT count(*) FROM sqlite_master WHERE type='table'");
   tables.executeStep();
@@ -277,7 +259,7 @@ Status check_or_create_schema(SQLite::Database& db, const std::filesystem::path&
       if (table_count(db) > 0)
         return make_error(ErrorCode::kFailedPrecondition,
                           path.string() + " is an SQLite database of another program, not an apprentice knowledge store");
-      create_schema(db);
+      create_knowledge_schema(db);
     }
     transaction.commit();
   }
@@ -288,7 +270,7 @@ Status check_or_create_schema(SQLite::Database& db, const std::filesystem::path&
     if (key == "format") format = meta.getColumn(1).getString();
     if (key == "schema_version") version = meta.getColumn(1).getString();
   }
-  if (format != kFormatName)
+  if (format != kKnowledgeFormatName)
     return make_error(ErrorCode::kFailedPrecondition, path.string() + " is not an apprentice knowledge store");
   if (version != std::to_string(kKnowledgeSchemaVersion))
     return make_error(ErrorCode::kFailedPrecondition,
@@ -331,11 +313,19 @@ KnowledgeStore::~KnowledgeStore() { db_.reset(); }
 
 Result<KnowledgeStore> KnowledgeStore::open(const std::filesystem::path& path, StoreAccess access) {
   const bool read_only = access == StoreAccess::kReadOnly;
-  // 1. The file, created if absent (unless read-only), and its lock.
+  // 1. The file, created if absent (unless read-only), and its lock. A new
+  // store is created whole under another name and moved into place
+  // (store_creation.h), so that a killed process never leaves an empty or
+  // half-made store; one that appeared meanwhile is opened instead.
+  if (!read_only) remove_abandoned_creations(path);
   int fd = -1;
-  do {
-    fd = ::open(path.c_str(), read_only ? O_RDONLY | O_CLOEXEC : O_RDWR | O_CREAT | O_CLOEXEC, 0666);
-  } while (fd < 0 && errno == EINTR);
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    do {
+      fd = ::open(path.c_str(), read_only ? O_RDONLY | O_CLOEXEC : O_RDWR | O_CLOEXEC);
+    } while (fd < 0 && errno == EINTR);
+    if (fd >= 0 || errno != ENOENT || read_only || attempt == 2) break;
+    if (auto created = create_store_file(path); !created) return tl::unexpected(created.error());
+  }
   if (fd < 0) {
     const int error = errno;
     if (error == ENOENT && read_only) return make_error(ErrorCode::kNotFound, path.string() + ": no such knowledge store");

@@ -14,6 +14,10 @@
 // over and so holds it exclusively; an open that cannot get its lock is
 // refused as "in use", so a store another process has open is never
 // emptied, deleted or truncated.
+//
+// A new store is made whole under a temporary name and moved into place
+// (knowledge/store_creation.h): killed at any point, a process leaves the
+// path either absent or a complete store, never an empty file.
 #pragma once
 
 #include <filesystem>

@@ -212,6 +212,57 @@ Clause failed_precondition(const World& world, const State& state, const Literal
   return c.word("it is not so that " + fact_sentence(world, literal, "is", "is not"));
 }
 
+// "the table is not a receptacle place".
+Clause not_of_type(const World& world, ObjectId object, TypeId type) {
+  const std::string& name = world.domain->types.at(type).name;
+  return Clause().thing(object).word("is not " + std::string(article_for(name)) + " " + spoken_category(name));
+}
+
+// Why one action cannot make a literal hold, as a clause.
+Clause blocker_clause(const World& world, const UnreachableBlocker& blocker) {
+  using Kind = UnreachableBlocker::Kind;
+  switch (blocker.kind) {
+    case Kind::kWrongType: return not_of_type(world, blocker.object, blocker.type);
+    case Kind::kStaticPrecondition: return failed_precondition(world, world.state, blocker.precondition);
+    case Kind::kPreconditionNeverHolds:
+      return Clause().word("for that, " + fact_sentence(world, blocker.precondition, "would have to be",
+                                                        "would have to stop being"));
+    case Kind::kNoObjectFits: break;
+  }
+  return Clause().word("no other object here fits the action \"" + world.domain->actions.at(blocker.schema).name + "\"");
+}
+
+// "The garbage can never be closed: it has no door, so I cannot close it."
+std::string never_holds_sentence(const World& world, const UnreachableLiteral& u) {
+  const Literal& l = u.literal;
+  std::string head = capitalize(fact_sentence(world, l, "can never be", "can never stop being"));
+  if (u.reason == UnreachableLiteral::Reason::kNoAction)
+    return head + ": nothing I can do " + (l.positive ? "makes that so." : "undoes that.");
+  // One reason per distinct clause, with the first action it rules out that
+  // the goal names whole ("so I cannot close it").
+  std::vector<std::string> reasons, said;
+  std::vector<bool> has_action;
+  for (const UnreachableBlocker& b : u.blockers) {
+    Clause reason = blocker_clause(world, b);
+    const bool about_subject = l.fact.arity > 0 && reason.first_thing() == l.fact.args[0];
+    std::string text = about_subject ? reason.render(world, l.fact.args[0]) : reason.render(world);
+    auto known = std::find(reasons.begin(), reasons.end(), text);
+    const auto index = static_cast<std::size_t>(known - reasons.begin());
+    if (known == reasons.end()) {
+      reasons.push_back(text);
+      said.push_back(text);
+      has_action.push_back(false);
+    }
+    const bool rules_out = b.kind == UnreachableBlocker::Kind::kWrongType ||
+                           b.kind == UnreachableBlocker::Kind::kStaticPrecondition;
+    if (b.action && rules_out && !has_action[index]) {
+      said[index] += ", so I cannot " + action_clause(world, *b.action, false).render(world, reason.first_thing());
+      has_action[index] = true;
+    }
+  }
+  return head + ": " + list_phrase(said) + ".";
+}
+
 }  // namespace
 
 // --- Words -------------------------------------------------------------------
@@ -398,8 +449,7 @@ std::string refusal(const World& world, const Action& action) {
   for (std::size_t i = 0; i < action.arity && i < schema.parameters.size(); ++i) {
     TypeId type = world.universe->info(action.args[i]).type;
     if (!domain.is_subtype(type, schema.parameters[i].type)) {
-      reason.thing(action.args[i]).word("is not " + std::string(article_for(domain.types[schema.parameters[i].type].name)) +
-                                        " " + spoken_category(domain.types[schema.parameters[i].type].name));
+      reason = not_of_type(world, action.args[i], schema.parameters[i].type);
       found = true;
       break;
     }
@@ -416,6 +466,12 @@ std::string refusal(const World& world, const Action& action) {
   if (!found) return "I cannot " + act.render(world) + ".";
   // "it" stands for what the reason is about.
   return capitalize(reason.render(world)) + ", so I cannot " + act.render(world, reason.first_thing()) + ".";
+}
+
+std::string never_holds(const World& world, const UnreachableChain& chain) {
+  std::vector<std::string> sentences;
+  for (const UnreachableLiteral& u : chain) sentences.push_back(never_holds_sentence(world, u));
+  return join(sentences, " ");
 }
 
 }  // namespace apprentice::language

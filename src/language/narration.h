@@ -20,6 +20,7 @@
 #include "world/action.h"
 #include "world/goal.h"
 #include "world/scenario.h"
+#include "world/unreachable.h"
 
 namespace apprentice::language {
 
@@ -100,5 +101,12 @@ std::string action_phrase(const World& world, const Action& action);
 // Why the action cannot be done now, or "" if it can: "I am not holding
 // the stapler, so I cannot put it in the drawer."
 std::string refusal(const World& world, const Action& action);
+
+// --- What can never be -------------------------------------------------------
+
+// Why a goal can never hold, from search/unreachable.h's analysis: one
+// sentence per link of the chain. "The garbage can never be closed: it has
+// no door, so I cannot close it." "" for an empty chain.
+std::string never_holds(const World& world, const UnreachableChain& chain);
 
 }  // namespace apprentice::language

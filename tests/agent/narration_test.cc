@@ -156,6 +156,48 @@ TEST_F(Narration, RefusalsSayWhyInPlainEnglish) {
   EXPECT_EQ(refusal(w, action(w, "(open fridge1)")), "");  // it can
 }
 
+TEST_F(Narration, GoalsThatCanNeverHoldSayWhyInPlainEnglish) {
+  const World& w = kitchen_.world;
+  const Domain& d = *w.domain;
+  auto literal = [&](const char* predicate, std::vector<const char*> args, bool positive = true) {
+    std::vector<ObjectId> ids;
+    for (const char* a : args) ids.push_back(id(a));
+    return Literal{Fact(*d.find_predicate(predicate), ids), positive};
+  };
+  using Kind = UnreachableBlocker::Kind;
+  using Reason = UnreachableLiteral::Reason;
+  EXPECT_EQ(never_holds(w, {}), "");
+  EXPECT_EQ(never_holds(w, {{literal("openable", {"garbage1"}), Reason::kNoAction, {}}}),
+            "The garbage can never be openable: nothing I can do makes that so.");
+  EXPECT_EQ(never_holds(w, {{literal("closed", {"fridge1"}, false), Reason::kNoAction, {}}}),
+            "The fridge can never be open: nothing I can do undoes that.");
+
+  UnreachableBlocker no_door{Kind::kStaticPrecondition, *d.find_action("close"), action(w, "(close garbage1)"), 0, 0,
+                             literal("openable", {"garbage1"})};
+  EXPECT_EQ(never_holds(w, {{literal("closed", {"garbage1"}), Reason::kNoActionApplies, {no_door}}}),
+            "The garbage can never be closed: it has no door, so I cannot close it.");
+  // The same reason from a second action is said once.
+  UnreachableBlocker outer = no_door;
+  outer.action.reset();
+  EXPECT_EQ(never_holds(w, {{literal("closed", {"garbage1"}), Reason::kNoActionApplies, {no_door, outer}}}),
+            "The garbage can never be closed: it has no door, so I cannot close it.");
+
+  UnreachableBlocker wrong_type{Kind::kWrongType, *d.find_action("close"), action(w, "(close garbage1)"), id("garbage1"),
+                                *d.find_type("surface-place"), {}};
+  EXPECT_EQ(never_holds(w, {{literal("closed", {"garbage1"}), Reason::kNoActionApplies, {wrong_type}}}),
+            "The garbage can never be closed: it is not a surface place, so I cannot close it.");
+
+  // A chain: the precondition that blocks, then why it can never hold.
+  UnreachableBlocker must_hold{Kind::kPreconditionNeverHolds, *d.find_action("put-in"),
+                               action(w, "(put-in ketchup1 garbage1)"), 0, 0, literal("holding", {"ketchup1"})};
+  UnreachableBlocker not_grabbable{Kind::kStaticPrecondition, *d.find_action("pick-up"), std::nullopt, 0, 0,
+                                   literal("grabbable", {"ketchup1"})};
+  EXPECT_EQ(never_holds(w, {{literal("in", {"ketchup1", "garbage1"}), Reason::kNoActionApplies, {must_hold}},
+                            {literal("holding", {"ketchup1"}), Reason::kNoActionApplies, {not_grabbable}}}),
+            "The ketchup can never be in the garbage: for that, I would have to be holding the ketchup. "
+            "I can never be holding the ketchup: it cannot be picked up.");
+}
+
 TEST(Explanation, KnowledgeReadsAsEnglish) {
   TaskKnowledge task{"tidy kitchen", {{"clear", "on", "table"}, {"unload", "in", "dish-rack"}}};
   EXPECT_EQ(explain_task(task),

@@ -6,6 +6,7 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "common/paths.h"
 #include "common/process.h"
@@ -125,12 +126,34 @@ TEST_F(Conventions, RunNamesTheStoreAndTheTasksItHolds) {
 }
 
 TEST_F(Conventions, APlanThatCannotBeFoundSaysWhatToTry) {
-  Invocation lidless = run({"plan", "--scenario", kitchen(), "--goal", "(closed recycling-bin1)"});
-  EXPECT_EQ(lidless.exit_code, 1);
-  EXPECT_THAT(lidless.err, HasSubstr("apprentice: no sequence of actions reaches the goal from this state"));
+  Invocation conflict = run({"plan", "--scenario", kitchen(), "--goal", "(and (holding ketchup1) (handempty))"});
+  EXPECT_EQ(conflict.exit_code, 1);
+  EXPECT_THAT(conflict.err, HasSubstr("apprentice: no sequence of actions reaches the goal from this state"));
+  EXPECT_THAT(conflict.err, HasSubstr("its parts cannot all hold at once"));
   Invocation shallow = run({"plan", "--scenario", kitchen(), "--goal", "(in ketchup1 fridge1)", "--depth", "1"});
   EXPECT_EQ(shallow.exit_code, 1);
   EXPECT_THAT(shallow.err, HasSubstr("try a larger --depth"));
+}
+
+TEST_F(Conventions, AGoalThatCanNeverHoldSaysWhyInEnglish) {
+  // Closing a lidless bin: with greedy search, and with --depth (where more
+  // depth would not help, so none is suggested).
+  for (const std::vector<std::string>& extra : {std::vector<std::string>{}, {"--depth", "2"}}) {
+    std::vector<std::string> args{"plan", "--scenario", kitchen(), "--goal", "(closed recycling-bin1)"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    Invocation lidless = run(args);
+    EXPECT_EQ(lidless.exit_code, 1);
+    EXPECT_THAT(lidless.err,
+                HasSubstr("apprentice: The recycling bin can never be closed: it has no door, so I cannot close it.\n"));
+    EXPECT_THAT(lidless.err, Not(HasSubstr("--depth")));
+    EXPECT_THAT(lidless.err, Not(HasSubstr("(openable")));
+  }
+  Invocation json = run({"plan", "--scenario", kitchen(), "--goal", "(and (in ketchup1 fridge1) (not (grabbable ketchup1)))",
+                         "--json"});
+  EXPECT_EQ(json.exit_code, 1);
+  auto j = nlohmann::json::parse(json.out);
+  EXPECT_EQ(j["status"], "exhausted");
+  EXPECT_EQ(j["never_holds"], "The ketchup can never stop being grabbable: nothing I can do undoes that.");
 }
 
 TEST_F(Conventions, EveryErrorHasThePrefix) {
