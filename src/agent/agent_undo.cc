@@ -6,6 +6,8 @@
 // changes only through the simulator), so the question that lesson
 // answered comes again.
 #include <algorithm>
+#include <set>
+#include <utility>
 
 #include "agent/session.h"
 #include "language/narration.h"
@@ -35,7 +37,16 @@ Goal difference(const State& now, const State& target) {
 
 void TaskLearningAgent::Session::begin_lesson(const std::string& reply) {
   if (!learning_ || dialogue_ == nullptr) return;
-  lessons_.push_back(Lesson{reply, progress_, agent_.knowledge_, world().state, simulator_.history().size(), {}});
+  // The progress without the per-object records, which only grow: copying
+  // them at every lesson would cost O(objects) each time.
+  std::set<ObjectId> evaluated = std::exchange(progress_.evaluated, {});
+  std::vector<ObjectId> evaluated_order = std::exchange(progress_.evaluated_order, {});
+  std::vector<ObjectReport> objects = std::exchange(progress_.objects, {});
+  lessons_.push_back(Lesson{reply, progress_, evaluated_order.size(), objects.size(), agent_.knowledge_,
+                            world().state, simulator_.history().size(), {}});
+  progress_.evaluated = std::move(evaluated);
+  progress_.evaluated_order = std::move(evaluated_order);
+  progress_.objects = std::move(objects);
 }
 
 Status TaskLearningAgent::Session::store_goal(const GoalKnowledge& goal, std::optional<GoalKnowledge> previous) {
@@ -98,7 +109,18 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::undo() {
     if (!status) return stop(status.error());
   }
   agent_.knowledge_ = std::move(lesson.knowledge);
+  // Back to the progress before the lesson: its records are those of now,
+  // cut to their sizes then.
+  std::set<ObjectId> evaluated = std::move(progress_.evaluated);
+  std::vector<ObjectId> evaluated_order = std::move(progress_.evaluated_order);
+  std::vector<ObjectReport> objects = std::move(progress_.objects);
+  for (std::size_t i = lesson.evaluated_count; i < evaluated_order.size(); ++i) evaluated.erase(evaluated_order[i]);
+  evaluated_order.resize(lesson.evaluated_count);
+  objects.resize(lesson.objects_count);
   progress_ = std::move(lesson.progress);
+  progress_.evaluated = std::move(evaluated);
+  progress_.evaluated_order = std::move(evaluated_order);
+  progress_.objects = std::move(objects);
   say(with_period("I forgot what you told me last: \"" + lesson.reply + "\""), Voice::kResponse);
   put_world_back(lesson.world, lesson.history);
   return tl::unexpected(Stop{});

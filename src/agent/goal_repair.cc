@@ -113,15 +113,6 @@ bool can_never_hold(std::string_view failure_kind) {
   return failure_kind == "affordance-mismatch" || failure_kind == "unknown-predicate";
 }
 
-// Where the object is now: the surface or receptacle it is on or in.
-std::optional<ObjectId> place_of(const World& world, ObjectId object) {
-  const Vocabulary& v = world.vocabulary;
-  for (const Fact& fact : world.state.facts())
-    if ((fact.predicate == v.on || fact.predicate == v.in) && fact.arity == 2 && fact.args[0] == object)
-      return fact.args[1];
-  return std::nullopt;
-}
-
 // The places the goal puts the object (positive on/in literals).
 std::vector<ObjectId> destinations(const World& world, const Goal& goal, ObjectId object) {
   const Vocabulary& v = world.vocabulary;
@@ -245,7 +236,7 @@ class Analyser {
   // Step 4.
   void check(AnalysedGoal& out) {
     std::vector<ObjectId> places = destinations(world_, *out.goal, object_);
-    const std::optional<ObjectId> here = place_of(world_, object_);
+    const std::optional<ObjectId> here = language::place_of(world_, object_);
     const std::string noun = "the " + world_.universe->info(object_).category;
     if (places.empty() || std::all_of(places.begin(), places.end(), [&](ObjectId p) { return p == here; })) {
       fail(out, "no-destination", "That goal does not move " + noun + " from where it is.");

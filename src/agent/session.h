@@ -74,7 +74,10 @@ class TaskLearningAgent::Session {
     bool asked_about_task = false;  // the task-step question was asked at least once
     bool finishing = false;         // the teacher said the task is done; the current loop ends first
     bool finished = false;
+    // evaluated, objects and evaluated_order only grow (a lesson keeps their
+    // sizes, not copies: see begin_lesson).
     std::set<ObjectId> evaluated;
+    std::vector<ObjectId> evaluated_order;  // evaluated, in the order inserted
     std::optional<InProgress> in_progress;
     std::vector<ObjectReport> objects;
     int goals_learned = 0;
@@ -93,7 +96,9 @@ class TaskLearningAgent::Session {
   };
   struct Lesson {
     std::string reply;
-    Progress progress;
+    Progress progress;  // without evaluated, evaluated_order and objects: their sizes are below
+    std::size_t evaluated_count = 0;
+    std::size_t objects_count = 0;
     Knowledge knowledge;
     State world;
     std::size_t history = 0;

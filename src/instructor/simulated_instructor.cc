@@ -17,10 +17,9 @@ namespace {
 constexpr int kInstructorSearchDepth = 8;
 
 bool has_objects_at(const World& world, const std::vector<ObjectId>& places) {
-  for (const Fact& f : world.state.facts())
-    if ((f.predicate == world.vocabulary.on || f.predicate == world.vocabulary.in) && f.arity == 2 &&
-        std::find(places.begin(), places.end(), f.args[1]) != places.end())
-      return true;
+  for (ObjectId place : places)
+    for (PredicateId relation : {world.vocabulary.on, world.vocabulary.in})
+      if (!world.state.facts_with_second(relation, 2, place).empty()) return true;
   return false;
 }
 

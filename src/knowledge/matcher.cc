@@ -136,13 +136,17 @@ class Unifier {
     // A negative condition whose variables nothing binds cannot be decided:
     // the rule does not match. Learned rules never contain one.
     if (!c.positive) return;
-    auto facts = query_.state->facts();
-    Fact low;
-    low.predicate = c.atom.predicate;
-    auto it = std::lower_bound(facts.begin(), facts.end(), low);
-    for (; it != facts.end() && it->predicate == c.atom.predicate; ++it) {
+    // Facts of the condition's predicate, in the state's order; only those
+    // about its first argument when that is known (O(log n) to find).
+    // (An unbound variable for the object of interest can only take that.)
+    ObjectId first = c.atom.arity > 0 ? binding_[c.atom.args[0]] : kUnbound;
+    if (first == kUnbound && c.atom.arity > 0 && rule_->variables[c.atom.args[0]].object_of_interest)
+      first = query_.object_of_interest;
+    const FactRange facts = first != kUnbound ? query_.state->facts_of(c.atom.predicate, c.atom.arity, first)
+                                              : query_.state->facts_of(c.atom.predicate);
+    for (const Fact& fact : facts) {
       Newly newly;
-      if (!bind(c.atom, *it, newly)) continue;
+      if (!bind(c.atom, fact, newly)) continue;
       match_conditions(j + 1, found);
       unbind(newly);
     }

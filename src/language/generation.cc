@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "util/text.h"
+#include "world/state_lookup.h"
 
 namespace apprentice::language {
 namespace {
@@ -83,10 +84,11 @@ std::string spoken_category(const World& world, ObjectId object) {
 }
 
 std::optional<ObjectId> place_of(const World& world, ObjectId object) {
+  // The first (on|in object ?p) in the state's order, in O(log n).
   const Vocabulary& v = world.vocabulary;
-  for (const Fact& f : world.state.facts())
-    if ((f.predicate == v.on || f.predicate == v.in) && f.arity == 2 && f.args[0] == object) return f.args[1];
-  return std::nullopt;
+  const std::optional<Fact> first = first_fact({world.state.facts_of(v.on, 2, object), world.state.facts_of(v.in, 2, object)});
+  if (!first) return std::nullopt;
+  return first->args[1];
 }
 
 namespace {

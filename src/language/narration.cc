@@ -6,6 +6,7 @@
 
 #include "language/generation.h"
 #include "util/text.h"
+#include "world/state_lookup.h"
 
 namespace apprentice::language {
 namespace {
@@ -195,7 +196,7 @@ Clause failed_precondition(const World& world, const State& state, const Literal
   Clause c;
   if (f.predicate == v.holding && f.arity == 1 && literal.positive) return c.word("I am not holding").thing(f.args[0]);
   if (f.predicate == v.handempty && literal.positive) {
-    for (const Fact& held : state.facts())
+    for (const Fact& held : state.facts_of(v.holding))
       if (held.predicate == v.holding && held.arity == 1) return c.word("I am holding").thing(held.args[0]);
     return c.word("my hand is not empty");
   }
@@ -292,14 +293,15 @@ std::string spoken_name(const World& world, ObjectId object) {
 }
 
 std::string spoken_location(const World& world, ObjectId object) {
+  // The first of (on object ?p), (in object ?p) and (holding object) in the
+  // state's order, each found in O(log n).
   const Vocabulary& v = world.vocabulary;
-  for (const Fact& f : world.state.facts()) {
-    if (f.arity == 0 || f.args[0] != object) continue;
-    if (f.predicate == v.on && f.arity == 2) return "on " + spoken_name(world, f.args[1]);
-    if (f.predicate == v.in && f.arity == 2) return "in " + spoken_name(world, f.args[1]);
-    if (f.predicate == v.holding && f.arity == 1) return "in my hand";
-  }
-  return "";
+  const std::optional<Fact> first = first_fact({world.state.facts_of(v.on, 2, object),
+                                                world.state.facts_of(v.in, 2, object),
+                                                world.state.facts_of(v.holding, 1, object)});
+  if (!first) return "";
+  if (first->predicate == v.holding && first->arity == 1) return "in my hand";
+  return (first->predicate == v.on ? "on " : "in ") + spoken_name(world, first->args[1]);
 }
 
 std::string spoken_name_and_location(const World& world, ObjectId object) {

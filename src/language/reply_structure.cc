@@ -258,10 +258,8 @@ class StructureReader {
   }
 
   bool holds_items(ObjectId place) const {
-    for (const Fact& f : in_.world.state.facts())
-      if ((f.predicate == in_.world.vocabulary.on || f.predicate == in_.world.vocabulary.in) && f.arity == 2 &&
-          f.args[1] == place)
-        return true;
+    for (PredicateId relation : {in_.world.vocabulary.on, in_.world.vocabulary.in})
+      if (!in_.world.state.facts_with_second(relation, 2, place).empty()) return true;
     return false;
   }
 

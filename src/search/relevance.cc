@@ -1,7 +1,9 @@
 #include "search/relevance.h"
 
 #include <algorithm>
+#include <limits>
 #include <optional>
+#include <set>
 
 namespace apprentice {
 namespace {
@@ -112,20 +114,24 @@ DomainInteraction analyze_interaction(const Domain& domain) {
 Relevance analyze_relevance(const Domain& domain, const Universe& universe, const State& state, const Goal& goal) {
   const DomainInteraction interaction = analyze_interaction(domain);
   Relevance out;
+  // Sublinear in the number of objects: only the goal's objects, the ones
+  // held and those of the types that fill non-local parameters are visited
+  // (plus what is kept), each fact found by an indexed query.
   const std::size_t n = universe.size();
-  std::vector<bool> keep(n, false);
-  for (ObjectId o : goal.objects()) keep[o] = true;
-  std::vector<bool> required = keep;  // kept whatever the domain says
+  std::set<ObjectId> keep;
+  for (ObjectId o : goal.objects()) keep.insert(o);
+  std::set<ObjectId> required = keep;  // kept whatever the domain says
 
   // Condition 3 against this state and goal: exactly one of h and the g
   // facts holds, and the goal never asks for h or g to be false.
   std::optional<std::string> off;
   for (const DomainInteraction::Hand& hand : interaction.hands) {
     std::size_t held = 0;
-    for (const Fact& f : state.facts()) {
-      if (f.predicate == hand.holding && f.arity == 1) {
+    for (const Fact& f : state.facts_of(hand.holding)) {
+      if (f.arity == 1) {
         ++held;
-        keep[f.args[0]] = required[f.args[0]] = true;
+        keep.insert(f.args[0]);
+        required.insert(f.args[0]);
       }
     }
     const bool empty = state.holds(Fact(hand.empty, std::initializer_list<ObjectId>{}));
@@ -153,34 +159,31 @@ Relevance analyze_relevance(const Domain& domain, const Universe& universe, cons
       for (const LiteralSchema& l : schema.preconditions)
         if (domain.is_static(l.atom.predicate) && l.atom.parameters.size() == 1 && l.atom.parameters[0] == p)
           unary_static.push_back(&l);
-      std::vector<bool> type_fits(domain.types.size(), false);
+      std::vector<ObjectId> fitting;
       for (std::size_t t = 0; t < domain.types.size(); ++t)
-        type_fits[t] = domain.is_subtype(static_cast<TypeId>(t), schema.parameters[p].type);
+        if (domain.is_subtype(static_cast<TypeId>(t), schema.parameters[p].type)) {
+          const std::vector<ObjectId>& of_type = universe.of_type(static_cast<TypeId>(t));
+          fitting.insert(fitting.end(), of_type.begin(), of_type.end());
+        }
+      std::sort(fitting.begin(), fitting.end());
       std::vector<ObjectId> newly_kept;
-      for (std::size_t o = 0; o < n; ++o) {
-        const auto id = static_cast<ObjectId>(o);
-        if (!type_fits[universe.info(id).type]) continue;
+      for (ObjectId id : fitting) {
         bool fills = std::all_of(unary_static.begin(), unary_static.end(), [&](const LiteralSchema* l) {
           return state.holds(Fact(l->atom.predicate, {id})) == l->positive;
         });
         if (!fills) continue;
-        if (!keep[o]) newly_kept.push_back(id);
-        keep[o] = true;
+        if (keep.insert(id).second) newly_kept.push_back(id);
       }
       if (!newly_kept.empty())
         out.notes.push_back("relevance: keeps " + examples(universe, newly_kept) + " because " +
                             interaction.reason[a][p]);
     }
   }
-  for (std::size_t o = 0; o < n; ++o) {
-    if (keep[o]) {
-      out.objects.push_back(static_cast<ObjectId>(o));
-      if (!required[o] && universe.info(static_cast<ObjectId>(o)).kind == ObjectKind::kItem)
-        ++out.kept_for_interaction;
-    } else {
-      ++out.pruned;
-    }
+  for (ObjectId o : keep) {
+    out.objects.push_back(o);
+    if (!required.count(o) && universe.info(o).kind == ObjectKind::kItem) ++out.kept_for_interaction;
   }
+  out.pruned = n - out.objects.size();
   std::string summary = "relevance: " + std::to_string(out.objects.size()) + " of " + std::to_string(n) +
                         " objects can matter to the goal; " + std::to_string(out.pruned) + " pruned";
   if (out.pruned > 0)
@@ -198,12 +201,37 @@ std::vector<ObjectId> relevant_objects(const Domain& domain, const Universe& uni
 }
 
 State project_state(const State& state, const std::vector<ObjectId>& objects) {
+  // The facts all of whose arguments are kept: for each (predicate, arity)
+  // present, those about each kept object as first argument (O(log n) each),
+  // so O(predicates * objects * log n), not a scan of every fact.
   std::vector<Fact> kept;
-  for (const Fact& fact : state.facts()) {
-    bool all_in = true;
+  auto all_kept = [&](const Fact& fact) {
     for (ObjectId o : fact.arguments())
-      if (!std::binary_search(objects.begin(), objects.end(), o)) all_in = false;
-    if (all_in) kept.push_back(fact);
+      if (!std::binary_search(objects.begin(), objects.end(), o)) return false;
+    return true;
+  };
+  Fact at;  // the first (predicate, arity) not yet done
+  for (FactRange rest = state.facts_from(at); !rest.empty(); rest = state.facts_from(at)) {
+    const Fact& first = rest.front();
+    at = Fact();
+    at.predicate = first.predicate;
+    at.arity = first.arity;
+    if (first.arity == 0) {
+      kept.push_back(first);
+    } else {
+      for (ObjectId o : objects)
+        for (const Fact& fact : state.facts_of(first.predicate, first.arity, o))
+          if (all_kept(fact)) kept.push_back(fact);
+    }
+    // Past every fact of this predicate and arity.
+    if (at.arity < kMaxArity) {
+      ++at.arity;
+    } else if (at.predicate < std::numeric_limits<PredicateId>::max()) {
+      ++at.predicate;
+      at.arity = 0;
+    } else {
+      break;
+    }
   }
   return State(std::move(kept));
 }

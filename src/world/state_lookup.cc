@@ -1,16 +1,16 @@
 #include "world/state_lookup.h"
 
-#include <algorithm>
-
 namespace apprentice {
 
-std::span<const Fact> facts_about(const State& state, PredicateId predicate, ObjectId first) {
-  const std::span<const Fact> facts = state.facts();
-  const Fact lowest(predicate, {first, ObjectId{0}});
-  auto begin = std::lower_bound(facts.begin(), facts.end(), lowest);
-  auto end = begin;
-  while (end != facts.end() && end->predicate == predicate && end->arity == 2 && end->args[0] == first) ++end;
-  return {begin, end};
+FactRange facts_about(const State& state, PredicateId predicate, ObjectId first) {
+  return state.facts_of(predicate, 2, first);
+}
+
+std::optional<Fact> first_fact(std::initializer_list<FactRange> ranges) {
+  std::optional<Fact> first;
+  for (const FactRange& range : ranges)
+    if (!range.empty() && (!first || range.front() < *first)) first = range.front();
+  return first;
 }
 
 }  // namespace apprentice

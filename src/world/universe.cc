@@ -39,6 +39,10 @@ ObjectId Universe::add(ObjectInfo info) {
   auto id = static_cast<ObjectId>(objects_.size());
   auto [it, inserted] = by_id_.emplace(info.id, id);
   APPRENTICE_CHECK_MSG(inserted, "duplicate object id");
+  by_category_[info.category].push_back(id);
+  by_kind_.at(static_cast<std::size_t>(info.kind)).push_back(id);
+  if (by_type_.size() <= info.type) by_type_.resize(static_cast<std::size_t>(info.type) + 1);
+  by_type_[info.type].push_back(id);
   objects_.push_back(std::move(info));
   return id;
 }
@@ -49,18 +53,19 @@ std::optional<ObjectId> Universe::find(std::string_view id) const {
   return it->second;
 }
 
-std::vector<ObjectId> Universe::with_category(std::string_view category) const {
-  std::vector<ObjectId> out;
-  for (std::size_t i = 0; i < objects_.size(); ++i)
-    if (objects_[i].category == category) out.push_back(static_cast<ObjectId>(i));
-  return out;
+const std::vector<ObjectId>& Universe::with_category(std::string_view category) const {
+  static const std::vector<ObjectId> kNone;
+  auto it = by_category_.find(std::string(category));
+  return it == by_category_.end() ? kNone : it->second;
 }
 
-std::vector<ObjectId> Universe::of_kind(ObjectKind kind) const {
-  std::vector<ObjectId> out;
-  for (std::size_t i = 0; i < objects_.size(); ++i)
-    if (objects_[i].kind == kind) out.push_back(static_cast<ObjectId>(i));
-  return out;
+const std::vector<ObjectId>& Universe::of_kind(ObjectKind kind) const {
+  return by_kind_.at(static_cast<std::size_t>(kind));
+}
+
+const std::vector<ObjectId>& Universe::of_type(TypeId type) const {
+  static const std::vector<ObjectId> kNone;
+  return type < by_type_.size() ? by_type_[type] : kNone;
 }
 
 }  // namespace apprentice

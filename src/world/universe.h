@@ -2,6 +2,7 @@
 // are stable for the life of a scenario.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -47,14 +48,19 @@ class Universe {
   const ObjectInfo& info(ObjectId id) const { return objects_.at(id); }
   const std::string& name(ObjectId id) const { return objects_.at(id).id; }
   std::optional<ObjectId> find(std::string_view id) const;
-  // In id order.
-  std::vector<ObjectId> with_category(std::string_view category) const;
-  std::vector<ObjectId> of_kind(ObjectKind kind) const;
+  // In id order; from indexes kept by add(), so O(1) to find.
+  const std::vector<ObjectId>& with_category(std::string_view category) const;
+  const std::vector<ObjectId>& of_kind(ObjectKind kind) const;
+  // The objects whose type is exactly `type` (not a subtype), in id order.
+  const std::vector<ObjectId>& of_type(TypeId type) const;
   const std::vector<ObjectInfo>& objects() const { return objects_; }
 
  private:
   std::vector<ObjectInfo> objects_;
   std::unordered_map<std::string, ObjectId> by_id_;
+  std::unordered_map<std::string, std::vector<ObjectId>> by_category_;
+  std::array<std::vector<ObjectId>, 3> by_kind_;  // by ObjectKind
+  std::vector<std::vector<ObjectId>> by_type_;    // by TypeId
 };
 
 }  // namespace apprentice
