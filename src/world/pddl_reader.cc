@@ -79,7 +79,8 @@ class DomainReader {
       const SExpr& item = list.items[i];
       if (item.is_list) return fail(item, "expected a name, not a list");
       if (item.atom == "-") {
-        if (i + 1 >= list.items.size() || list.items[i + 1].is_list)
+        // "a - - b": the second '-' is not a type name (found by fuzz_pddl).
+        if (i + 1 >= list.items.size() || list.items[i + 1].is_list || list.items[i + 1].atom == "-")
           return fail(item, "expected a type name after '-'");
         if (pending.empty()) return fail(item, "expected a name before '-'");
         for (const SExpr* name : pending) {

@@ -163,6 +163,17 @@ TEST(PddlReader, TypeCycleIsRefused) {
   EXPECT_THAT(domain.error().message, ::testing::StartsWith("d.pddl:3:"));
 }
 
+// Found by a 10-minute run of fuzz_pddl: "item - - place" was read with
+// "-" as the parent type, and the domain written from it did not read back.
+TEST(PddlReader, ADashIsNotATypeName) {
+  std::vector<std::string> lines = base_domain();
+  lines[2] = "  (:types item - - place)";
+  auto domain = parse_domain(join_lines(lines), "d.pddl");
+  ASSERT_FALSE(domain.has_value());
+  EXPECT_THAT(domain.error().message, HasSubstr("expected a type name after '-'"));
+  EXPECT_THAT(domain.error().message, ::testing::StartsWith("d.pddl:3:"));
+}
+
 TEST(PddlReader, EmptyFile) {
   auto domain = parse_domain("  ; nothing here\n", "empty.pddl");
   ASSERT_FALSE(domain.has_value());
