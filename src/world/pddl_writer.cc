@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cctype>
 #include <map>
 
@@ -16,6 +17,10 @@ std::string write_atom_schema(const Domain& domain, const ActionSchema& action, 
 }
 
 std::string type_suffix(const Domain& domain, TypeId type) {
+  // Without :typing every name is an object, and a typed list would not
+  // read back ("typed names need :typing"; found by fuzz_pddl).
+  const auto& r = domain.requirements;
+  if (std::find(r.begin(), r.end(), "typing") == r.end()) return "";
   return " - " + domain.types[type].name;
 }
 

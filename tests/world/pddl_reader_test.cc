@@ -174,6 +174,17 @@ TEST(PddlReader, ADashIsNotATypeName) {
   EXPECT_THAT(domain.error().message, ::testing::StartsWith("d.pddl:3:"));
 }
 
+// Found by a 10-minute run of fuzz_pddl: a domain without :typing was
+// written with "?x0 - object" parameters, which did not read back.
+TEST(PddlReader, AnUntypedDomainIsWrittenUntypedAndReadsBack) {
+  auto domain = parse_domain("(define (domain d) (:predicates (held ?m)))", "d.pddl");
+  ASSERT_TRUE(domain.has_value()) << domain.error().message;
+  const std::string written = write_domain(*domain);
+  auto again = parse_domain(written, "written.pddl");
+  ASSERT_TRUE(again.has_value()) << again.error().message;
+  EXPECT_EQ(write_domain(*again), written);
+}
+
 TEST(PddlReader, EmptyFile) {
   auto domain = parse_domain("  ; nothing here\n", "empty.pddl");
   ASSERT_FALSE(domain.has_value());
