@@ -81,32 +81,31 @@ std::vector<std::size_t> piece_sizes(std::size_t count, std::size_t max, std::si
   return sizes;
 }
 
-// Makes nodes of `height` from the entries of one (possibly oversized)
-// node: facts for a leaf, children for an inner node; appends them to out.
-void emit_leaves(std::vector<Fact> facts, std::vector<NodePtr>& out) {
-  if (facts.empty()) return;
-  if (facts.size() <= kLeafMax) {
-    out.push_back(make_leaf(std::move(facts)));
+// Makes nodes from the entries of one (possibly oversized) node, each of at
+// most `max` entries (about three quarters of `max` when it must be cut), by
+// `make`; appends them to out. For leaves the entries are facts, for inner
+// nodes children.
+template <typename Entry, typename Make>
+void emit_nodes(std::vector<Entry> entries, std::size_t max, Make make, std::vector<NodePtr>& out) {
+  if (entries.empty()) return;
+  if (entries.size() <= max) {
+    out.push_back(make(std::move(entries)));
     return;
   }
   std::size_t at = 0;
-  for (std::size_t size : piece_sizes(facts.size(), kLeafMax, kLeafMax * 3 / 4)) {
-    out.push_back(make_leaf(std::vector<Fact>(facts.begin() + at, facts.begin() + at + size)));
+  for (std::size_t size : piece_sizes(entries.size(), max, max * 3 / 4)) {
+    out.push_back(make(std::vector<Entry>(entries.begin() + at, entries.begin() + at + size)));
     at += size;
   }
 }
 
+void emit_leaves(std::vector<Fact> facts, std::vector<NodePtr>& out) {
+  emit_nodes(std::move(facts), kLeafMax, make_leaf, out);
+}
+
 void emit_inner(std::uint8_t height, std::vector<NodePtr> children, std::vector<NodePtr>& out) {
-  if (children.empty()) return;
-  if (children.size() <= kInnerMax) {
-    out.push_back(make_inner(height, std::move(children)));
-    return;
-  }
-  std::size_t at = 0;
-  for (std::size_t size : piece_sizes(children.size(), kInnerMax, kInnerMax * 3 / 4)) {
-    out.push_back(make_inner(height, std::vector<NodePtr>(children.begin() + at, children.begin() + at + size)));
-    at += size;
-  }
+  emit_nodes(std::move(children), kInnerMax,
+             [height](std::vector<NodePtr> part) { return make_inner(height, std::move(part)); }, out);
 }
 
 }  // namespace
