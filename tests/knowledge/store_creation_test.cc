@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <random>
 #include <set>
@@ -176,12 +177,27 @@ TEST_F(StoreCreationTest, KilledAtRandomWhileCreatingStoresLeavesOnlyCompleteOne
   for (int trial = 0; trial < 10; ++trial) {
     const fs::path trial_dir = dir_ / ("trial-" + std::to_string(trial));
     fs::create_directory(trial_dir);
+    // The child says when its first store is whole, so that on a loaded
+    // machine the kill does not come before it has run at all.
+    int first_done[2];
+    ASSERT_EQ(::pipe(first_done), 0);
     pid_t child = ::fork();
     ASSERT_GE(child, 0);
     if (child == 0) {
-      for (int i = 0;; ++i)
+      ::close(first_done[0]);
+      for (int i = 0;; ++i) {
         (void)KnowledgeStore::open(trial_dir / ("store-" + std::to_string(i) + ".sqlite"), StoreAccess::kReadWrite);
+        if (i == 0) {
+          (void)!::write(first_done[1], "1", 1);
+          ::close(first_done[1]);
+        }
+      }
     }
+    ::close(first_done[1]);
+    char byte = 0;
+    while (::read(first_done[0], &byte, 1) < 0 && errno == EINTR) {
+    }
+    ::close(first_done[0]);
     std::this_thread::sleep_for(std::chrono::microseconds(std::uniform_int_distribution<long>(0, 3 * creation_us)(random)));
     ::kill(child, SIGKILL);
     int status = 0;
