@@ -15,6 +15,7 @@
 #include <SQLiteCpp/SQLiteCpp.h>
 
 #include "knowledge/store_creation.h"
+#include "util/file.h"
 #include "util/json.h"
 #include "util/text.h"
 
@@ -320,9 +321,7 @@ Result<KnowledgeStore> KnowledgeStore::open(const std::filesystem::path& path, S
   if (!read_only) remove_abandoned_creations(path);
   int fd = -1;
   for (int attempt = 0; attempt < 3; ++attempt) {
-    do {
-      fd = ::open(path.c_str(), read_only ? O_RDONLY | O_CLOEXEC : O_RDWR | O_CLOEXEC);
-    } while (fd < 0 && errno == EINTR);
+    fd = open_retrying(path, read_only ? O_RDONLY | O_CLOEXEC : O_RDWR | O_CLOEXEC);
     if (fd >= 0 || errno != ENOENT || read_only || attempt == 2) break;
     if (auto created = create_store_file(path); !created) return tl::unexpected(created.error());
   }
@@ -341,10 +340,7 @@ Result<KnowledgeStore> KnowledgeStore::open(const std::filesystem::path& path, S
   if (S_ISDIR(info.st_mode))
     return make_error(ErrorCode::kInvalidInput, path.string() + ": is a directory, not a knowledge store");
   if (!S_ISREG(info.st_mode)) return not_a_store(path, "not a regular file");
-  int locked = 0;
-  do {
-    locked = ::flock(fd, (access == StoreAccess::kFresh ? LOCK_EX : LOCK_SH) | LOCK_NB);
-  } while (locked != 0 && errno == EINTR);
+  const int locked = flock_retrying(fd, (access == StoreAccess::kFresh ? LOCK_EX : LOCK_SH) | LOCK_NB);
   if (locked != 0) {
     if (errno == EWOULDBLOCK)
       return make_error(ErrorCode::kIo,

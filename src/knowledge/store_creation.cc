@@ -29,22 +29,6 @@ std::filesystem::path directory_of(const std::filesystem::path& path) {
   return path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
 }
 
-int open_retrying(const std::filesystem::path& path, int flags, mode_t mode = 0) {
-  int fd = -1;
-  do {
-    fd = ::open(path.c_str(), flags, mode);
-  } while (fd < 0 && errno == EINTR);
-  return fd;
-}
-
-int flock_retrying(int fd, int operation) {
-  int result = 0;
-  do {
-    result = ::flock(fd, operation);
-  } while (result != 0 && errno == EINTR);
-  return result;
-}
-
 // 16 hex digits that no other creation picks: getrandom, or else the clock.
 std::string random_hex() {
   std::uint64_t bits = 0;

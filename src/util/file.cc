@@ -1,6 +1,7 @@
 #include "util/file.h"
 
 #include <fcntl.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -23,6 +24,22 @@ tl::unexpected<Error> line_too_long(const std::filesystem::path& path, std::size
 
 }  // namespace
 
+int open_retrying(const std::filesystem::path& path, int flags, unsigned mode) {
+  int fd = -1;
+  do {
+    fd = ::open(path.c_str(), flags, static_cast<mode_t>(mode));
+  } while (fd < 0 && errno == EINTR);
+  return fd;
+}
+
+int flock_retrying(int fd, int operation) {
+  int result = 0;
+  do {
+    result = ::flock(fd, operation);
+  } while (result != 0 && errno == EINTR);
+  return result;
+}
+
 FileDescriptor::~FileDescriptor() {
   if (fd_ >= 0) ::close(fd_);
 }
@@ -44,10 +61,7 @@ std::string describe_size(std::size_t bytes) {
 }
 
 Result<std::string> read_input_file(const std::filesystem::path& path, InputLimits limits) {
-  int fd = -1;
-  do {
-    fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  } while (fd < 0 && errno == EINTR);
+  const int fd = open_retrying(path, O_RDONLY | O_CLOEXEC);
   if (fd < 0) {
     const int error = errno;
     if (error == ENOENT) return make_error(ErrorCode::kNotFound, path.string() + ": no such file");

@@ -27,6 +27,11 @@ struct InputLimits {
   std::size_t max_line_bytes = kMaxInputLineBytes;
 };
 
+// open(2) and flock(2), retried while a signal interrupts them (EINTR);
+// otherwise as the system calls: -1 (or non-zero) with errno set.
+int open_retrying(const std::filesystem::path& path, int flags, unsigned mode = 0);
+int flock_retrying(int fd, int operation);
+
 // Owns a file descriptor (-1: none) and closes it when destroyed.
 class FileDescriptor {
  public:
