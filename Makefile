@@ -11,6 +11,9 @@ BUILD ?= build
 # time on 2 cores; for debug info, make BUILD_TYPE=RelWithDebInfo (a build
 # directory keeps the type it was configured with until given another).
 BUILD_TYPE ?= Release
+# Unity builds (CMakeLists.txt, APPRENTICE_UNITY): each module's files
+# compile in batches; make UNITY=OFF compiles file by file.
+UNITY ?= ON
 ASAN_BUILD ?= build-asan
 
 .PHONY: all deps build run test test-release test-asan test-fuzz fuzz-long bench figure clean
@@ -23,7 +26,7 @@ deps:
 	@bash scripts/install-deps.sh
 
 build: deps
-	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) -DCMAKE_CXX_FLAGS_RELEASE="-O2 -DNDEBUG"
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) -DCMAKE_CXX_FLAGS_RELEASE="-O2 -DNDEBUG" -DAPPRENTICE_UNITY=$(UNITY)
 	cmake --build $(BUILD) -j $(JOBS)
 
 # The LLM conditions run too when an LLM is at hand: $$APPRENTICE_LLM, or
@@ -46,7 +49,7 @@ test-release: build
 # The Python module and its tests run in the release build only (pybind11
 # at -O0 costs minutes).
 test-asan: deps
-	cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-g1 -O1" -DAPPRENTICE_SANITIZE=ON -DAPPRENTICE_BENCH=OFF -DAPPRENTICE_PYTHON=OFF
+	cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-g1 -O1" -DAPPRENTICE_SANITIZE=ON -DAPPRENTICE_BENCH=OFF -DAPPRENTICE_PYTHON=OFF -DAPPRENTICE_UNITY=$(UNITY)
 	cmake --build $(ASAN_BUILD) -j $(JOBS)
 	cd $(ASAN_BUILD) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j $(JOBS)
 

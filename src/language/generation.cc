@@ -2,16 +2,12 @@
 
 #include <algorithm>
 
+#include "language/narration.h"
 #include "util/text.h"
 #include "world/state_lookup.h"
 
 namespace apprentice::language {
 namespace {
-
-std::string capitalized(std::string text) {
-  if (!text.empty() && text[0] >= 'a' && text[0] <= 'z') text[0] = static_cast<char>(text[0] - 'a' + 'A');
-  return text;
-}
 
 // Strips final punctuation and spaces: the question supplies its own.
 std::string_view bare(std::string_view text) {
@@ -82,6 +78,8 @@ std::string spoken_category(const World& world, ObjectId object) {
   std::replace(name.begin(), name.end(), '-', ' ');
   return name;
 }
+
+bool openable(const World& world, ObjectId id) { return world.state.holds(Fact(world.vocabulary.openable, {id})); }
 
 std::optional<ObjectId> place_of(const World& world, ObjectId object) {
   // The first (on|in object ?p) in the state's order, in O(log n).
@@ -164,7 +162,7 @@ std::string location_phrase(const World& world, ObjectId object) {
   return (world.state.holds(Fact(world.vocabulary.on, {object, *where})) ? "on " : "in ") + noun_for(world, *where);
 }
 
-std::string say_task_name(std::string_view name) { return capitalized(std::string(bare(name))) + "."; }
+std::string say_task_name(std::string_view name) { return capitalize(std::string(bare(name))) + "."; }
 
 namespace {
 
@@ -194,7 +192,7 @@ std::string say_subtask(std::string_view verb, const World& world, ObjectId plac
 }
 
 std::string say_subtask(std::string_view verb, const World& world, std::span<const ObjectId> places) {
-  return capitalized(std::string(verb)) + " an object that is " + at_places(world, places) + ".";
+  return capitalize(std::string(verb)) + " an object that is " + at_places(world, places) + ".";
 }
 
 std::string say_done() { return "You are done."; }
@@ -220,7 +218,7 @@ std::string describe_action(const World& world, const Action& action) {
   if (schema == "pick-up" || schema == "pick-up-from") return "Pick up " + arg(0) + ".";
   if (schema == "put-in") return "Put " + arg(0) + " in " + arg(1) + ".";
   if (schema == "put-on") return "Put " + arg(0) + " on " + arg(1) + ".";
-  return capitalized(format_action(*world.domain, *world.universe, action)) + ".";
+  return capitalize(format_action(*world.domain, *world.universe, action)) + ".";
 }
 
 std::string describe_plan(const World& world, std::span<const Action> actions) {

@@ -27,6 +27,8 @@ std::string noun_for(const World& world, ObjectId object);
 std::string location_phrase(const World& world, ObjectId object);
 // The place the object is on or in now; none if it is held.
 std::optional<ObjectId> place_of(const World& world, ObjectId object);
+// Whether the thing has a door or lid: (openable id) holds.
+bool openable(const World& world, ObjectId id);
 
 // --- Everyday names, for a person ------------------------------------------
 // The category with spaces: "glass tumbler", "walk in pantry".

@@ -5,6 +5,7 @@
 #include <spdlog/spdlog.h>
 
 #include "language/generation.h"
+#include "language/narration.h"
 #include "language/parser.h"
 #include "language/reference.h"
 #include "language/utterance.h"
@@ -20,19 +21,10 @@ std::string spoken(const World& world, ObjectId id) {
   return name;
 }
 
-std::string capitalized(std::string text) {
-  if (!text.empty() && text[0] >= 'a' && text[0] <= 'z') text[0] = static_cast<char>(text[0] - 'a' + 'A');
-  return text;
-}
-
 GroundingFailure affordance(const World& world, std::string_view affordance_name, ObjectId id,
                             std::string message) {
   return {FailureKind::kAffordanceMismatch, std::string(affordance_name) + " " + world.universe->name(id),
           std::move(message)};
-}
-
-bool openable(const World& world, ObjectId id) {
-  return world.state.holds(Fact(world.vocabulary.openable, {id}));
 }
 
 // Grounds the noun phrases of one sentence, remembering how.
@@ -87,7 +79,7 @@ std::optional<ObjectId> Session::item(const NounPhrase& np, std::optional<Object
   auto id = object(np, Role::kItem, located_at);
   if (!id) return std::nullopt;
   if (world_.universe->info(*id).kind != ObjectKind::kItem) {
-    fail(affordance(world_, "grabbable", *id, capitalized("the " + spoken(world_, *id) + " cannot be moved.")));
+    fail(affordance(world_, "grabbable", *id, capitalize("the " + spoken(world_, *id) + " cannot be moved.")));
     return std::nullopt;
   }
   return id;

@@ -17,14 +17,14 @@ bool plural_name(const World& world, ObjectId object) {
 
 // A clause whose noun phrases are still objects, so that one already
 // mentioned can become "it".
-struct Clause {
+struct SpokenClause {
   std::vector<std::variant<std::string, ObjectId>> parts;
 
-  Clause& word(std::string w) {
+  SpokenClause& word(std::string w) {
     parts.emplace_back(std::move(w));
     return *this;
   }
-  Clause& thing(ObjectId o) {
+  SpokenClause& thing(ObjectId o) {
     parts.emplace_back(o);
     return *this;
   }
@@ -46,7 +46,7 @@ struct Clause {
   }
   // What "it" can stand for in this clause after `previous`: the last thing
   // `previous` named, else the first, if this clause names it too.
-  std::optional<ObjectId> pronoun_after(const Clause& previous) const {
+  std::optional<ObjectId> pronoun_after(const SpokenClause& previous) const {
     for (auto candidate : {previous.last_thing(), previous.first_thing()})
       if (candidate && mentions(*candidate)) return candidate;
     return std::nullopt;
@@ -168,10 +168,10 @@ std::string schema_name(const World& world, const Action& action) {
 }
 
 // The action as a clause, in the past tense (`past`) or as a command.
-Clause action_clause(const World& world, const Action& action, bool past) {
+SpokenClause action_clause(const World& world, const Action& action, bool past) {
   const std::string schema = schema_name(world, action);
   auto args = action.arguments();
-  Clause c;
+  SpokenClause c;
   if (schema == "open" && args.size() == 1) return c.word(past ? "opened" : "open").thing(args[0]);
   if (schema == "close" && args.size() == 1) return c.word(past ? "closed" : "close").thing(args[0]);
   if (schema == "pick-up" && !args.empty()) return c.word(past ? "picked up" : "pick up").thing(args[0]);
@@ -190,10 +190,10 @@ Clause action_clause(const World& world, const Action& action, bool past) {
 }
 
 // Why a precondition fails, as a clause about the things involved.
-Clause failed_precondition(const World& world, const State& state, const Literal& literal) {
+SpokenClause failed_precondition(const World& world, const State& state, const Literal& literal) {
   const Vocabulary& v = world.vocabulary;
   const Fact& f = literal.fact;
-  Clause c;
+  SpokenClause c;
   if (f.predicate == v.holding && f.arity == 1 && literal.positive) return c.word("I am not holding").thing(f.args[0]);
   if (f.predicate == v.handempty && literal.positive) {
     for (const Fact& held : state.facts_of(v.holding))
@@ -214,23 +214,23 @@ Clause failed_precondition(const World& world, const State& state, const Literal
 }
 
 // "the table is not a receptacle place".
-Clause not_of_type(const World& world, ObjectId object, TypeId type) {
+SpokenClause not_of_type(const World& world, ObjectId object, TypeId type) {
   const std::string& name = world.domain->types.at(type).name;
-  return Clause().thing(object).word("is not " + std::string(article_for(name)) + " " + spoken_category(name));
+  return SpokenClause().thing(object).word("is not " + std::string(article_for(name)) + " " + spoken_category(name));
 }
 
 // Why one action cannot make a literal hold, as a clause.
-Clause blocker_clause(const World& world, const UnreachableBlocker& blocker) {
+SpokenClause blocker_clause(const World& world, const UnreachableBlocker& blocker) {
   using Kind = UnreachableBlocker::Kind;
   switch (blocker.kind) {
     case Kind::kWrongType: return not_of_type(world, blocker.object, blocker.type);
     case Kind::kStaticPrecondition: return failed_precondition(world, world.state, blocker.precondition);
     case Kind::kPreconditionNeverHolds:
-      return Clause().word("for that, " + fact_sentence(world, blocker.precondition, "would have to be",
+      return SpokenClause().word("for that, " + fact_sentence(world, blocker.precondition, "would have to be",
                                                         "would have to stop being"));
     case Kind::kNoObjectFits: break;
   }
-  return Clause().word("no other object here fits the action \"" + world.domain->actions.at(blocker.schema).name + "\"");
+  return SpokenClause().word("no other object here fits the action \"" + world.domain->actions.at(blocker.schema).name + "\"");
 }
 
 // "The garbage can never be closed: it has no door, so I cannot close it."
@@ -244,7 +244,7 @@ std::string never_holds_sentence(const World& world, const UnreachableLiteral& u
   std::vector<std::string> reasons, said;
   std::vector<bool> has_action;
   for (const UnreachableBlocker& b : u.blockers) {
-    Clause reason = blocker_clause(world, b);
+    SpokenClause reason = blocker_clause(world, b);
     const bool about_subject = l.fact.arity > 0 && reason.first_thing() == l.fact.args[0];
     std::string text = about_subject ? reason.render(world, l.fact.args[0]) : reason.render(world);
     auto known = std::find(reasons.begin(), reasons.end(), text);
@@ -415,7 +415,7 @@ std::string expected_fact(const World& world, const Literal& literal) {
 // --- What was done -------------------------------------------------------------
 
 std::string report_actions(const World& world, std::span<const Action> actions) {
-  std::vector<Clause> clauses;
+  std::vector<SpokenClause> clauses;
   for (std::size_t i = 0; i < actions.size(); ++i) {
     const Action& a = actions[i];
     // Picking up from a surface and then putting down is one step to say.
@@ -430,8 +430,8 @@ std::string report_actions(const World& world, std::span<const Action> actions) 
   }
   if (clauses.empty()) return "";
   std::vector<std::string> said;
-  const Clause* previous = nullptr;
-  for (const Clause& c : clauses) {
+  const SpokenClause* previous = nullptr;
+  for (const SpokenClause& c : clauses) {
     said.push_back(c.render(world, previous ? c.pronoun_after(*previous) : std::nullopt));
     previous = &c;
   }
@@ -445,7 +445,7 @@ std::string action_phrase(const World& world, const Action& action) {
 std::string refusal(const World& world, const Action& action) {
   const Domain& domain = *world.domain;
   if (!why_not_applicable(domain, *world.universe, world.state, action)) return "";
-  Clause reason;
+  SpokenClause reason;
   bool found = false;
   const ActionSchema& schema = domain.actions.at(action.schema);
   for (std::size_t i = 0; i < action.arity && i < schema.parameters.size(); ++i) {
@@ -464,7 +464,7 @@ std::string refusal(const World& world, const Action& action) {
       break;
     }
   }
-  Clause act = action_clause(world, action, false);
+  SpokenClause act = action_clause(world, action, false);
   if (!found) return "I cannot " + act.render(world) + ".";
   // "it" stands for what the reason is about.
   return capitalize(reason.render(world)) + ", so I cannot " + act.render(world, reason.first_thing()) + ".";

@@ -12,24 +12,21 @@
 namespace apprentice::language {
 namespace {
 
-using Words = std::span<const std::string>;
+using WordSpan = std::span<const std::string>;
 
-bool is_one_of(std::string_view word, std::initializer_list<std::string_view> set) {
-  return std::find(set.begin(), set.end(), word) != set.end();
-}
 
 bool is_article(std::string_view w) { return is_one_of(w, {"the", "a", "an"}); }
-bool is_copula(std::string_view w) { return w == "is" || w == "are"; }
+bool is_grammar_copula(std::string_view w) { return w == "is" || w == "are"; }
 bool is_in(std::string_view w) { return is_one_of(w, {"in", "into", "inside"}); }
 bool is_on(std::string_view w) { return w == "on" || w == "onto"; }
 
-// Words that structure a sentence and so can never be part of a noun phrase.
+// WordSpan that structure a sentence and so can never be part of a noun phrase.
 bool is_structural(std::string_view w) {
-  return is_article(w) || is_copula(w) || is_in(w) || is_on(w) ||
+  return is_article(w) || is_grammar_copula(w) || is_in(w) || is_on(w) ||
          is_one_of(w, {",", "if", "then", "that", "from"});
 }
 
-std::string phrase(Words words) { return join(std::vector<std::string>(words.begin(), words.end()), " "); }
+std::string phrase(WordSpan words) { return join(std::vector<std::string>(words.begin(), words.end()), " "); }
 
 Error expected(std::string_view what, std::string_view where) {
   return Error{ErrorCode::kInvalidInput,
@@ -39,7 +36,7 @@ Error expected(std::string_view what, std::string_view where) {
 // An optional article and then at least one word. `allow_and` admits "and"
 // inside the phrase ("half and half"); place phrases after "in"/"on" refuse
 // it, so that "in the fridge and closed" is not read as one odd place.
-std::optional<NounPhrase> noun_phrase(Words words, bool allow_and) {
+std::optional<NounPhrase> noun_phrase(WordSpan words, bool allow_and) {
   NounPhrase np;
   if (!words.empty() && is_article(words.front())) {
     np.article = words.front();
@@ -54,19 +51,19 @@ std::optional<NounPhrase> noun_phrase(Words words, bool allow_and) {
   return np;
 }
 
-Result<NounPhrase> require_noun_phrase(Words words, bool allow_and, std::string_view where) {
+Result<NounPhrase> require_noun_phrase(WordSpan words, bool allow_and, std::string_view where) {
   if (auto np = noun_phrase(words, allow_and)) return *np;
   if (words.empty()) return tl::unexpected(expected("a noun phrase", where));
   return tl::unexpected(expected("a noun phrase", std::string(where) + ", got " + quoted(phrase(words))));
 }
 
-bool starts_with(Words words, std::initializer_list<std::string_view> prefix) {
+bool starts_with(WordSpan words, std::initializer_list<std::string_view> prefix) {
   if (words.size() < prefix.size()) return false;
   return std::equal(prefix.begin(), prefix.end(), words.begin());
 }
 
 // "in the dish rack" / "on the table" after "an object is".
-Result<std::pair<Relation, NounPhrase>> located(Words words, std::string_view where) {
+Result<std::pair<Relation, NounPhrase>> located(WordSpan words, std::string_view where) {
   if (words.empty() || (!is_in(words[0]) && !is_on(words[0])))
     return tl::unexpected(expected("'in' or 'on'", where));
   Relation relation = is_in(words[0]) ? Relation::kIn : Relation::kOn;
@@ -76,37 +73,37 @@ Result<std::pair<Relation, NounPhrase>> located(Words words, std::string_view wh
 }
 
 // "Repeat the following tasks while an object is on the table."
-Result<LogicalForm> repeat_while(Words w) {
+Result<LogicalForm> repeat_while(WordSpan w) {
   if (!starts_with(w, {"repeat", "the", "following"}) || w.size() < 5 ||
       (w[3] != "tasks" && w[3] != "task") || w[4] != "while")
     return tl::unexpected(expected("'repeat the following tasks while ...'", ""));
-  Words rest = w.subspan(5);
-  if (rest.size() < 3 || (rest[0] != "an" && rest[0] != "a") || rest[1] != "object" || !is_copula(rest[2]))
+  WordSpan rest = w.subspan(5);
+  if (rest.size() < 3 || (rest[0] != "an" && rest[0] != "a") || rest[1] != "object" || !is_grammar_copula(rest[2]))
     return tl::unexpected(expected("'an object is' after 'while'", ""));
   auto loc = located(rest.subspan(3), "after 'an object is'");
   if (!loc) return tl::unexpected(loc.error());
   return RepeatWhile{loc->first, loc->second};
 }
 
-// Words that make a phrasal verb of the verb before them: "put away",
+// WordSpan that make a phrasal verb of the verb before them: "put away",
 // "throw out", "clean up".
-bool is_particle(std::string_view w) { return is_one_of(w, {"away", "back", "out", "up", "down", "off"}); }
+bool is_grammar_particle(std::string_view w) { return is_one_of(w, {"away", "back", "out", "up", "down", "off"}); }
 
 // "Clear an object that is on the table.", "Put away an object that is on
 // the desk." (a phrasal verb's particle stays part of the verb).
-std::optional<Result<LogicalForm>> subtask_command(Words w) {
-  std::size_t verb_words = w.size() > 1 && is_particle(w[1]) ? 2 : 1;
-  Words rest = w.subspan(verb_words);
+std::optional<Result<LogicalForm>> subtask_command(WordSpan w) {
+  std::size_t verb_words = w.size() > 1 && is_grammar_particle(w[1]) ? 2 : 1;
+  WordSpan rest = w.subspan(verb_words);
   if (rest.size() < 4 || (rest[0] != "an" && rest[0] != "a") || rest[1] != "object" || rest[2] != "that")
     return std::nullopt;
-  if (!is_copula(rest[3])) return Result<LogicalForm>(tl::unexpected(expected("'is' after 'an object that'", "")));
+  if (!is_grammar_copula(rest[3])) return Result<LogicalForm>(tl::unexpected(expected("'is' after 'an object that'", "")));
   auto loc = located(rest.subspan(4), "after 'an object that is'");
   if (!loc) return Result<LogicalForm>(tl::unexpected(loc.error()));
   return Result<LogicalForm>(SubtaskCommand{phrase(w.first(verb_words)), loc->first, loc->second});
 }
 
 // The predicate after "is"/"are".
-Result<Conjunct> predicate(const NounPhrase& subject, Words p) {
+Result<Conjunct> predicate(const NounPhrase& subject, WordSpan p) {
   if (p.empty()) return tl::unexpected(expected("a predicate after 'is'", ""));
   if ((is_in(p[0]) || is_on(p[0])) && p.size() > 1) {
     if (auto place = noun_phrase(p.subspan(1), false))
@@ -118,8 +115,8 @@ Result<Conjunct> predicate(const NounPhrase& subject, Words p) {
   return statement;
 }
 
-Result<Conjunct> relation(Words segment) {
-  auto copula = std::find_if(segment.begin(), segment.end(), [](const std::string& w) { return is_copula(w); });
+Result<Conjunct> relation(WordSpan segment) {
+  auto copula = std::find_if(segment.begin(), segment.end(), [](const std::string& w) { return is_grammar_copula(w); });
   auto at = static_cast<std::size_t>(copula - segment.begin());
   if (at == 0) return tl::unexpected(expected("a noun phrase before 'is'", "in " + quoted(phrase(segment))));
   if (segment[0] == "there")
@@ -133,14 +130,14 @@ Result<Conjunct> relation(Words segment) {
 // copula belongs to its neighbour: before the first relation it is part of
 // a subject ("the half and half is ..."), after it part of a predicate
 // ("the dishwasher is closed and started").
-Result<std::vector<Conjunct>> conjunction(Words w) {
+Result<std::vector<Conjunct>> conjunction(WordSpan w) {
   struct Piece { std::size_t begin, end; bool copula; };
   std::vector<Piece> pieces;
   std::size_t start = 0;
   for (std::size_t i = 0; i <= w.size(); ++i) {
     if (i < w.size() && w[i] != "and" && w[i] != ",") continue;
     if (i > start) {
-      bool copula = std::any_of(w.begin() + start, w.begin() + i, [](const std::string& x) { return is_copula(x); });
+      bool copula = std::any_of(w.begin() + start, w.begin() + i, [](const std::string& x) { return is_grammar_copula(x); });
       pieces.push_back({start, i, copula});
     }
     start = i + 1;
@@ -169,7 +166,7 @@ Result<std::vector<Conjunct>> conjunction(Words w) {
   return conjuncts;
 }
 
-Result<LogicalForm> goal_statement(Words w, std::optional<NounPhrase> category) {
+Result<LogicalForm> goal_statement(WordSpan w, std::optional<NounPhrase> category) {
   if (!starts_with(w, {"the", "goal", "is"})) return tl::unexpected(expected("'the goal is that'", ""));
   if (w.size() < 4 || w[3] != "that") return tl::unexpected(expected("'that' after 'the goal is'", ""));
   auto conjuncts = conjunction(w.subspan(4));
@@ -178,8 +175,8 @@ Result<LogicalForm> goal_statement(Words w, std::optional<NounPhrase> category) 
 }
 
 // "If the object is a ketchup then the goal is that ..."
-Result<LogicalForm> goal_description(Words w) {
-  if (!starts_with(w, {"if", "the", "object"}) || w.size() < 4 || !is_copula(w[3]))
+Result<LogicalForm> goal_description(WordSpan w) {
+  if (!starts_with(w, {"if", "the", "object"}) || w.size() < 4 || !is_grammar_copula(w[3]))
     return tl::unexpected(expected("'if the object is'", ""));
   auto then = std::find(w.begin() + 4, w.end(), "then");
   if (then == w.end()) return tl::unexpected(expected("'then'", "after 'if the object is ...'"));
@@ -189,7 +186,7 @@ Result<LogicalForm> goal_description(Words w) {
   return goal_statement(w.subspan(at + 1), *category);
 }
 
-std::size_t find_word(Words w, std::size_t from, bool (*pred)(std::string_view)) {
+std::size_t find_word(WordSpan w, std::size_t from, bool (*pred)(std::string_view)) {
   for (std::size_t i = from; i < w.size(); ++i)
     if (pred(w[i])) return i;
   return w.size();
@@ -197,7 +194,7 @@ std::size_t find_word(Words w, std::size_t from, bool (*pred)(std::string_view))
 
 // "open X", "close X", "pick up X [from Y]", "put [down] X in|on Y"; the
 // primitives' own names "pick-up" and "put-down" are read as those verbs.
-Result<LogicalForm> action(Words w) {
+Result<LogicalForm> action(WordSpan w) {
   ActionCommand command;
   if (w[0] == "open" || w[0] == "close") {
     command.verb = w[0] == "open" ? ActionVerb::kOpen : ActionVerb::kClose;
@@ -231,10 +228,10 @@ Result<LogicalForm> action(Words w) {
   command.verb = ActionVerb::kPut;
   // "put down X", "put away X", "put X back in Y": particles say nothing
   // about where the thing goes.
-  std::size_t start = w.size() > 1 && w[0] == "put" && is_particle(w[1]) ? 2 : 1;
+  std::size_t start = w.size() > 1 && w[0] == "put" && is_grammar_particle(w[1]) ? 2 : 1;
   std::size_t prep = find_word(w, start, [](std::string_view x) { return is_in(x) || is_on(x); });
   if (prep == w.size()) return tl::unexpected(expected("'in' or 'on' and a place", "after 'put'"));
-  std::size_t object_end = prep > start + 1 && is_particle(w[prep - 1]) ? prep - 1 : prep;
+  std::size_t object_end = prep > start + 1 && is_grammar_particle(w[prep - 1]) ? prep - 1 : prep;
   auto object = require_noun_phrase(w.subspan(start, object_end - start), true, "after 'put'");
   if (!object) return tl::unexpected(object.error());
   auto place = require_noun_phrase(w.subspan(prep + 1), false, "after " + quoted(w[prep]));
@@ -253,7 +250,7 @@ bool is_plain_word(std::string_view w) {
 }
 
 // An imperative with an unknown verb names a task: "Tidy kitchen."
-std::optional<LogicalForm> task_name(Words w) {
+std::optional<LogicalForm> task_name(WordSpan w) {
   if (!is_plain_word(w[0]) || is_structural(w[0]) ||
       is_one_of(w[0], {"and", "yes", "no", "you", "there", "what", "who", "where", "when", "why", "how",
                        "i", "it", "this", "goal", "object", "repeat"}))
@@ -305,7 +302,7 @@ Result<LogicalForm> parse(std::string_view sentence) {
   if (tokens.empty()) return make_error(ErrorCode::kInvalidInput, "expected a sentence, got nothing");
   if (tokens.size() > kMaxSentenceWords)
     return make_error(ErrorCode::kInvalidInput, "sentence longer than " + std::to_string(kMaxSentenceWords) + " words");
-  Words w(tokens);
+  WordSpan w(tokens);
   if (w.size() == 1 && (w[0] == "yes" || w[0] == "no")) return Answer{w[0] == "yes"};
   if (starts_with(w, {"you", "are", "done"}) && w.size() == 3) return Done{};
   if (w.size() == 1 && w[0] == "repeat") return Repeat{};

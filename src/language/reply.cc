@@ -102,7 +102,6 @@ std::optional<Reply> scripted(const Grounder& grounder, const World& world, cons
 
 // --- Examples, from the world ---------------------------------------------------
 
-bool openable(const World& world, ObjectId id) { return world.state.holds(Fact(world.vocabulary.openable, {id})); }
 
 // Places that hold something now, in id order.
 std::vector<ObjectId> places_with_things(const World& world) {

@@ -11,9 +11,6 @@
 namespace apprentice::language {
 namespace {
 
-bool is_one_of(std::string_view word, std::initializer_list<std::string_view> set) {
-  return std::find(set.begin(), set.end(), word) != set.end();
-}
 
 struct HouseholdVerb {
   std::string_view base;

@@ -32,7 +32,6 @@ struct Event {
 
 using Events = std::variant<std::vector<Event>, Ambiguous, Problem>;
 
-bool openable(const World& world, ObjectId id) { return world.state.holds(Fact(world.vocabulary.openable, {id})); }
 
 NounPhrase id_phrase(const World& world, ObjectId id) { return NounPhrase{"", {world.universe->name(id)}}; }
 

@@ -12,9 +12,6 @@ namespace {
 
 using Words = std::vector<std::string>;
 
-bool is_one_of(std::string_view word, std::initializer_list<std::string_view> set) {
-  return std::find(set.begin(), set.end(), word) != set.end();
-}
 
 bool contains(const Words& words, const std::vector<std::string_view>& phrase) {
   if (phrase.empty() || words.size() < phrase.size()) return false;

@@ -12,9 +12,6 @@
 namespace apprentice::language {
 namespace {
 
-bool is_one_of(std::string_view word, std::initializer_list<std::string_view> set) {
-  return std::find(set.begin(), set.end(), word) != set.end();
-}
 
 // The words a person may use for a choice: its name's words, its
 // properties and id, and the same of where it is.

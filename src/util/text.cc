@@ -4,6 +4,12 @@
 
 namespace apprentice {
 
+bool is_one_of(std::string_view word, std::initializer_list<std::string_view> set) {
+  for (std::string_view w : set)
+    if (w == word) return true;
+  return false;
+}
+
 std::string to_lower(std::string_view text) {
   std::string out(text);
   for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
