@@ -88,7 +88,13 @@ TaskLearningAgent::Session::Flow<TaskLearningAgent::Session::Heard> TaskLearning
       continue;
     }
     dialogue_->count_reply(asked, *text);
-    if (const auto* ambiguous = std::get_if<language::Ambiguous>(&reply)) {
+    // A reply the question's own reading takes whole ("same as the hammer,
+    // and shut the drawer") is not asked "which drawer?" about.
+    std::optional<language::Reply> rescued;
+    if (rescue && std::holds_alternative<language::Ambiguous>(reply)) rescued = rescue(*text);
+    if (rescued) {
+      reply = std::move(*rescued);
+    } else if (const auto* ambiguous = std::get_if<language::Ambiguous>(&reply)) {
       auto settled = settle(*ambiguous, asked, context, *text);
       if (!settled) return tl::unexpected(settled.error());
       reply = *settled;
@@ -196,16 +202,15 @@ void TaskLearningAgent::Session::status(const Question& asked) {
   std::string seen = "I see this: " + (doors.empty() ? std::string() : language::list_phrase(doors) + ".");
   for (ObjectId place = 0; place < u.size(); ++place) {
     if (u.info(place).kind == ObjectKind::kItem) continue;
-    std::vector<std::string> items;
-    for (const Fact& f : w.state.facts())
-      if ((f.predicate == v.on || f.predicate == v.in) && f.arity == 2 && f.args[1] == place)
-        items.push_back(language::spoken_name(w, f.args[0]));
+    std::vector<ObjectId> items;
+    for (PredicateId relation : {v.on, v.in})
+      for (const Fact& f : w.state.facts_with_second(relation, 2, place)) items.push_back(f.args[0]);
     if (!items.empty())
       seen += " " + language::capitalize(std::string(language::relation_word(w, place))) + " " +
-              language::spoken_name(w, place) + ": " + language::list_phrase(items) + ".";
+              language::spoken_name(w, place) + ": " + language::spoken_things(w, items) + ".";
   }
-  for (const Fact& f : w.state.facts())
-    if (f.predicate == v.holding && f.arity == 1) seen += " I am holding " + language::spoken_name(w, f.args[0]) + ".";
+  for (const Fact& f : w.state.facts_of(v.holding))
+    if (f.arity == 1) seen += " I am holding " + language::spoken_name(w, f.args[0]) + ".";
   say(seen, Voice::kResponse);
   std::string doing = "I am learning ";
   if (progress_.task.name.empty()) doing = "I have not been given a task yet";

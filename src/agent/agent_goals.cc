@@ -228,6 +228,14 @@ std::optional<language::Reply> TaskLearningAgent::Session::goal_like_another(Obj
     other = said.substr(at + marker.size());
     break;
   }
+  // "same as the hammer, and shut the drawer afterwards": what follows the
+  // other thing's name is read on its own, after the other's goal.
+  std::size_t cut = other.size();
+  for (std::string_view mark : {",", ";", " and ", " then ", " but "}) cut = std::min(cut, other.find(mark));
+  std::string more(trim(std::string_view(other).substr(cut)));
+  other.resize(cut);
+  for (std::string_view lead : {",", ";", "and ", "then ", "but "})
+    if (more.starts_with(lead)) more = std::string(trim(more.substr(lead.size())));
   for (std::string_view tail : {" goes", " go", " went", " did", " does"})
     if (other.size() > tail.size() && other.ends_with(tail)) other.resize(other.size() - tail.size());
   for (std::string_view lead : {"those ", "that ", "this ", "the ", "a ", "an "})
@@ -250,6 +258,26 @@ std::optional<language::Reply> TaskLearningAgent::Session::goal_like_another(Obj
         agent_.understanding_.example_replies(world(), context(language::Asked::kGoal, object)), std::nullopt});
   std::optional<Goal> goal = instantiate_goal(world(), *known, object);
   if (!goal) return std::nullopt;
+  if (!more.empty()) {
+    // The rest adds to that goal: it is read after the placement that goal
+    // makes, said in words ("put it in the top drawer, shut the drawer"),
+    // so that "the drawer" and "it" are that place. A rest that does not
+    // read as a goal is not guessed at.
+    std::optional<ObjectId> place;
+    for (const Literal& l : goal->literals)
+      if ((l.fact.predicate == world().vocabulary.in || l.fact.predicate == world().vocabulary.on) && l.fact.arity == 2 &&
+          l.fact.args[0] == object)
+        place = l.fact.args[1];
+    if (!place) return std::nullopt;
+    std::string placed = "put it " + std::string(language::relation_word(world(), *place)) + " " +
+                         language::spoken_name(world(), *place) + ", " + more;
+    language::Reply rest = agent_.understanding_.reply(world(), context(language::Asked::kGoal, object), placed);
+    const auto* given = std::get_if<language::GoalGiven>(&rest);
+    if (given == nullptr) return std::nullopt;
+    std::vector<Literal> literals = goal->literals;
+    literals.insert(literals.end(), given->goal.literals.begin(), given->goal.literals.end());
+    goal = Goal(std::move(literals));
+  }
   return language::Reply(language::GoalGiven{*goal});
 }
 

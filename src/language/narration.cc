@@ -1,6 +1,7 @@
 #include "language/narration.h"
 
 #include <algorithm>
+#include <array>
 #include <set>
 #include <variant>
 
@@ -284,6 +285,56 @@ std::string spoken_category(std::string_view category) {
   return out;
 }
 
+std::string plural_noun(std::string_view noun) {
+  std::string out(noun);
+  if (out.empty()) return out;
+  auto ends = [&](std::string_view tail) { return out.size() > tail.size() && out.ends_with(tail); };
+  if (ends("s") || ends("x") || ends("z") || ends("ch") || ends("sh")) return out + "es";
+  if (ends("y") && std::string_view("aeiou").find(out[out.size() - 2]) == std::string_view::npos)
+    return out.substr(0, out.size() - 1) + "ies";
+  if (ends("lf")) return out.substr(0, out.size() - 1) + "ves";
+  if (ends("fe")) return out.substr(0, out.size() - 2) + "ves";
+  return out + "s";
+}
+
+std::string spoken_plural(std::string_view category) {
+  std::string spoken = spoken_category(category);
+  if (is_plural_category(category)) return spoken;
+  std::size_t last = spoken.rfind(' ');
+  std::size_t start = last == std::string::npos ? 0 : last + 1;
+  return spoken.substr(0, start) + plural_noun(std::string_view(spoken).substr(start));
+}
+
+std::string spoken_things(const World& world, std::span<const ObjectId> things) {
+  // Names in order of first mention, each with how often it was said.
+  std::vector<std::pair<std::string, std::vector<ObjectId>>> named;
+  for (ObjectId thing : things) {
+    std::string name = spoken_name(world, thing);
+    auto same = std::find_if(named.begin(), named.end(), [&](const auto& n) { return n.first == name; });
+    if (same == named.end()) named.push_back({std::move(name), {thing}});
+    else same->second.push_back(thing);
+  }
+  static constexpr std::array<std::string_view, 11> kNumbers = {"no",  "one", "two", "three", "four", "five",
+                                                                "six", "seven", "eight", "nine", "ten"};
+  std::vector<std::string> phrases;
+  for (const auto& [name, objects] : named) {
+    if (objects.size() == 1) {
+      phrases.push_back(name);
+      continue;
+    }
+    const ObjectInfo& info = world.universe->info(objects.front());
+    std::string count = objects.size() < kNumbers.size() ? std::string(kNumbers[objects.size()])
+                                                         : std::to_string(objects.size());
+    // "the red cup" twice is "two red cups": the name without "the",
+    // its kind in the plural.
+    std::string words = name.substr(4);
+    std::string singular = spoken_category(info.category);
+    if (words.ends_with(singular)) words = words.substr(0, words.size() - singular.size()) + spoken_plural(info.category);
+    phrases.push_back(count + " " + words);
+  }
+  return list_phrase(phrases);
+}
+
 std::string spoken_name(const World& world, ObjectId object) {
   const ObjectInfo& info = world.universe->info(object);
   std::string name = spoken_category(info.category);
@@ -316,8 +367,10 @@ std::string spoken_places(const World& world, std::span<const ObjectId> places) 
     bool one_category = std::all_of(places.begin(), places.end(), [&](ObjectId p) {
       return world.universe->info(p).category == category;
     });
+    // "the buckets": read in every sentence the agent says of places ("in
+    // every bucket" was wrong after "nothing left").
     if (one_category && world.universe->with_category(category).size() == places.size())
-      return "every " + spoken_category(category);
+      return "the " + spoken_plural(category);
   }
   std::vector<std::string> names;
   for (ObjectId p : places) names.push_back(spoken_name(world, p));

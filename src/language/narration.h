@@ -31,6 +31,12 @@ std::string spoken_category(std::string_view category);
 // Whether a kind is named in the plural ("crackers", "granola-bars"), for
 // verb agreement: the last word ends in "s" but not in "ss", "us" or "is".
 bool is_plural_category(std::string_view category);
+// "buckets", "boxes", "shelves", "batteries": a noun's regular plural (and
+// "-lf"/"-fe" to "-ves"); enough for the kinds of places and things.
+std::string plural_noun(std::string_view noun);
+// "glass tumblers": a kind in the plural; a kind named in the plural
+// ("crackers") stays as it is.
+std::string spoken_plural(std::string_view category);
 // "the ketchup goes", "the crackers go": a kind as the subject of "go".
 std::string kind_goes(std::string_view category);
 // "the glass tumbler"; a look-alike (another object of its category exists)
@@ -40,9 +46,13 @@ std::string spoken_name(const World& world, ObjectId object);
 std::string spoken_location(const World& world, ObjectId object);
 // "the ketchup on the table".
 std::string spoken_name_and_location(const World& world, ObjectId object);
-// The places of a subtask: "the table", "every bag" (all places of one
+// The places of a subtask: "the table", "the bags" (all places of one
 // category, when there are several), or "the shelf and the bench".
 std::string spoken_places(const World& world, std::span<const ObjectId> places);
+// Things as a list, a name said more than once counted: "the hammer, two
+// screwdrivers and the tape measure" (not "the screwdriver, and the
+// screwdriver"). Names in the order first given.
+std::string spoken_things(const World& world, std::span<const ObjectId> things);
 // "on" or "in": how things are at the place.
 std::string_view relation_word(const World& world, ObjectId place);
 // "tidy kitchen" -> "tidy the kitchen"; "tidy up kitchen" -> "tidy up the

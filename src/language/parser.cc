@@ -285,7 +285,10 @@ std::vector<std::string> tokenize(std::string_view sentence) {
   std::vector<std::string> tokens;
   for (std::string& word : split_words(to_lower(text))) {
     std::size_t commas = 0;
-    while (!word.empty() && (word.back() == ',' || word.back() == ';')) {
+    // A sentence's end inside a reply ("It's a mess. Tidy it.") breaks it
+    // as a comma does.
+    while (!word.empty() && (word.back() == ',' || word.back() == ';' || word.back() == '.' || word.back() == '!' ||
+                             word.back() == '?')) {
       word.pop_back();
       ++commas;
     }

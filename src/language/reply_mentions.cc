@@ -119,6 +119,9 @@ Choice Resolver::choose(const std::vector<ObjectId>& objects, const std::string&
   auto asked = in_.context.object;
   if (role != Role::kPlace && asked && std::find(objects.begin(), objects.end(), *asked) != objects.end())
     return *asked;
+  // "the drawer" after a placement in the top drawer is that drawer.
+  if (auto place = last_place(); place && role != Role::kItem && std::find(objects.begin(), objects.end(), *place) != objects.end())
+    return *place;
   if (interchangeable(in_.world, objects)) return objects.front();
   return Ambiguous{phrase, objects, say_which_question(in_.world, objects)};
 }

@@ -494,8 +494,13 @@ Reply read_task(const ReplyInput& in) {
   for (const Words& piece : pieces(without_fillers(in.words, in.vocabulary))) said.push_back(after_frame(piece));
   std::string verb;
   const Words* words = nullptr;
+  // A piece whose second word is "is" ("the garage is a mess") describes;
+  // its first word is a noun even where WordNet knows a verb ("to garage").
+  auto describes = [](const Words& piece) {
+    return piece.size() > 1 && (is_copula(piece[1]) || piece[1] == "looks" || piece[1] == "needs");
+  };
   for (const Words& piece : said)
-    if (!piece.empty() && !is_determiner(piece.front()) && !is_object_pronoun(piece.front()) &&
+    if (!piece.empty() && !describes(piece) && !is_determiner(piece.front()) && !is_object_pronoun(piece.front()) &&
         verb_like(piece.front(), in, verb)) {
       words = &piece;
       break;

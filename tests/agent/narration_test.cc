@@ -89,6 +89,34 @@ TEST_F(Narration, TasksCountsAndLists) {
   EXPECT_EQ(list_phrase({"a", "b", "c"}), "a, b, and c");
 }
 
+TEST_F(Narration, PluralsOfKindsAndPlaces) {
+  EXPECT_EQ(plural_noun("bucket"), "buckets");
+  EXPECT_EQ(plural_noun("box"), "boxes");
+  EXPECT_EQ(plural_noun("dish"), "dishes");
+  EXPECT_EQ(plural_noun("battery"), "batteries");
+  EXPECT_EQ(plural_noun("tray"), "trays");
+  EXPECT_EQ(plural_noun("shelf"), "shelves");
+  EXPECT_EQ(spoken_plural("glass-tumbler"), "glass tumblers");
+  EXPECT_EQ(spoken_plural("crackers"), "crackers");
+  // Every place of a kind is "the bags", which reads right after "nothing
+  // left in" as well as after "what is in" ("every bag" did not).
+  Scenario groceries = load_or_die(source_path("data/scenarios/unpack-groceries.yaml"));
+  const World& g = groceries.world;
+  std::vector<ObjectId> bags = g.universe->with_category("bag");
+  ASSERT_EQ(bags.size(), 3u);
+  EXPECT_EQ(spoken_places(g, bags), "the bags");
+  std::vector<ObjectId> two(bags.begin(), bags.begin() + 2);
+  EXPECT_EQ(spoken_places(g, two), spoken_name(g, bags[0]) + " and " + spoken_name(g, bags[1]));
+}
+
+TEST_F(Narration, ThingsSaidTwiceAreCounted) {
+  const World& w = kitchen_.world;
+  std::vector<ObjectId> things{id("ketchup1"), id("mug1"), id("mug2"), id("glass-tumbler1"), id("glass-tumbler2")};
+  EXPECT_EQ(spoken_things(w, things), "the ketchup, two mugs, and two glass tumblers");
+  EXPECT_EQ(spoken_things(w, std::vector<ObjectId>{id("mug2")}), "the mug");
+  EXPECT_EQ(spoken_things(w, std::vector<ObjectId>{id("mug1"), id("ketchup1"), id("mug2")}), "two mugs and the ketchup");
+}
+
 TEST_F(Narration, QuestionsAreOneLineAndEndInAQuestionMark) {
   const World& w = kitchen_.world;
   EXPECT_EQ(ask_task(), "What task should I learn?");

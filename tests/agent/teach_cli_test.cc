@@ -327,6 +327,24 @@ TEST_F(Teach, SameAsALearnedKindTakesItsGoal) {
   EXPECT_THAT(teach.out(), HasSubstr("Not done: the paper plate should be in the garbage.\n"));
 }
 
+// Three slips a person found teaching the garage: "the garage is a mess"
+// named a task "garage is mess" ("garage" is a verb too); "same as the
+// hammer, and shut the drawer afterwards" asked which drawer and then was
+// not understood; the status said "the screwdriver and the screwdriver".
+TEST_F(Teach, AGarageTaughtAsAPersonTalks) {
+  Process teach({APPRENTICE_BINARY, "teach", "--scenario",
+                 testing::source_path("data/scenarios/tidy-garage.yaml").string()});
+  ASSERT_TRUE(teach.write(lines({"the garage is a mess, let's tidy it up", "clear the workbench",
+                                 "put the hammer in the top drawer and close it",
+                                 "same as the hammer, and shut the drawer afterwards", "status", "quit"})));
+  EXPECT_EQ(teach.wait(), 1) << teach.out() << teach.err();
+  EXPECT_THAT(teach.out(), HasSubstr("Agent: What should I do first to tidy the garage?\n"));
+  EXPECT_THAT(teach.out(), HasSubstr("Instructor: same as the hammer, and shut the drawer afterwards\n"
+                                     "Agent: So the screwdriver goes in the top drawer, and the top drawer ends closed.\n"));
+  EXPECT_THAT(teach.out(), Not(HasSubstr("Which drawer")));
+  EXPECT_THAT(teach.out(), HasSubstr(" In the top drawer: the hammer and two screwdrivers."));
+}
+
 TEST_F(Teach, WithoutAStoreItSaysNothingWasSavedAndHowToKeepIt) {
   Process teach({APPRENTICE_BINARY, "teach", "--scenario", scenario_.string()});
   ASSERT_TRUE(teach.write(lines(full_script())));

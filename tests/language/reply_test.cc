@@ -153,6 +153,32 @@ TEST(ReplyCategoryPlaces, EveryBag) {
   EXPECT_EQ(step_grounded.places.size(), 3u);
 }
 
+// --- Replies of a person who describes before asking ---------------------------
+
+// "garage" is also a verb in WordNet (to garage a car); a piece that goes on
+// with "is" describes and names no task.
+TEST(ReplyTask, ADescriptionIsNotTheTasksName) {
+  static const Scenario garage = apprentice::testing::shipped_scenario("tidy-garage");
+  ReplyContext task = asking(Asked::kTask);
+  EXPECT_EQ(read(garage.world, task, "the garage is a mess, let's tidy it up"), "task tidy garage");
+  EXPECT_EQ(read(garage.world, task, "The garage is a mess. Tidy it."), "task tidy garage");
+  EXPECT_EQ(read(garage.world, task, "let's tidy the garage"), "task tidy garage");
+  Reply only = read_reply(grounder(), garage.world, task, "the garage is a mess");
+  EXPECT_TRUE(std::holds_alternative<Unusable>(only)) << format_reply(garage.world, only);
+}
+
+// "the drawer" right after a placement in one drawer is that drawer; without
+// a placement it is still asked about.
+TEST(ReplyReferences, ThePlaceJustNamedSettlesALookAlike) {
+  ReplyContext goal = asking(Asked::kGoal, in(office(), "stapler1"));
+  EXPECT_EQ(read(office(), goal, "put it in the top drawer and shut the drawer"),
+            "goal (and (in stapler1 drawer1) (closed drawer1))");
+  Reply unsettled = read_reply(grounder(), office(), goal, "put it in the drawer and shut it");
+  EXPECT_TRUE(std::holds_alternative<Ambiguous>(unsettled)) << format_reply(office(), unsettled);
+  goal.recent_place = in(office(), "drawer2");
+  EXPECT_EQ(read(office(), goal, "put it in the drawer and shut it"), "goal (and (in stapler1 drawer2) (closed drawer2))");
+}
+
 // --- Names with function words (item 4) ---------------------------------------------
 
 TEST(ReplyNames, FunctionWordsInsideNames) {
