@@ -105,6 +105,10 @@ std::string fact_sentence(const World& world, const Literal& literal, std::strin
     return "I " + am + (literal.positive ? " " : " not ") + "holding " + spoken_name(world, f.args[0]);
   }
   if (f.predicate == v.handempty) return std::string("my hand ") + std::string(be) + (literal.positive ? " empty" : " full");
+  // The domain's adjectives a person would not use, as noun phrases that
+  // read after every form of "be".
+  if (f.predicate == v.openable && f.arity == 1) return spoken_name(world, f.args[0]) + is + "something with a door";
+  if (f.predicate == v.grabbable && f.arity == 1) return spoken_name(world, f.args[0]) + is + "something I can pick up";
   std::string words = predicate_words(world, f.predicate);
   if (f.arity == 0) return "it" + is + words;
   std::string out = spoken_name(world, f.args[0]) + is + words;
@@ -234,10 +238,12 @@ SpokenClause blocker_clause(const World& world, const UnreachableBlocker& blocke
   return SpokenClause().word("no other object here fits the action \"" + world.domain->actions.at(blocker.schema).name + "\"");
 }
 
-// "The garbage can never be closed: it has no door, so I cannot close it."
+// "The garbage will never be closed: it has no door, so I cannot close it."
+// ("will": in "the garbage can never be closed", "garbage can" reads as a
+// noun.)
 std::string never_holds_sentence(const World& world, const UnreachableLiteral& u) {
   const Literal& l = u.literal;
-  std::string head = capitalize(fact_sentence(world, l, "can never be", "can never stop being"));
+  std::string head = capitalize(fact_sentence(world, l, "will never be", "will never stop being"));
   if (u.reason == UnreachableLiteral::Reason::kNoAction)
     return head + ": nothing I can do " + (l.positive ? "makes that so." : "undoes that.");
   // One reason per distinct clause, with the first action it rules out that

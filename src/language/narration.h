@@ -115,7 +115,7 @@ std::string refusal(const World& world, const Action& action);
 // --- What can never be -------------------------------------------------------
 
 // Why a goal can never hold, from search/unreachable.h's analysis: one
-// sentence per link of the chain. "The garbage can never be closed: it has
+// sentence per link of the chain. "The garbage will never be closed: it has
 // no door, so I cannot close it." "" for an empty chain.
 std::string never_holds(const World& world, const UnreachableChain& chain);
 

@@ -1,6 +1,6 @@
 // Why a literal of a goal can never hold: what search/unreachable.h finds
 // from the action model, and language/narration.h says in English ("The
-// garbage can never be closed: it has no door, so I cannot close it.").
+// garbage will never be closed: it has no door, so I cannot close it.").
 #pragma once
 
 #include <optional>

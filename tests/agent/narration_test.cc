@@ -196,24 +196,24 @@ TEST_F(Narration, GoalsThatCanNeverHoldSayWhyInPlainEnglish) {
   using Reason = UnreachableLiteral::Reason;
   EXPECT_EQ(never_holds(w, {}), "");
   EXPECT_EQ(never_holds(w, {{literal("openable", {"garbage1"}), Reason::kNoAction, {}}}),
-            "The garbage can never be openable: nothing I can do makes that so.");
+            "The garbage will never be something with a door: nothing I can do makes that so.");
   EXPECT_EQ(never_holds(w, {{literal("closed", {"fridge1"}, false), Reason::kNoAction, {}}}),
-            "The fridge can never be open: nothing I can do undoes that.");
+            "The fridge will never be open: nothing I can do undoes that.");
 
   UnreachableBlocker no_door{Kind::kStaticPrecondition, *d.find_action("close"), action(w, "(close garbage1)"), 0, 0,
                              literal("openable", {"garbage1"})};
   EXPECT_EQ(never_holds(w, {{literal("closed", {"garbage1"}), Reason::kNoActionApplies, {no_door}}}),
-            "The garbage can never be closed: it has no door, so I cannot close it.");
+            "The garbage will never be closed: it has no door, so I cannot close it.");
   // The same reason from a second action is said once.
   UnreachableBlocker outer = no_door;
   outer.action.reset();
   EXPECT_EQ(never_holds(w, {{literal("closed", {"garbage1"}), Reason::kNoActionApplies, {no_door, outer}}}),
-            "The garbage can never be closed: it has no door, so I cannot close it.");
+            "The garbage will never be closed: it has no door, so I cannot close it.");
 
   UnreachableBlocker wrong_type{Kind::kWrongType, *d.find_action("close"), action(w, "(close garbage1)"), id("garbage1"),
                                 *d.find_type("surface-place"), {}};
   EXPECT_EQ(never_holds(w, {{literal("closed", {"garbage1"}), Reason::kNoActionApplies, {wrong_type}}}),
-            "The garbage can never be closed: it is not a surface place, so I cannot close it.");
+            "The garbage will never be closed: it is not a surface place, so I cannot close it.");
 
   // A chain: the precondition that blocks, then why it can never hold.
   UnreachableBlocker must_hold{Kind::kPreconditionNeverHolds, *d.find_action("put-in"),
@@ -222,8 +222,8 @@ TEST_F(Narration, GoalsThatCanNeverHoldSayWhyInPlainEnglish) {
                                    literal("grabbable", {"ketchup1"})};
   EXPECT_EQ(never_holds(w, {{literal("in", {"ketchup1", "garbage1"}), Reason::kNoActionApplies, {must_hold}},
                             {literal("holding", {"ketchup1"}), Reason::kNoActionApplies, {not_grabbable}}}),
-            "The ketchup can never be in the garbage: for that, I would have to be holding the ketchup. "
-            "I can never be holding the ketchup: it cannot be picked up.");
+            "The ketchup will never be in the garbage: for that, I would have to be holding the ketchup. "
+            "I will never be holding the ketchup: it cannot be picked up.");
 }
 
 TEST(Explanation, KnowledgeReadsAsEnglish) {

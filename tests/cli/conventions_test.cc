@@ -144,7 +144,7 @@ TEST_F(Conventions, AGoalThatCanNeverHoldSaysWhyInEnglish) {
     Invocation lidless = run(args);
     EXPECT_EQ(lidless.exit_code, 1);
     EXPECT_THAT(lidless.err,
-                HasSubstr("apprentice: The recycling bin can never be closed: it has no door, so I cannot close it.\n"));
+                HasSubstr("apprentice: The recycling bin will never be closed: it has no door, so I cannot close it.\n"));
     EXPECT_THAT(lidless.err, Not(HasSubstr("--depth")));
     EXPECT_THAT(lidless.err, Not(HasSubstr("(openable")));
   }
@@ -153,7 +153,7 @@ TEST_F(Conventions, AGoalThatCanNeverHoldSaysWhyInEnglish) {
   EXPECT_EQ(json.exit_code, 1);
   auto j = nlohmann::json::parse(json.out);
   EXPECT_EQ(j["status"], "exhausted");
-  EXPECT_EQ(j["never_holds"], "The ketchup can never stop being grabbable: nothing I can do undoes that.");
+  EXPECT_EQ(j["never_holds"], "The ketchup will never stop being something I can pick up: nothing I can do undoes that.");
 }
 
 TEST_F(Conventions, EveryErrorHasThePrefix) {
