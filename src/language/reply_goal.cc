@@ -310,7 +310,7 @@ class EventReader {
   bool unplaced_ = false;
 };
 
-std::string said(const ReplyInput& in) { return join(in.words, " "); }
+std::string said(const ReplyInput& in) { return quoted_words(in.words); }
 
 Reply from_problem(const ReplyInput& in, Events events) {
   if (auto* ambiguous = std::get_if<Ambiguous>(&events)) return *ambiguous;

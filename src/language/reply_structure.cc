@@ -235,7 +235,7 @@ class StructureReader {
                                        place + "? For example: \"clear " + place + "\".",
                                    std::nullopt});
     }
-    return unusable(in_, Problem{"I didn't catch what comes next in the task in \"" + join(in_.words, " ") + "\".",
+    return unusable(in_, Problem{"I didn't catch what comes next in the task in \"" + quoted_words(in_.words) + "\".",
                                  std::nullopt});
   }
 

@@ -143,6 +143,15 @@ std::vector<std::string> reply_words(std::string_view text) {
   return out;
 }
 
+std::string quoted_words(const std::vector<std::string>& words) {
+  std::string out;
+  for (const std::string& w : words) {
+    if (!out.empty() && w != ",") out += ' ';
+    out += w;
+  }
+  return out;
+}
+
 std::vector<std::string> name_parts(std::string_view name) {
   std::vector<std::string> parts;
   std::string part;

@@ -33,6 +33,11 @@ void join_world_names(std::vector<std::string>& words, const Universe& universe)
 // Removes `phrase` wherever it occurs as whole words; true if it did.
 bool erase_phrase(std::vector<std::string>& words, const std::vector<std::string_view>& phrase);
 
+// The words of a reply as one line to quote back: {"same", "as", "the",
+// "hammer", ",", "and", ...} -> "same as the hammer, and ..." (a comma
+// sticks to the word before it).
+std::string quoted_words(const std::vector<std::string>& words);
+
 // The words of a category or id, split on '-': "walk-in-pantry" -> {walk, in, pantry}.
 std::vector<std::string> name_parts(std::string_view name);
 
