@@ -124,9 +124,14 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::learn_task_step() {
   const bool awaiting_repeat = progress_.current && progress_.current->mode == Current::Mode::kAwaitRepeat;
   Question asked = question(QuestionKind::kTaskStep, language::ask_task_step(progress_.task.name, !progress_.asked_about_task));
   auto heard = converse(asked, context(language::Asked::kTaskStep), [&](const Reply& r) -> std::optional<std::string> {
-    if (std::holds_alternative<language::LoopNamed>(r) || std::holds_alternative<language::SubtaskNamed>(r) ||
-        std::holds_alternative<language::Finished>(r))
+    if (std::holds_alternative<language::LoopNamed>(r) || std::holds_alternative<language::SubtaskNamed>(r))
       return std::nullopt;
+    // "we're done" before any part of the task was taught would end the
+    // lesson having learned nothing, and call the task learned.
+    if (std::holds_alternative<language::Finished>(r))
+      return progress_.task.subtasks.empty() && !progress_.current
+                 ? std::optional<std::string>("I have not been told any part of the task yet, so it cannot be done.")
+                 : std::nullopt;
     if (std::holds_alternative<language::Proceed>(r))
       return awaiting_repeat ? std::nullopt : std::optional<std::string>("There is nothing to repeat yet.");
     return "I asked for the next step of the task: a subtask and its place, or that the task is done.";

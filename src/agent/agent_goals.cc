@@ -222,7 +222,8 @@ std::optional<language::Reply> TaskLearningAgent::Session::goal_like_another(Obj
   // "same as the soda can", "the same place as the mug", "like the soda
   // cans", "where the soda can goes".
   std::string other;
-  for (std::string_view marker : {"same place as ", "same way as ", "same as ", "just like ", "like ", "where "}) {
+  for (std::string_view marker : {"same place as ", "same way as ", "same as ", "just like ", "like ", "where ",
+                                  "goes with ", "go with "}) {
     std::size_t at = said.find(marker);
     if (at == std::string::npos) continue;
     other = said.substr(at + marker.size());
@@ -234,6 +235,9 @@ std::optional<language::Reply> TaskLearningAgent::Session::goal_like_another(Obj
   for (std::string_view mark : {",", ";", " and ", " then ", " but "}) cut = std::min(cut, other.find(mark));
   std::string more(trim(std::string_view(other).substr(cut)));
   other.resize(cut);
+  // "the book on the floor": the kind is what counts.
+  for (std::string_view where : {" on ", " in ", " from "})
+    if (std::size_t at = other.find(where); at != std::string::npos) other.resize(at);
   for (std::string_view lead : {",", ";", "and ", "then ", "but "})
     if (more.starts_with(lead)) more = std::string(trim(more.substr(lead.size())));
   for (std::string_view tail : {" goes", " go", " went", " did", " does"})

@@ -35,6 +35,27 @@ Unusable unusable(const ReplyInput& in, const Problem& problem) {
   return Unusable{problem.reason, example_replies(in.world, in.context), problem.failure};
 }
 
+namespace {
+
+// The objects that have every one of `words` as a property ("blue",
+// "top"), of the kind `role` asks for; none if a word is no property.
+std::vector<ObjectId> with_properties(const World& world, const std::vector<std::string>& words, Role role) {
+  std::vector<ObjectId> out;
+  if (words.empty()) return out;
+  const Universe& universe = *world.universe;
+  for (ObjectId id = 0; id < universe.size(); ++id) {
+    const ObjectInfo& info = universe.info(id);
+    if (role != Role::kAny && (info.kind == ObjectKind::kItem) != (role == Role::kItem)) continue;
+    if (std::all_of(words.begin(), words.end(), [&](const std::string& w) {
+          return std::find(info.properties.begin(), info.properties.end(), w) != info.properties.end();
+        }))
+      out.push_back(id);
+  }
+  return out;
+}
+
+}  // namespace
+
 Resolver::Resolver(const ReplyInput& in) : in_(in) {}
 
 ReferenceContext Resolver::reference_context() const {
@@ -74,7 +95,12 @@ std::variant<std::vector<ObjectId>, Problem> Resolver::candidates(const Chunk& c
     return Problem{"I don't know which thing you mean by \"" + chunk.text() + "\".", std::nullopt};
   NounPhrase np{"", words};
   auto found = candidates_for(np, door ? Role::kPlace : role, reference_context());
-  if (const auto* failure = std::get_if<GroundingFailure>(&found)) return Problem{failure->message, *failure};
+  if (const auto* failure = std::get_if<GroundingFailure>(&found)) {
+    // "the blue one": properties alone, when they name no kind of thing.
+    std::vector<ObjectId> having = with_properties(world, words, role);
+    if (!door && !having.empty()) return located(std::move(having), chunk);
+    return Problem{failure->message, *failure};
+  }
   std::vector<ObjectId> objects = std::get<CandidateSet>(found).objects;
   // Prefer what the sentence needs there, when the phrase names both.
   if (role != Role::kAny) {
@@ -146,6 +172,8 @@ bool Resolver::fits_asked(const Chunk& chunk) const {
 
 std::string verb_name(const std::string& verb, const std::string& particle) {
   if (particle == "away" || particle == "back" || particle == "out") return verb + " " + particle;
+  // "tidy up" is "tidy", but "pick" alone is not "pick up".
+  if (particle == "up" && (verb == "pick" || verb == "hang")) return verb + " up";
   return verb;
 }
 

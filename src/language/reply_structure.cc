@@ -229,11 +229,15 @@ class StructureReader {
                                    std::nullopt});
     // A place and no verb: "the table first".
     if (named) {
+      // Its own example first: the generic ones may name other places.
       std::string place = distinct_noun_for(in_.world, named->objects.front());
-      return unusable(in_, Problem{"What should I do with the things " +
-                                       std::string(relation(named->objects.front()) == Relation::kOn ? "on " : "in ") +
-                                       place + "? For example: \"clear " + place + "\".",
-                                   std::nullopt});
+      Unusable which = unusable(in_, Problem{"What should I do with the things " +
+                                                 std::string(relation(named->objects.front()) == Relation::kOn ? "on " : "in ") +
+                                                 place + "?",
+                                             std::nullopt});
+      which.examples.insert(which.examples.begin(), "clear " + place);
+      if (which.examples.size() > 2) which.examples.resize(2);
+      return which;
     }
     return unusable(in_, Problem{"I didn't catch what comes next in the task in \"" + quoted_words(in_.words) + "\".",
                                  std::nullopt});
@@ -490,21 +494,28 @@ bool only_confirms(Words words) {
 Reply read_task(const ReplyInput& in) {
   // The piece that says what to do ("The kitchen is a mess, please tidy
   // it." has two), without its frame.
+  // Each piece without its frame, and whether it describes rather than
+  // asks: its second word is "is" ("the garage is a mess"), or it starts
+  // with a subject ("the kids left a mess"; "the task is to ..." is a
+  // frame). Its first word is then a noun, even where WordNet knows a verb
+  // ("to garage", "to kid").
   std::vector<Words> said;
-  for (const Words& piece : pieces(without_fillers(in.words, in.vocabulary))) said.push_back(after_frame(piece));
+  std::vector<bool> describes;
+  for (const Words& piece : pieces(without_fillers(in.words, in.vocabulary))) {
+    said.push_back(after_frame(piece));
+    const Words& rest = said.back();
+    bool subject_first = piece.size() > 1 && is_determiner(piece[0]) && !is_frame_word(piece[1]);
+    bool copula_second = rest.size() > 1 && (is_copula(rest[1]) || rest[1] == "looks" || rest[1] == "needs");
+    describes.push_back(subject_first || copula_second);
+  }
   std::string verb;
   const Words* words = nullptr;
-  // A piece whose second word is "is" ("the garage is a mess") describes;
-  // its first word is a noun even where WordNet knows a verb ("to garage").
-  auto describes = [](const Words& piece) {
-    return piece.size() > 1 && (is_copula(piece[1]) || piece[1] == "looks" || piece[1] == "needs");
-  };
-  for (const Words& piece : said)
-    if (!piece.empty() && !describes(piece) && !is_determiner(piece.front()) && !is_object_pronoun(piece.front()) &&
-        verb_like(piece.front(), in, verb)) {
+  for (std::size_t i = 0; i < said.size() && words == nullptr; ++i) {
+    const Words& piece = said[i];
+    if (!piece.empty() && !describes[i] && !is_determiner(piece.front()) && !is_object_pronoun(piece.front()) &&
+        verb_like(piece.front(), in, verb))
       words = &piece;
-      break;
-    }
+  }
   if (!words) {
     Words all;
     for (const Words& piece : said) all.insert(all.end(), piece.begin(), piece.end());

@@ -345,6 +345,39 @@ TEST_F(Teach, AGarageTaughtAsAPersonTalks) {
   EXPECT_THAT(teach.out(), HasSubstr(" In the top drawer: the hammer and two screwdrivers."));
 }
 
+// A whole playroom in a parent's words: a subject before the task ("the
+// kids left a mess", where "kid" is a verb too), "pick up" as a subtask,
+// "the blue one", "same as the book on the floor", "go with the blocks".
+// Before these readings the session stalled at the toy car.
+TEST_F(Teach, APlayroomTaughtAsAPersonTalks) {
+  Process teach({APPRENTICE_BINARY, "teach", "--scenario", testing::source_path("data/scenarios/playroom.yaml").string()});
+  ASSERT_TRUE(teach.write(lines({"the kids left a mess in here. can you tidy up the playroom?",
+                                 "first pick up everything off the floor", "blocks go in the red bin",
+                                 "the cars go into the blue one", "the teddy goes in the toy chest, and close the lid",
+                                 "books belong on the bookshelf", "the sock goes in the hamper", "ok now empty the crates",
+                                 "balls go in the green bin", "the doll goes in the toy chest too, and shut it",
+                                 "same as the book on the floor", "crayons go with the blocks", "that's it"})));
+  EXPECT_EQ(teach.wait(), 0) << teach.out() << teach.err();
+  EXPECT_THAT(teach.out(), HasSubstr("Agent: What should I do first to tidy the playroom?\n"));
+  EXPECT_THAT(teach.out(), HasSubstr("Agent: So I pick up what is on the floor, one thing at a time.\n"));
+  EXPECT_THAT(teach.out(), HasSubstr("Instructor: the cars go into the blue one\nAgent: So the toy car goes in the blue bin.\n"));
+  EXPECT_THAT(teach.out(), HasSubstr("Instructor: same as the book on the floor\nAgent: So the picture book goes on the bookshelf.\n"));
+  EXPECT_THAT(teach.out(), HasSubstr("Instructor: crayons go with the blocks\nAgent: So the crayon goes in the red bin.\n"));
+  EXPECT_THAT(teach.out(), HasSubstr("The task is learned: 14 of 14 goal assertions hold, after 13 instructions.\n"));
+}
+
+// "we're done" before any part of the task is taught is not the end of
+// the lesson (the summary said "The task is learned" with nothing learned).
+TEST_F(Teach, DoneBeforeAnyPartOfTheTaskIsAskedAgain) {
+  Process teach(teach_args());
+  ASSERT_TRUE(teach.write(lines({"Tidy kitchen.", "we're done", "quit"})));
+  EXPECT_EQ(teach.wait(), 1) << teach.out() << teach.err();
+  EXPECT_THAT(teach.out(), HasSubstr("Instructor: we're done\n"
+                                     "Agent: I have not been told any part of the task yet, so it cannot be done."));
+  EXPECT_THAT(teach.out(), Not(HasSubstr("The task is learned")));
+  EXPECT_THAT(teach.out(), HasSubstr("Stopped: "));
+}
+
 TEST_F(Teach, WithoutAStoreItSaysNothingWasSavedAndHowToKeepIt) {
   Process teach({APPRENTICE_BINARY, "teach", "--scenario", scenario_.string()});
   ASSERT_TRUE(teach.write(lines(full_script())));

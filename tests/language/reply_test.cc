@@ -165,6 +165,18 @@ TEST(ReplyTask, ADescriptionIsNotTheTasksName) {
   EXPECT_EQ(read(garage.world, task, "let's tidy the garage"), "task tidy garage");
   Reply only = read_reply(grounder(), garage.world, task, "the garage is a mess");
   EXPECT_TRUE(std::holds_alternative<Unusable>(only)) << format_reply(garage.world, only);
+  // A subject first is a description too ("kid" is a verb in WordNet); the
+  // frame "the task is to" is not.
+  static const Scenario playroom = apprentice::testing::shipped_scenario("playroom");
+  EXPECT_EQ(read(playroom.world, task, "the kids left a mess in here. can you tidy up the playroom?"), "task tidy playroom");
+  EXPECT_EQ(read(playroom.world, task, "the task is to tidy the playroom"), "task tidy playroom");
+  // "pick" alone is not "pick up"; "tidy up" is "tidy".
+  EXPECT_EQ(read(playroom.world, asking(Asked::kTaskStep), "first pick up everything off the floor"),
+            "subtask pick up on floor1");
+  // "the blue one": a property alone names the look-alike that has it.
+  ReplyContext car = asking(Asked::kGoal, in(playroom.world, "toy-car1"));
+  EXPECT_EQ(read(playroom.world, car, "the cars go into the blue one"), "goal (in toy-car1 bin2)");
+  EXPECT_EQ(read(playroom.world, car, "put it in the green one"), "goal (in toy-car1 bin3)");
 }
 
 // "the drawer" right after a placement in one drawer is that drawer; without
@@ -231,8 +243,12 @@ TEST(ReplyStructure, APlaceWithoutAVerbTakesTheLastSubtasksVerb) {
   ReplyContext step = asking(Asked::kTaskStep);
   Reply bare = read_reply(grounder(), kitchen, step, "the counter next");
   ASSERT_TRUE(std::holds_alternative<Unusable>(bare)) << format_reply(kitchen, bare);
-  EXPECT_EQ(std::get<Unusable>(bare).reason,
-            "What should I do with the things on the counter? For example: \"clear the counter\".");
+  EXPECT_EQ(std::get<Unusable>(bare).reason, "What should I do with the things on the counter?");
+  // Its own example comes first, and the reason does not give one too
+  // (the agent said "For example: ... You could say, for example, ...").
+  ASSERT_FALSE(std::get<Unusable>(bare).examples.empty());
+  EXPECT_EQ(std::get<Unusable>(bare).examples.front(), "clear the counter");
+  EXPECT_LE(std::get<Unusable>(bare).examples.size(), 2u);
   step.taught_subtasks = {"clear"};
   EXPECT_EQ(read(kitchen, step, "the counter next"), "subtask clear on counter1");
   EXPECT_EQ(read(kitchen, step, "now do the same with the counter"), "subtask clear on counter1");
