@@ -28,6 +28,43 @@ bool leaves_it_alone(const std::string& text) {
   return std::any_of(std::begin(kAlone), std::end(kAlone), [&](const char* a) { return said == a; });
 }
 
+// "same as the soda can", "the same place as the mug", "like the soda
+// cans", "where the soda can goes", "crayons go with the blocks": the other
+// thing's name ("soda can"; "" if the reply says no such thing), and what
+// the reply says after it ("same as the hammer, and shut the drawer" ->
+// "shut the drawer").
+struct SameAs {
+  std::string other;
+  std::string more;
+};
+
+SameAs same_as(const std::string& text) {
+  std::string said = to_lower(trim(text));
+  while (!said.empty() && (said.back() == '.' || said.back() == '!')) said.pop_back();
+  std::string other;
+  for (std::string_view marker : {"same place as ", "same way as ", "same as ", "just like ", "like ", "where ",
+                                  "goes with ", "go with "}) {
+    std::size_t at = said.find(marker);
+    if (at == std::string::npos) continue;
+    other = said.substr(at + marker.size());
+    break;
+  }
+  std::size_t cut = other.size();
+  for (std::string_view mark : {",", ";", " and ", " then ", " but "}) cut = std::min(cut, other.find(mark));
+  std::string more(trim(std::string_view(other).substr(cut)));
+  other.resize(cut);
+  // "the book on the floor": the kind is what counts.
+  for (std::string_view where : {" on ", " in ", " from "})
+    if (std::size_t at = other.find(where); at != std::string::npos) other.resize(at);
+  for (std::string_view lead : {",", ";", "and ", "then ", "but "})
+    if (more.starts_with(lead)) more = std::string(trim(more.substr(lead.size())));
+  for (std::string_view tail : {" goes", " go", " went", " did", " does"})
+    if (other.size() > tail.size() && other.ends_with(tail)) other.resize(other.size() - tail.size());
+  for (std::string_view lead : {"those ", "that ", "this ", "the ", "a ", "an "})
+    if (other.starts_with(lead)) other = other.substr(lead.size());
+  return {other, more};
+}
+
 }  // namespace
 
 GoalKey TaskLearningAgent::Session::goal_key(ObjectId object) const {
@@ -217,33 +254,7 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
 
 std::optional<language::Reply> TaskLearningAgent::Session::goal_like_another(ObjectId object,
                                                                              const std::string& text) const {
-  std::string said = to_lower(trim(text));
-  while (!said.empty() && (said.back() == '.' || said.back() == '!')) said.pop_back();
-  // "same as the soda can", "the same place as the mug", "like the soda
-  // cans", "where the soda can goes".
-  std::string other;
-  for (std::string_view marker : {"same place as ", "same way as ", "same as ", "just like ", "like ", "where ",
-                                  "goes with ", "go with "}) {
-    std::size_t at = said.find(marker);
-    if (at == std::string::npos) continue;
-    other = said.substr(at + marker.size());
-    break;
-  }
-  // "same as the hammer, and shut the drawer afterwards": what follows the
-  // other thing's name is read on its own, after the other's goal.
-  std::size_t cut = other.size();
-  for (std::string_view mark : {",", ";", " and ", " then ", " but "}) cut = std::min(cut, other.find(mark));
-  std::string more(trim(std::string_view(other).substr(cut)));
-  other.resize(cut);
-  // "the book on the floor": the kind is what counts.
-  for (std::string_view where : {" on ", " in ", " from "})
-    if (std::size_t at = other.find(where); at != std::string::npos) other.resize(at);
-  for (std::string_view lead : {",", ";", "and ", "then ", "but "})
-    if (more.starts_with(lead)) more = std::string(trim(more.substr(lead.size())));
-  for (std::string_view tail : {" goes", " go", " went", " did", " does"})
-    if (other.size() > tail.size() && other.ends_with(tail)) other.resize(other.size() - tail.size());
-  for (std::string_view lead : {"those ", "that ", "this ", "the ", "a ", "an "})
-    if (other.starts_with(lead)) other = other.substr(lead.size());
+  auto [other, more] = same_as(text);
   if (other.empty()) return std::nullopt;
   std::vector<std::string> kinds;
   if (auto here = agent_.understanding_.category(world(), other)) kinds = {*here};

@@ -12,7 +12,6 @@ namespace {
 
 using Words = std::vector<std::string>;
 
-
 bool contains(const Words& words, const std::vector<std::string_view>& phrase) {
   if (phrase.empty() || words.size() < phrase.size()) return false;
   for (std::size_t i = 0; i + phrase.size() <= words.size(); ++i)
@@ -493,9 +492,8 @@ bool only_confirms(Words words) {
 
 Reply read_task(const ReplyInput& in) {
   // The piece that says what to do ("The kitchen is a mess, please tidy
-  // it." has two), without its frame.
-  // Each piece without its frame, and whether it describes rather than
-  // asks: its second word is "is" ("the garage is a mess"), or it starts
+  // it." has two). Each piece without its frame, and whether it describes
+  // rather than asks: its second word is "is" ("the garage is a mess"), or it starts
   // with a subject ("the kids left a mess"; "the task is to ..." is a
   // frame). Its first word is then a noun, even where WordNet knows a verb
   // ("to garage", "to kid").
