@@ -328,6 +328,7 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::start_object(Object
     return {};
   }
   report.goal = format_goal(*world().domain, *world().universe, *goal);
+  if (agent_.knowledge_.goals.find(goal_key(object)) != nullptr) progress_.last_goal = goal_key(object);
   progress_.in_progress = InProgress{object, *goal, report, world().state, {}, {}, {}};
   return {};
 }

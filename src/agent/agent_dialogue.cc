@@ -102,8 +102,12 @@ TaskLearningAgent::Session::Flow<TaskLearningAgent::Session::Heard> TaskLearning
     if (rescue && std::holds_alternative<language::Unusable>(reply))
       if (auto rescued = rescue(*text)) reply = std::move(*rescued);
     std::optional<std::string> why;
-    if (const auto* u = std::get_if<language::Unusable>(&reply)) why = u->reason;
-    else why = accept(reply);
+    if (const auto* u = std::get_if<language::Unusable>(&reply)) {
+      why = u->reason;
+      context.topic_place = u->topic_place;
+    } else {
+      why = accept(reply);
+    }
     if (!why) return Heard{reply, *text};
     explain(*why, context);
     if (!person() && ++unusable > agent_.options_.max_retries) return Heard{std::nullopt, *text};

@@ -5,6 +5,7 @@
 #include "agent/session.h"
 #include "language/generation.h"
 #include "language/narration.h"
+#include "language/same_as.h"
 #include "util/log.h"
 #include "util/text.h"
 
@@ -26,43 +27,6 @@ bool leaves_it_alone(const std::string& text) {
                                        "pass", "ignore it", "don't move it", "do not move it", "keep it there",
                                        "it can stay", "it can stay there", "leave it be"};
   return std::any_of(std::begin(kAlone), std::end(kAlone), [&](const char* a) { return said == a; });
-}
-
-// "same as the soda can", "the same place as the mug", "like the soda
-// cans", "where the soda can goes", "crayons go with the blocks": the other
-// thing's name ("soda can"; "" if the reply says no such thing), and what
-// the reply says after it ("same as the hammer, and shut the drawer" ->
-// "shut the drawer").
-struct SameAs {
-  std::string other;
-  std::string more;
-};
-
-SameAs same_as(const std::string& text) {
-  std::string said = to_lower(trim(text));
-  while (!said.empty() && (said.back() == '.' || said.back() == '!')) said.pop_back();
-  std::string other;
-  for (std::string_view marker : {"same place as ", "same way as ", "same as ", "just like ", "like ", "where ",
-                                  "goes with ", "go with "}) {
-    std::size_t at = said.find(marker);
-    if (at == std::string::npos) continue;
-    other = said.substr(at + marker.size());
-    break;
-  }
-  std::size_t cut = other.size();
-  for (std::string_view mark : {",", ";", " and ", " then ", " but "}) cut = std::min(cut, other.find(mark));
-  std::string more(trim(std::string_view(other).substr(cut)));
-  other.resize(cut);
-  // "the book on the floor": the kind is what counts.
-  for (std::string_view where : {" on ", " in ", " from "})
-    if (std::size_t at = other.find(where); at != std::string::npos) other.resize(at);
-  for (std::string_view lead : {",", ";", "and ", "then ", "but "})
-    if (more.starts_with(lead)) more = std::string(trim(more.substr(lead.size())));
-  for (std::string_view tail : {" goes", " go", " went", " did", " does"})
-    if (other.size() > tail.size() && other.ends_with(tail)) other.resize(other.size() - tail.size());
-  for (std::string_view lead : {"those ", "that ", "this ", "the ", "a ", "an "})
-    if (other.starts_with(lead)) other = other.substr(lead.size());
-  return {other, more};
 }
 
 }  // namespace
@@ -214,47 +178,112 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
     ObjectId object, ObjectReport& report) {
   const World& w = world();
   Question asked = question(QuestionKind::kSubtaskStep, language::ask_goal(w, object), object);
-  auto heard = converse(asked, context(language::Asked::kGoal, object),
-                        [&](const language::Reply& r) -> std::optional<std::string> {
-                          if (std::holds_alternative<language::Finished>(r)) return std::nullopt;
-                          const auto* given = std::get_if<language::GoalGiven>(&r);
-                          if (given == nullptr)
-                            return "I asked where " + language::spoken_name(w, object) + " goes.";
-                          std::vector<ObjectId> mentioned = given->goal.objects();
-                          if (std::find(mentioned.begin(), mentioned.end(), object) != mentioned.end())
-                            return std::nullopt;
-                          // A goal about something else is never stored as this one's.
-                          std::vector<std::string> names;
-                          for (ObjectId o : mentioned)
-                            if (w.universe->info(o).kind == ObjectKind::kItem) names.push_back(language::spoken_name(w, o));
-                          return "That says what becomes of " + (names.empty() ? "other things" : language::list_phrase(names)) +
-                                 ", but I asked about " + language::spoken_name_and_location(w, object) + ".";
-                        },
-                        [&](const std::string& text) {
-                          if (leaves_it_alone(text)) return std::optional<language::Reply>(language::Finished{});
-                          return goal_like_another(object, text);
-                        });
-  if (!heard) return tl::unexpected(heard.error());
-  if (!heard->reply) {
-    report.note = "no usable goal from the instructor";
-    return std::optional<Goal>();
+  // A person may say where another thing of this subtask goes before being
+  // asked about it ("the sweater goes on the low shelf", asked about the
+  // sock): that goal is learned for its kind, and the question comes again.
+  for (;;) {
+    std::optional<ObjectId> ahead;
+    auto heard = converse(
+        asked, context(language::Asked::kGoal, object),
+        [&](const language::Reply& r) -> std::optional<std::string> {
+          ahead.reset();
+          if (std::holds_alternative<language::Finished>(r)) return std::nullopt;
+          const auto* given = std::get_if<language::GoalGiven>(&r);
+          if (given == nullptr) return "I asked where " + language::spoken_name(w, object) + " goes.";
+          std::vector<ObjectId> mentioned = given->goal.objects();
+          if (std::find(mentioned.begin(), mentioned.end(), object) != mentioned.end()) return std::nullopt;
+          std::vector<ObjectId> items;
+          for (ObjectId o : mentioned)
+            if (w.universe->info(o).kind == ObjectKind::kItem) items.push_back(o);
+          if (items.size() == 1 && still_to_come(items.front())) {
+            ahead = items.front();
+            return std::nullopt;
+          }
+          // A goal about something else is never stored as this one's.
+          std::vector<std::string> names;
+          for (ObjectId o : items) names.push_back(language::spoken_name(w, o));
+          return "That says what becomes of " + (names.empty() ? "other things" : language::list_phrase(names)) +
+                 ", but I asked about " + language::spoken_name_and_location(w, object) + ".";
+        },
+        [&](const std::string& text) {
+          if (leaves_it_alone(text)) return std::optional<language::Reply>(language::Finished{});
+          if (auto like = goal_like_another(object, text)) return like;
+          return goal_for_another(object, text);
+        });
+    if (!heard) return tl::unexpected(heard.error());
+    if (!heard->reply) {
+      report.note = "no usable goal from the instructor";
+      return std::optional<Goal>();
+    }
+    begin_lesson(heard->text);
+    if (std::holds_alternative<language::Finished>(*heard->reply)) {
+      report.note = "left where it is, as the instructor said";
+      say("I will leave " + language::spoken_name_and_location(w, object) + " as it is.");
+      return std::optional<Goal>();
+    }
+    const Goal& goal = std::get<language::GoalGiven>(*heard->reply).goal;
+    const ObjectId about = ahead.value_or(object);
+    say(language::read_back_goal(w, about, goal) +
+        (ahead ? " I will do that when I come to " + language::object_pronoun(w, about) + "." : ""));
+    if (auto s = learn_goal(about, goal, "instructor: " + apprentice::quoted(heard->text)); !s)
+      return stop(s.error());
+    if (ahead) continue;
+    report.goal_source = "instructor";
+    return std::optional<Goal>(goal);
   }
-  begin_lesson(heard->text);
-  if (std::holds_alternative<language::Finished>(*heard->reply)) {
-    report.note = "left where it is, as the instructor said";
-    say("I will leave " + language::spoken_name_and_location(w, object) + " as it is.");
-    return std::optional<Goal>();
-  }
-  const Goal& goal = std::get<language::GoalGiven>(*heard->reply).goal;
-  say(language::read_back_goal(w, object, goal));
-  if (auto s = learn_goal(object, goal, "instructor: " + apprentice::quoted(heard->text)); !s) return stop(s.error());
-  report.goal_source = "instructor";
-  return std::optional<Goal>(goal);
+}
+
+std::optional<language::Reply> TaskLearningAgent::Session::goal_for_another(ObjectId object,
+                                                                            const std::string& text) const {
+  // Read as if nothing had been asked: the reply's own thing is the one it
+  // places.
+  language::Reply reply = agent_.understanding_.reply(world(), context(language::Asked::kGoal, std::nullopt), text);
+  const auto* given = std::get_if<language::GoalGiven>(&reply);
+  if (given == nullptr) return std::nullopt;
+  std::vector<ObjectId> items;
+  for (ObjectId o : given->goal.objects())
+    if (world().universe->info(o).kind == ObjectKind::kItem) items.push_back(o);
+  if (items.size() != 1 || items.front() == object || progress_.evaluated.count(items.front())) return std::nullopt;
+  if (still_to_come(items.front())) return reply;
+  // Not in this subtask's places: its subtask is not known yet.
+  const ObjectId other = items.front();
+  return language::Reply(language::Unusable{
+      "I will ask about " + language::spoken_name(world(), other) + " when I come to " +
+          language::object_pronoun(world(), other) + "; now I " +
+          current().verb + " what is " + current().relation + " " + language::spoken_places(world(), current().places) +
+          ". Where should " + language::spoken_name(world(), object) + " go?",
+      agent_.understanding_.example_replies(world(), context(language::Asked::kGoal, object)), std::nullopt});
+}
+
+bool TaskLearningAgent::Session::still_to_come(ObjectId item) const {
+  if (progress_.evaluated.count(item)) return false;
+  const Vocabulary& v = world().vocabulary;
+  for (ObjectId place : current().places)
+    for (PredicateId relation : {v.on, v.in})
+      if (world().state.holds(Fact(relation, {item, place}))) return true;
+  return false;
+}
+
+std::optional<language::Reply> TaskLearningAgent::Session::goal_given_last(ObjectId object, const std::string& named,
+                                                                           const std::string& text) const {
+  // "the towel too", asked about the sock, is not this reading.
+  if (!named.empty() && agent_.understanding_.category(world(), named) != world().universe->info(object).category)
+    return std::nullopt;
+  const GoalKnowledge* last = progress_.last_goal ? agent_.knowledge_.goals.find(*progress_.last_goal) : nullptr;
+  if (last == nullptr)
+    return language::Reply(language::Unusable{
+        "I have not put anything away yet, so I do not know what " + apprentice::quoted(text) + " refers to. Where should " +
+            language::spoken_name(world(), object) + " go?",
+        agent_.understanding_.example_replies(world(), context(language::Asked::kGoal, object)), std::nullopt});
+  std::optional<Goal> goal = instantiate_goal(world(), *last, object);
+  if (!goal) return std::nullopt;
+  return language::Reply(language::GoalGiven{*goal});
 }
 
 std::optional<language::Reply> TaskLearningAgent::Session::goal_like_another(ObjectId object,
                                                                              const std::string& text) const {
-  auto [other, more] = same_as(text);
+  if (auto again = language::read_same_again(text)) return goal_given_last(object, *again, text);
+  auto [other, more] = language::read_same_as(text);
   if (other.empty()) return std::nullopt;
   std::vector<std::string> kinds;
   if (auto here = agent_.understanding_.category(world(), other)) kinds = {*here};
@@ -311,6 +340,7 @@ Status TaskLearningAgent::Session::learn_goal(ObjectId object, const Goal& goal,
   std::optional<GoalKnowledge> previous;
   if (const GoalKnowledge* known = agent_.knowledge_.goals.find(knowledge->key)) previous = *known;
   agent_.knowledge_.goals.add(*knowledge);
+  progress_.last_goal = knowledge->key;
   ++progress_.goals_learned;
   return store_goal(*knowledge, std::move(previous));
 }

@@ -82,6 +82,9 @@ class TaskLearningAgent::Session {
     std::vector<ObjectReport> objects;
     int goals_learned = 0;
     int rules_learned = 0;
+    // The goal the last object was given, learned or remembered: what "socks
+    // too" and "same again" mean.
+    std::optional<GoalKey> last_goal;
   };
   // What one reply of the teacher taught, with what undo needs to forget
   // it: the progress, knowledge and world before it, and the writes to the
@@ -175,7 +178,19 @@ class TaskLearningAgent::Session {
   Flow<std::optional<Goal>> goal_by_analogy(ObjectId object, ObjectReport& report);
   // "same as the soda can", "like the mug": the goal of a kind already
   // learned, for `object`; nullopt if the reply is not such a comparison.
+  // "socks too", "same again" (language::read_same_again) mean the goal the
+  // last object was given.
   std::optional<language::Reply> goal_like_another(ObjectId object, const std::string& text) const;
+  // The goal given last, for `object`; `named` is the phrase the reply named
+  // the object by ("" for none), which must name its kind.
+  std::optional<language::Reply> goal_given_last(ObjectId object, const std::string& named,
+                                                 const std::string& text) const;
+  // "the sweater goes on the low shelf", asked about the sock: the goal of
+  // one other thing still to come in this subtask; nullopt otherwise.
+  std::optional<language::Reply> goal_for_another(ObjectId object, const std::string& text) const;
+  // Whether `item` is in or on a place of the current subtask and not yet
+  // dealt with: a goal said for it now will be used when it comes.
+  bool still_to_come(ObjectId item) const;
   GoalKey goal_key(ObjectId object) const;
   llm::TaskContext llm_context(ObjectId object) const;
 

@@ -62,7 +62,7 @@ struct SpokenClause {
       } else {
         ObjectId o = std::get<ObjectId>(part);
         if (it && *it == o && !pronoun_used) {
-          std::string pronoun = plural_name(world, o) ? "them" : "it";
+          std::string pronoun = object_pronoun(world, o);
           // A pronoun goes before the particle of a phrasal verb: "picked it up".
           const std::string suffix = " up";
           if (!words.empty() && words.back().size() > suffix.size() &&
@@ -383,6 +383,8 @@ std::string spoken_places(const World& world, std::span<const ObjectId> places) 
   return list_phrase(names);
 }
 
+std::string object_pronoun(const World& world, ObjectId object) { return plural_name(world, object) ? "them" : "it"; }
+
 std::string_view relation_word(const World& world, ObjectId place) {
   return world.universe->info(place).kind == ObjectKind::kSurface ? "on" : "in";
 }
@@ -394,6 +396,9 @@ std::string task_phrase(std::string_view task_name) {
   std::vector<std::string> words = split_words(task_name);
   if (words.size() < 2) return join(words, " ");
   std::size_t object_start = kParticles.count(words[1]) && words.size() > 2 ? 2 : 1;
+  // "clean up after party" -> "clean up after the party".
+  static const std::set<std::string> kPrepositions = {"after", "before", "around", "for", "with"};
+  if (kPrepositions.count(words[object_start]) && words.size() > object_start + 1) ++object_start;
   if (kDeterminers.count(words[object_start])) return join(words, " ");
   words.insert(words.begin() + static_cast<std::ptrdiff_t>(object_start), "the");
   return join(words, " ");

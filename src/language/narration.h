@@ -53,10 +53,13 @@ std::string spoken_places(const World& world, std::span<const ObjectId> places);
 // screwdrivers and the tape measure" (not "the screwdriver, and the
 // screwdriver"). Names in the order first given.
 std::string spoken_things(const World& world, std::span<const ObjectId> things);
+// "it", or "them" for a thing named in the plural ("the jeans").
+std::string object_pronoun(const World& world, ObjectId object);
 // "on" or "in": how things are at the place.
 std::string_view relation_word(const World& world, ObjectId place);
 // "tidy kitchen" -> "tidy the kitchen"; "tidy up kitchen" -> "tidy up the
-// kitchen"; a name that already has a determiner is kept.
+// kitchen"; "clean up after party" -> "clean up after the party"; a name
+// that already has a determiner is kept.
 std::string task_phrase(std::string_view task_name);
 // "1 instruction", "2 instructions", "0 goals"; `plural` defaults to the
 // singular plus "s".

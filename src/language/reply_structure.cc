@@ -236,6 +236,7 @@ class StructureReader {
                                              std::nullopt});
       which.examples.insert(which.examples.begin(), "clear " + place);
       if (which.examples.size() > 2) which.examples.resize(2);
+      which.topic_place = named->objects.front();
       return which;
     }
     return unusable(in_, Problem{"I didn't catch what comes next in the task in \"" + quoted_words(in_.words) + "\".",
@@ -413,6 +414,11 @@ class StructureReader {
         }
       }
     }
+    // "clear it", or "clear" alone, after "What should I do with the things
+    // on the coffee table?".
+    bool about_it = !c.object || c.object->pronoun || c.object->place_pronoun;
+    if (!found && !unresolved && about_it && c.phrases.empty() && in_.context.topic_place)
+      found = Places{{*in_.context.topic_place}, "it"};
     if (!found && unresolved && !problem_) problem_ = unresolved;
     if (!found || problem_ || ambiguous_) return std::nullopt;
     std::vector<ObjectId> holding = holding_items(found->objects);
@@ -552,6 +558,11 @@ Reply read_task(const ReplyInput& in) {
   }
   std::string name = verb_name(verb, particle);
   if (particle == "off" || particle == "down" || particle == "over" || particle == "aside") name = verb + " " + particle;
+  // "clean up after the party": "up" stays before a preposition, whose
+  // object is the task's.
+  if (!object.empty() && is_one_of(object.front(), {"after", "before", "around"}) && words->size() > 1 &&
+      (*words)[1] == "up")
+    name = verb + " up";
   for (const std::string& w : object) name += " " + w;
   return TaskNamed{name};
 }

@@ -9,6 +9,7 @@
 #include <rapidcheck/gtest.h>
 
 #include "language/generation.h"
+#include "language/narration.h"
 #include "language/reply.h"
 #include "language_fixtures.h"
 
@@ -255,6 +256,38 @@ TEST(ReplyStructure, APlaceWithoutAVerbTakesTheLastSubtasksVerb) {
   EXPECT_EQ(read(kitchen, step, "then do the dish rack"), "subtask clear in dish-rack1");
   EXPECT_EQ(read(kitchen, step, "now unload the dish rack"), "subtask unload in dish-rack1");
   EXPECT_EQ(read(kitchen, step, "that's all for the table"), "finished");
+}
+
+// After "What should I do with the things on the counter?" (the reason
+// names the place it asks about), "clear it" and "clear" are about that
+// place; without that question they are not.
+TEST(ReplyStructure, ItAfterAQuestionAboutAPlaceIsThatPlace) {
+  const World& kitchen = kitchen30().world;
+  ReplyContext step = asking(Asked::kTaskStep);
+  Reply bare = read_reply(grounder(), kitchen, step, "start with the counter");
+  ASSERT_TRUE(std::holds_alternative<Unusable>(bare)) << format_reply(kitchen, bare);
+  ASSERT_TRUE(std::get<Unusable>(bare).topic_place.has_value());
+  EXPECT_EQ(kitchen.universe->name(*std::get<Unusable>(bare).topic_place), "counter1");
+  EXPECT_EQ(read(kitchen, step, "clear it"), "unusable");
+  EXPECT_EQ(read(kitchen, step, "clear"), "unusable");
+  step.topic_place = std::get<Unusable>(bare).topic_place;
+  EXPECT_EQ(read(kitchen, step, "clear it"), "subtask clear on counter1");
+  EXPECT_EQ(read(kitchen, step, "clear"), "subtask clear on counter1");
+  EXPECT_EQ(read(kitchen, step, "unload that"), "subtask unload on counter1");
+  // A place named in the reply is still that place.
+  EXPECT_EQ(read(kitchen, step, "clear the table"), "subtask clear on table1");
+}
+
+TEST(ReplyTask, APrepositionAfterTheVerbKeepsItsObject) {
+  const World& kitchen = kitchen30().world;
+  ReplyContext task = asking(Asked::kTask);
+  EXPECT_EQ(read(kitchen, task, "clean up after the party"), "task clean up after party");
+  EXPECT_EQ(read(kitchen, task, "let's clean up after the party"), "task clean up after party");
+  EXPECT_EQ(read(kitchen, task, "tidy up the kitchen"), "task tidy kitchen");
+  EXPECT_EQ(task_phrase("clean up after party"), "clean up after the party");
+  EXPECT_EQ(task_phrase("tidy up kitchen"), "tidy up the kitchen");
+  EXPECT_EQ(task_phrase("clean after party"), "clean after the party");
+  EXPECT_EQ(task_phrase("clean after the party"), "clean after the party");
 }
 
 // --- References and reasons (issue 9) --------------------------------------------------
