@@ -221,15 +221,16 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
       say("I will leave " + language::spoken_name_and_location(w, object) + " as it is.");
       return std::optional<Goal>();
     }
-    const Goal& goal = std::get<language::GoalGiven>(*heard->reply).goal;
+    const auto& given = std::get<language::GoalGiven>(*heard->reply);
     const ObjectId about = ahead.value_or(object);
-    say(language::read_back_goal(w, about, goal) +
+    const std::string source = "instructor: " + apprentice::quoted(heard->text);
+    say(language::read_back_goal(w, about, given.goal) +
         (ahead ? " I will do that when I come to " + language::object_pronoun(w, about) + "." : ""));
-    if (auto s = learn_goal(about, goal, "instructor: " + apprentice::quoted(heard->text)); !s)
-      return stop(s.error());
+    if (auto s = learn_goal(about, given.goal, source); !s) return stop(s.error());
+    if (auto s = learn_goals_of_others(object, about, given, source); !s) return stop(s.error());
     if (ahead) continue;
     report.goal_source = "instructor";
-    return std::optional<Goal>(goal);
+    return std::optional<Goal>(given.goal);
   }
 }
 
@@ -255,6 +256,50 @@ std::optional<language::Reply> TaskLearningAgent::Session::goal_for_another(Obje
       agent_.understanding_.example_replies(world(), context(language::Asked::kGoal, object)), std::nullopt});
 }
 
+Status TaskLearningAgent::Session::learn_goals_of_others(ObjectId asked, ObjectId about, const language::GoalGiven& given,
+                                                        const std::string& source) {
+  const World& w = world();
+  std::vector<std::string> same;
+  std::vector<ObjectId> learned, later;
+  for (const Goal& goal : given.others) {
+    std::vector<ObjectId> items;
+    for (ObjectId o : goal.objects())
+      if (w.universe->info(o).kind == ObjectKind::kItem) items.push_back(o);
+    if (items.size() != 1 || items.front() == asked || items.front() == about) continue;
+    const ObjectId item = items.front();
+    if (!still_to_come(item)) {
+      if (!progress_.evaluated.count(item)) later.push_back(item);
+      continue;
+    }
+    if (auto s = learn_goal(item, goal, source); !s) return s;
+    learned.push_back(item);
+    // "The same goes for ...": the goal asked for, with this thing in its place.
+    auto as_asked = [&](Literal l) {
+      for (std::size_t i = 0; i < l.fact.arity; ++i)
+        if (l.fact.args[i] == item) l.fact.args[i] = about;
+      return l;
+    };
+    bool alike = goal.literals.size() == given.goal.literals.size() &&
+                 std::equal(goal.literals.begin(), goal.literals.end(), given.goal.literals.begin(),
+                            [&](const Literal& a, const Literal& b) { return as_asked(a) == b; });
+    if (alike) same.push_back(language::spoken_name(w, item));
+    else say(language::read_back_goal(w, item, goal));
+  }
+  auto them = [&](const std::vector<ObjectId>& things) {
+    return things.size() == 1 ? language::object_pronoun(w, things.front()) : std::string("them");
+  };
+  if (!same.empty())
+    say("The same goes for " + language::list_phrase(same) + ", when I come to " + them(learned) + ".");
+  else if (!learned.empty())
+    say("I will do that when I come to " + them(learned) + ".");
+  if (!later.empty()) {
+    std::vector<std::string> names;
+    for (ObjectId o : later) names.push_back(language::spoken_name(w, o));
+    say("I will ask about " + language::list_phrase(names) + " when I come to " + them(later) + ".");
+  }
+  return {};
+}
+
 bool TaskLearningAgent::Session::still_to_come(ObjectId item) const {
   if (progress_.evaluated.count(item)) return false;
   const Vocabulary& v = world().vocabulary;
@@ -266,16 +311,32 @@ bool TaskLearningAgent::Session::still_to_come(ObjectId item) const {
 
 std::optional<language::Reply> TaskLearningAgent::Session::goal_given_last(ObjectId object, const std::string& named,
                                                                            const std::string& text) const {
-  // "the towel too", asked about the sock, is not this reading.
-  if (!named.empty() && agent_.understanding_.category(world(), named) != world().universe->info(object).category)
-    return std::nullopt;
+  const World& w = world();
+  // Who gets it: the thing asked about, unless the reply names another kind
+  // only: "the milk too", asked about the fork, after the ketchup's goal,
+  // is the milk's (said ahead, goal_from_instructor), if it is still to
+  // come; else this is not the reading.
+  ObjectId to = object;
+  if (!named.empty()) {
+    std::vector<ObjectId> named_things = agent_.understanding_.may_name(w, named);
+    const std::string& kind = w.universe->info(object).category;
+    bool this_kind = std::any_of(named_things.begin(), named_things.end(),
+                                 [&](ObjectId o) { return w.universe->info(o).category == kind; });
+    if (!this_kind) {
+      std::vector<ObjectId> coming;
+      for (ObjectId o : named_things)
+        if (w.universe->info(o).kind == ObjectKind::kItem && still_to_come(o)) coming.push_back(o);
+      if (coming.empty()) return std::nullopt;
+      to = coming.front();
+    }
+  }
   const GoalKnowledge* last = progress_.last_goal ? agent_.knowledge_.goals.find(*progress_.last_goal) : nullptr;
   if (last == nullptr)
     return language::Reply(language::Unusable{
         "I have not put anything away yet, so I do not know what " + apprentice::quoted(text) + " refers to. Where should " +
-            language::spoken_name(world(), object) + " go?",
-        agent_.understanding_.example_replies(world(), context(language::Asked::kGoal, object)), std::nullopt});
-  std::optional<Goal> goal = instantiate_goal(world(), *last, object);
+            language::spoken_name(w, object) + " go?",
+        agent_.understanding_.example_replies(w, context(language::Asked::kGoal, object)), std::nullopt});
+  std::optional<Goal> goal = instantiate_goal(w, *last, to);
   if (!goal) return std::nullopt;
   return language::Reply(language::GoalGiven{*goal});
 }

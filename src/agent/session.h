@@ -188,6 +188,12 @@ class TaskLearningAgent::Session {
   // "the sweater goes on the low shelf", asked about the sock: the goal of
   // one other thing still to come in this subtask; nullopt otherwise.
   std::optional<language::Reply> goal_for_another(ObjectId object, const std::string& text) const;
+  // The goals a reply gave other things along with the one for `about`
+  // ("plates and forks go in the dishwasher"): those still to come in this
+  // subtask are learned for their kinds, and said; the rest are asked
+  // about in their turn.
+  Status learn_goals_of_others(ObjectId asked, ObjectId about, const language::GoalGiven& given,
+                               const std::string& source);
   // Whether `item` is in or on a place of the current subtask and not yet
   // dealt with: a goal said for it now will be used when it comes.
   bool still_to_come(ObjectId item) const;

@@ -1,5 +1,7 @@
 #include "agent/understanding.h"
 
+#include <algorithm>
+
 #include "language/grounding.h"
 #include "language/parser.h"
 #include "language/reference.h"
@@ -99,6 +101,18 @@ std::optional<std::string> Understanding::category(const World& world, std::stri
   auto resolved = language::resolve_category(noun, context);
   if (const std::string* category = std::get_if<std::string>(&resolved)) return *category;
   return std::nullopt;
+}
+
+std::vector<ObjectId> Understanding::may_name(const World& world, std::string_view phrase) const {
+  language::NounPhrase noun{"", split_words(to_lower(phrase))};
+  while (!noun.words.empty() && is_one_of(noun.words.front(), {"the", "a", "an", "those", "these", "that", "this"}))
+    noun.words.erase(noun.words.begin());
+  if (noun.words.empty()) return {};
+  language::ReferenceContext context{world, impl_->grounder.lexicon(), std::nullopt};
+  context.partial_names = true;
+  auto found = language::candidates_for(noun, language::Role::kItem, context);
+  const auto* set = std::get_if<language::CandidateSet>(&found);
+  return set == nullptr ? std::vector<ObjectId>() : set->objects;
 }
 
 const language::Lexicon& Understanding::lexicon() const { return impl_->grounder.lexicon(); }

@@ -47,6 +47,10 @@ class Understanding {
   // The kind of object a phrase names ("ketchup", "glass"), for "forget
   // <kind of object>", or nullopt if it names none here.
   std::optional<std::string> category(const World& world, std::string_view phrase) const;
+  // The things a phrase may name, by part of their names too ("fork" and
+  // "forks": the metal forks and the plastic one); none when it names
+  // nothing here. For "same for the fork", which is not asked back about.
+  std::vector<ObjectId> may_name(const World& world, std::string_view phrase) const;
 
   // The logical form, or kInvalidInput saying what was expected.
   Result<language::LogicalForm> parse(std::string_view sentence) const;

@@ -259,7 +259,11 @@ std::string format_reply(const World& world, const Reply& reply) {
     }
     std::string operator()(const Finished&) const { return "finished"; }
     std::string operator()(const Proceed&) const { return "proceed"; }
-    std::string operator()(const GoalGiven& r) const { return "goal " + format_goal(*world.domain, u, r.goal); }
+    std::string operator()(const GoalGiven& r) const {
+      std::string out = "goal " + format_goal(*world.domain, u, r.goal);
+      for (const Goal& g : r.others) out += "; also " + format_goal(*world.domain, u, g);
+      return out;
+    }
     std::string operator()(const ActionGiven& r) const {
       std::string out = "action " + format_action(*world.domain, u, r.action);
       for (const Action& a : r.more) out += ", " + format_action(*world.domain, u, a);

@@ -99,6 +99,9 @@ struct Proceed {};
 
 struct GoalGiven {
   Goal goal;
+  // The goals the same reply gave other things, one each ("plates and forks
+  // go in the dishwasher", asked about a plate: the fork's).
+  std::vector<Goal> others = {};
 };
 
 struct ActionGiven {

@@ -260,11 +260,12 @@ class ClauseReader {
     else c_.others.push_back(std::move(noun));
   }
 
-  // Whether a verb, a copula or an auxiliary comes later in the clause.
+  // Whether a verb, a copula or an auxiliary comes later in the clause. A
+  // verb's form after a determiner is a noun ("in the trash").
   bool verb_ahead() const {
     for (std::size_t k = i_; k < w_.size(); ++k)
       if (is_copula(w_[k]) || (is_auxiliary(w_[k]) && w_[k] != "to") ||
-          (!v_.household_verb(w_[k]).empty() && !v_.is_name_word(w_[k])))
+          (!v_.household_verb(w_[k]).empty() && !v_.is_name_word(w_[k]) && !(k > 0 && is_determiner(w_[k - 1]))))
         return true;
     return false;
   }

@@ -41,13 +41,42 @@ class EventReader {
 
   Events read() {
     std::vector<Event> events;
+    // "plates, forks and glasses go in the dishwasher", "put the plates
+    // and the forks in the dishwasher": things named in clauses of their
+    // own, before the clause that says where they go, go there too (in a
+    // goal; an action is one step at a time).
+    std::vector<Chunk> waiting;
+    bool unplaced_before_waiting = false;
     for (const Clause& clause : read_clauses(in_.words, in_.vocabulary)) {
       clause_ = &clause;
       std::optional<Choice> failure;
-      if (auto event = read_clause(failure)) events.push_back(*event);
+      if (waiting.empty()) unplaced_before_waiting = unplaced_;
+      std::optional<Event> event = read_clause(failure);
+      if (event) events.push_back(*event);
       if (failure) {
         if (auto* ambiguous = std::get_if<Ambiguous>(&*failure)) return *ambiguous;
         return std::get<Problem>(*failure);
+      }
+      if (in_.context.asked == Asked::kGoal) {
+        if (auto thing = waits_for_a_place(clause, event)) {
+          waiting.push_back(*thing);
+        } else if (event && event->kind == Event::Kind::kPlace) {
+          // In the order said: the things waiting, then this clause's.
+          events.pop_back();
+          for (const Chunk& thing : waiting) {
+            Event same = *event;
+            same.item_words = thing.text();
+            same.item = item(thing, same.item_named, failure);
+            if (failure) {
+              if (auto* ambiguous = std::get_if<Ambiguous>(&*failure)) return *ambiguous;
+              return std::get<Problem>(*failure);
+            }
+            events.push_back(same);
+          }
+          events.push_back(*event);
+          if (!waiting.empty()) unplaced_ = unplaced_before_waiting;  // "put the plates" has its place now
+          waiting.clear();
+        }
       }
       if (!clause.verb.empty() && clause.verb_class() == VerbClass::kNone && !clause.copula) unknown_verbs_.push_back(clause.verb);
     }
@@ -59,6 +88,20 @@ class EventReader {
   bool unplaced() const { return unplaced_; }
 
  private:
+  // The thing a clause names without saying where it goes, and without
+  // anything else: "plates" in "plates, forks and glasses go ...", "put
+  // the plates" in "put the plates and the forks in ...". A place said on
+  // its own is a placement (read_clause), not this.
+  std::optional<Chunk> waits_for_a_place(const Clause& c, const std::optional<Event>& event) const {
+    if (event || c.negated || c.closed || !c.phrases.empty() || !c.others.empty()) return std::nullopt;
+    const std::optional<Chunk>* thing = nullptr;
+    if (c.verb.empty() && !c.copula && c.subject && !c.object) thing = &c.subject;
+    else if (c.verb_class() == VerbClass::kPlace && c.object && !c.subject) thing = &c.object;
+    if (thing == nullptr || (*thing)->pronoun || (*thing)->place_pronoun || (*thing)->words.empty()) return std::nullopt;
+    if (names_place(**thing)) return std::nullopt;
+    return **thing;
+  }
+
   // A place from a phrase, remembered as the place named last.
   std::optional<ObjectId> place(const Chunk& chunk, std::optional<Choice>& failure) {
     Choice choice = resolver_.choose(chunk, Role::kPlace);
@@ -335,10 +378,15 @@ Reply read_goal(const ReplyInput& in) {
   GoalDescription goal;
   std::optional<ObjectId> destination;
   std::string other;
+  // Other things placed by name ("forks" in "plates and forks go in the
+  // dishwasher"): their goals come with the goal asked for.
+  std::vector<const Event*> others;
   for (const Event& e : events) {
     if (e.kind == Event::Kind::kPlace) {
       if (asked && *e.item != *asked) {
         if (e.item_named && other.empty()) other = spoken_name(world, *e.item);
+        if (e.item_named && std::none_of(others.begin(), others.end(), [&](const Event* o) { return o->item == e.item; }))
+          others.push_back(&e);
         continue;
       }
       if (destination && *destination != *e.place)
@@ -381,7 +429,20 @@ Reply read_goal(const ReplyInput& in) {
                         [](const Conjunct& c) { return std::holds_alternative<Placement>(c); });
   Interpretation grounded = in.grounder.ground(goal, world, asked);
   if (!grounded.ok()) return unusable(in, failure_problem(grounded));
-  return GoalGiven{std::get<Goal>(grounded.result)};
+  GoalGiven given{std::get<Goal>(grounded.result)};
+  // Each other thing: its placement, and the same doors when it goes to the
+  // same place. One that cannot
+  // be so ("the plates and the milk go on the dish rack" where the milk
+  // cannot) is left out; it is asked about when its turn comes.
+  for (const Event* e : others) {
+    GoalDescription same = goal;
+    if (e->place != destination) same.conjuncts.resize(1);  // the doors said are of the other place
+    std::get<Placement>(same.conjuncts.front()) =
+        Placement{id_phrase(world, *e->item), e->relation, id_phrase(world, *e->place)};
+    Interpretation theirs = in.grounder.ground(same, world, e->item);
+    if (theirs.ok()) given.others.push_back(std::get<Goal>(theirs.result));
+  }
+  return given;
 }
 
 Reply read_action(const ReplyInput& in) {

@@ -490,5 +490,54 @@ TEST_F(Teach, ALaundryTaughtAsAPersonTalks) {
   EXPECT_EQ(knowledge.goals.size(), 10u);
 }
 
+// The kitchen of the paper in a person's words: a list of kinds in one
+// reply, "same for the fork" (a partial name), "glasses too", "milk as well"
+// said ahead while asked about the fork, "same with the pop tarts", and
+// "paper plate in the trash" ("trash" is a verb too).
+TEST_F(Teach, AKitchenTaughtInListsAndEllipses) {
+  const fs::path kitchen = testing::source_path("data/scenarios/tidy-kitchen.yaml");
+  Process teach({APPRENTICE_BINARY, "teach", "--scenario", kitchen.string(), "--knowledge", knowledge().string()});
+  ASSERT_TRUE(teach.write(lines({"hey, can you help me clean up the kitchen?", "let's start by clearing off the table",
+                                 "plates and glasses go in the dishwasher, close it", "same for the fork",
+                                 "the ketchup goes in the fridge, close the door", "milk as well",
+                                 "the cereal box goes in the pantry and shut it", "same with the pop tarts",
+                                 "paper plate in the trash", "quit"})));
+  EXPECT_EQ(teach.wait(), 1) << teach.out() << teach.err();
+  const std::string& out = teach.out();
+  EXPECT_THAT(out, HasSubstr("Instructor: plates and glasses go in the dishwasher, close it\n"
+                             "Agent: So the ceramic plate goes in the dishwasher, and the dishwasher ends closed.\n"
+                             "Agent: The same goes for the glass tumbler, when I come to it.\n"));
+  EXPECT_THAT(out, HasSubstr("Instructor: same for the fork\n"
+                             "Agent: So the metal fork goes in the dishwasher, and the dishwasher ends closed.\n"));
+  EXPECT_THAT(out, HasSubstr("Agent: Next, the glass tumbler on the table: it goes in the dishwasher, and the "
+                             "dishwasher ends closed.\n"));
+  EXPECT_THAT(out, HasSubstr("Instructor: same with the pop tarts\n"
+                             "Agent: So the pop tart box goes in the pantry, and the pantry ends closed.\n"));
+  EXPECT_THAT(out, HasSubstr("Instructor: paper plate in the trash\nAgent: So the paper plate goes in the garbage.\n"));
+  EXPECT_THAT(out, Not(HasSubstr("I didn't catch")));
+  // Each kind taught once, the glass tumbler's from the list.
+  Knowledge knowledge = stored(kitchen);
+  std::vector<std::string> kinds;
+  for (const GoalKnowledge& g : knowledge.goals.all()) kinds.push_back(g.key.category);
+  EXPECT_THAT(kinds, ::testing::UnorderedElementsAre("ceramic-plate", "glass-tumbler", "metal-fork", "ketchup", "milk",
+                                                     "cereal-box", "pop-tart-box", "paper-plate"));
+}
+
+// "the milk too", asked about the fork right after the plate's goal: the
+// milk, still to come, gets the plate's goal ahead, and the fork is asked
+// about again.
+TEST_F(Teach, ThingsTooSaidOfAnotherThingStillToComeIsLearnedAhead) {
+  Process teach({APPRENTICE_BINARY, "teach", "--scenario",
+                 testing::source_path("data/scenarios/tidy-kitchen.yaml").string()});
+  ASSERT_TRUE(teach.write(lines({"tidy the kitchen", "clear the table", "put it in the dishwasher and close it",
+                                 "the milk too", "quit"})));
+  EXPECT_EQ(teach.wait(), 1) << teach.out() << teach.err();
+  EXPECT_THAT(teach.out(), HasSubstr("Agent: Where should the metal fork on the table go?\n"
+                                     "Instructor: the milk too\n"
+                                     "Agent: So the milk goes in the dishwasher, and the dishwasher ends closed. I will "
+                                     "do that when I come to it.\n"
+                                     "Agent: Where should the metal fork on the table go?\n"));
+}
+
 }  // namespace
 }  // namespace apprentice

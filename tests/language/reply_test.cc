@@ -278,6 +278,28 @@ TEST(ReplyStructure, ItAfterAQuestionAboutAPlaceIsThatPlace) {
   EXPECT_EQ(read(kitchen, step, "clear the table"), "subtask clear on table1");
 }
 
+// Things named in clauses of their own before the clause that says where
+// they go go there too; the goal asked for is the asked thing's, and the
+// others' come with it, in the order said.
+TEST(ReplyGoal, ThingsListedTogetherGoTogether) {
+  const World& kitchen = kitchen30().world;
+  ReplyContext plate = asking(Asked::kGoal, in(kitchen, "ceramic-plate1"));
+  EXPECT_EQ(read(kitchen, plate, "plates, forks and glasses go in the dishwasher"),
+            "goal (in ceramic-plate1 dishwasher1); also (in metal-fork1 dishwasher1); also (in glass-tumbler1 "
+            "dishwasher1)");
+  EXPECT_EQ(read(kitchen, plate, "put the plates and the forks in the dishwasher and close it"),
+            "goal (and (in ceramic-plate1 dishwasher1) (closed dishwasher1)); also (and (in metal-fork1 dishwasher1) "
+            "(closed dishwasher1))");
+  // A door said of one place is not another place's.
+  EXPECT_EQ(read(kitchen, plate, "the plates go in the dishwasher and the milk goes in the fridge"),
+            "goal (in ceramic-plate1 dishwasher1); also (in milk1 fridge1)");
+  // Named and never placed is still asked where.
+  EXPECT_EQ(read(kitchen, plate, "put the plates"), "unusable");
+  // "the trash" after "in" is a place, not a verb to come.
+  ReplyContext paper = asking(Asked::kGoal, in(kitchen, "paper-plate1"));
+  EXPECT_EQ(read(kitchen, paper, "paper plate in the trash"), "goal (in paper-plate1 garbage1)");
+}
+
 TEST(ReplyTask, APrepositionAfterTheVerbKeepsItsObject) {
   const World& kitchen = kitchen30().world;
   ReplyContext task = asking(Asked::kTask);
