@@ -102,14 +102,16 @@ TaskLearningAgent::Session::Flow<TaskLearningAgent::Session::Heard> TaskLearning
     if (rescue && std::holds_alternative<language::Unusable>(reply))
       if (auto rescued = rescue(*text)) reply = std::move(*rescued);
     std::optional<std::string> why;
+    std::vector<std::string> examples;
     if (const auto* u = std::get_if<language::Unusable>(&reply)) {
       why = u->reason;
-      context.topic_place = u->topic_place;
+      examples = u->examples;
+      context.topic_places = u->topic_places;
     } else {
       why = accept(reply);
     }
     if (!why) return Heard{reply, *text};
-    explain(*why, context);
+    explain(*why, context, examples);
     if (!person() && ++unusable > agent_.options_.max_retries) return Heard{std::nullopt, *text};
   }
 }
@@ -160,8 +162,9 @@ TaskLearningAgent::Session::Flow<bool> TaskLearningAgent::Session::confirm(const
   return yes;
 }
 
-void TaskLearningAgent::Session::explain(const std::string& reason, const language::ReplyContext& context) {
-  std::vector<std::string> examples = agent_.understanding_.example_replies(world(), context);
+void TaskLearningAgent::Session::explain(const std::string& reason, const language::ReplyContext& context,
+                                         std::vector<std::string> examples) {
+  if (examples.empty()) examples = agent_.understanding_.example_replies(world(), context);
   std::string text = reason;
   if (!text.empty() && text.back() != '.' && text.back() != '?' && text.back() != '!') text += ".";
   if (!examples.empty()) text += " You could say, for example, " + with_period(quoted_examples(examples, 2));

@@ -145,7 +145,10 @@ class TaskLearningAgent::Session {
                                language::ReplyContext& context, const std::string& text);
   Flow<bool> confirm(const Question& question);
   Step obey(const language::Command& command, const Question& question, const language::ReplyContext& context);
-  void explain(const std::string& reason, const language::ReplyContext& context);
+  // The reason, and replies that would work: `examples` (the reader's, which
+  // may fit the reply better), else the question's.
+  void explain(const std::string& reason, const language::ReplyContext& context,
+               std::vector<std::string> examples = {});
   void help(const Question& question, const language::ReplyContext& context);
   void status(const Question& question);
   Status forget(const std::string& kind);

@@ -48,9 +48,9 @@ struct ReplyContext {
   // The place named last in the conversation: what "the door" and "close
   // it" (after a placement) mean.
   std::optional<ObjectId> recent_place;
-  // The place the agent's last answer asked about (Unusable::topic_place):
-  // what "clear it", or a verb alone ("clear"), is about.
-  std::optional<ObjectId> topic_place;
+  // The places the agent's last answer asked about (Unusable::topic_places):
+  // what "clear it", "empty them", or a verb alone ("clear"), is about.
+  std::vector<ObjectId> topic_places = {};
   // kWhich: the things the agent offered.
   std::vector<ObjectId> choices;
   // Phrases the teacher has already settled: after `Ambiguous{"mug", ...}`
@@ -145,9 +145,10 @@ struct Unusable {
   std::vector<std::string> examples;  // replies that would work at this question
   // The grounder's failure, where the reply parsed but did not ground.
   std::optional<GroundingFailure> failure;
-  // The place the reason asks about ("What should I do with the things on
-  // the coffee table?"): ReplyContext::topic_place of the next reply.
-  std::optional<ObjectId> topic_place = std::nullopt;
+  // The places the reason asks about ("What should I do with the things on
+  // the coffee table?", "... in the buckets?"): ReplyContext::topic_places
+  // of the next reply.
+  std::vector<ObjectId> topic_places = {};
 };
 
 using Reply = std::variant<TaskNamed, SubtaskNamed, LoopNamed, Finished, Proceed, GoalGiven, ActionGiven, YesNo,

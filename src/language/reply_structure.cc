@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "language/generation.h"
+#include "language/narration.h"
 #include "language/reply_reading.h"
 #include "language/utterance.h"
 #include "util/text.h"
@@ -228,15 +229,26 @@ class StructureReader {
                                    std::nullopt});
     // A place and no verb: "the table first".
     if (named) {
-      // Its own example first: the generic ones may name other places.
-      std::string place = distinct_noun_for(in_.world, named->objects.front());
+      // Its own example first: the generic ones may name other places. Of
+      // several places of one kind ("the buckets"), those holding things.
+      std::vector<ObjectId> topic = holding_items(named->objects);
+      if (topic.empty())  // "the hammer goes in the top drawer": where things go, not a part of the task
+        return unusable(in_, Problem{"There is nothing " +
+                                         std::string(relation(named->objects.front()) == Relation::kOn ? "on " : "in ") +
+                                         spoken_places(in_.world, named->objects) +
+                                         " now. First tell me the parts of the task, such as \"" + first_example() +
+                                         "\"; I will ask where each thing goes when I come to it.",
+                                     std::nullopt});
+      std::string place = topic.size() == 1 ? distinct_noun_for(in_.world, topic.front())
+                                            : spoken_places(in_.world, topic);
       Unusable which = unusable(in_, Problem{"What should I do with the things " +
-                                                 std::string(relation(named->objects.front()) == Relation::kOn ? "on " : "in ") +
+                                                 std::string(relation(topic.front()) == Relation::kOn ? "on " : "in ") +
                                                  place + "?",
                                              std::nullopt});
+      std::erase(which.examples, "clear " + place);
       which.examples.insert(which.examples.begin(), "clear " + place);
       if (which.examples.size() > 2) which.examples.resize(2);
-      which.topic_place = named->objects.front();
+      which.topic_places = topic;
       return which;
     }
     return unusable(in_, Problem{"I didn't catch what comes next in the task in \"" + quoted_words(in_.words) + "\".",
@@ -417,8 +429,8 @@ class StructureReader {
     // "clear it", or "clear" alone, after "What should I do with the things
     // on the coffee table?".
     bool about_it = !c.object || c.object->pronoun || c.object->place_pronoun;
-    if (!found && !unresolved && about_it && c.phrases.empty() && in_.context.topic_place)
-      found = Places{{*in_.context.topic_place}, "it"};
+    if (!found && !unresolved && about_it && c.phrases.empty() && !in_.context.topic_places.empty())
+      found = Places{in_.context.topic_places, "it"};
     if (!found && unresolved && !problem_) problem_ = unresolved;
     if (!found || problem_ || ambiguous_) return std::nullopt;
     std::vector<ObjectId> holding = holding_items(found->objects);

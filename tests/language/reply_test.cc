@@ -266,16 +266,25 @@ TEST(ReplyStructure, ItAfterAQuestionAboutAPlaceIsThatPlace) {
   ReplyContext step = asking(Asked::kTaskStep);
   Reply bare = read_reply(grounder(), kitchen, step, "start with the counter");
   ASSERT_TRUE(std::holds_alternative<Unusable>(bare)) << format_reply(kitchen, bare);
-  ASSERT_TRUE(std::get<Unusable>(bare).topic_place.has_value());
-  EXPECT_EQ(kitchen.universe->name(*std::get<Unusable>(bare).topic_place), "counter1");
+  ASSERT_EQ(std::get<Unusable>(bare).topic_places.size(), 1u);
+  EXPECT_EQ(kitchen.universe->name(std::get<Unusable>(bare).topic_places.front()), "counter1");
   EXPECT_EQ(read(kitchen, step, "clear it"), "unusable");
   EXPECT_EQ(read(kitchen, step, "clear"), "unusable");
-  step.topic_place = std::get<Unusable>(bare).topic_place;
+  step.topic_places = std::get<Unusable>(bare).topic_places;
   EXPECT_EQ(read(kitchen, step, "clear it"), "subtask clear on counter1");
   EXPECT_EQ(read(kitchen, step, "clear"), "subtask clear on counter1");
   EXPECT_EQ(read(kitchen, step, "unload that"), "subtask unload on counter1");
   // A place named in the reply is still that place.
   EXPECT_EQ(read(kitchen, step, "clear the table"), "subtask clear on table1");
+  // Several places of a kind: the question names them all, and "empty
+  // them" is about them all.
+  static const Scenario garage = apprentice::testing::shipped_scenario("tidy-garage");
+  ReplyContext garage_step = asking(Asked::kTaskStep);
+  Reply buckets = read_reply(grounder(), garage.world, garage_step, "then the buckets");
+  ASSERT_TRUE(std::holds_alternative<Unusable>(buckets)) << format_reply(garage.world, buckets);
+  EXPECT_EQ(std::get<Unusable>(buckets).reason, "What should I do with the things in the buckets?");
+  garage_step.topic_places = std::get<Unusable>(buckets).topic_places;
+  EXPECT_EQ(read(garage.world, garage_step, "empty them"), "subtask empty in bucket1 bucket2");
 }
 
 // Things named in clauses of their own before the clause that says where
