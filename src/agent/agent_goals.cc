@@ -208,7 +208,8 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
         [&](const std::string& text) {
           if (leaves_it_alone(text)) return std::optional<language::Reply>(language::Finished{});
           if (auto like = goal_like_another(object, text)) return like;
-          return goal_for_another(object, text);
+          if (auto another = goal_for_another(object, text)) return another;
+          return goal_for_a_class(object, text);
         });
     if (!heard) return tl::unexpected(heard.error());
     if (!heard->reply) {
@@ -254,6 +255,41 @@ std::optional<language::Reply> TaskLearningAgent::Session::goal_for_another(Obje
           current().verb + " what is " + current().relation + " " + language::spoken_places(world(), current().places) +
           ". Where should " + language::spoken_name(world(), object) + " go?",
       agent_.understanding_.example_replies(world(), context(language::Asked::kGoal, object)), std::nullopt});
+}
+
+std::optional<language::Reply> TaskLearningAgent::Session::goal_for_a_class(ObjectId object,
+                                                                            const std::string& text) const {
+  const World& w = world();
+  language::Reply first = agent_.understanding_.reply(w, context(language::Asked::kGoal, object), text);
+  const auto* unusable = std::get_if<language::Unusable>(&first);
+  if (unusable == nullptr || !unusable->failure || unusable->failure->kind != language::FailureKind::kUngroundedObject)
+    return std::nullopt;
+  const std::string& phrase = unusable->failure->detail;
+  const std::string said = to_lower(text);
+  const std::size_t at = said.find(phrase);
+  if (phrase.empty() || at == std::string::npos) return std::nullopt;
+  std::vector<std::string> kinds = agent_.understanding_.kinds_under(w, phrase);
+  const std::string& asked_kind = w.universe->info(object).category;
+  std::stable_partition(kinds.begin(), kinds.end(), [&](const std::string& k) { return k == asked_kind; });
+  // Each kind's goal, read from the reply with the kind's name for the
+  // class's: for the thing asked about, else the first of that kind still
+  // to come (then the goal is said ahead).
+  std::optional<language::GoalGiven> given;
+  for (const std::string& kind : kinds) {
+    std::optional<ObjectId> who;
+    if (kind == asked_kind) who = object;
+    for (ObjectId o : w.universe->of_kind(ObjectKind::kItem))
+      if (!who && w.universe->info(o).category == kind && still_to_come(o)) who = o;
+    if (!who) continue;
+    std::string for_kind = said.substr(0, at) + language::spoken_category(kind) + said.substr(at + phrase.size());
+    language::Reply reply = agent_.understanding_.reply(w, context(language::Asked::kGoal, *who), for_kind);
+    const auto* goal = std::get_if<language::GoalGiven>(&reply);
+    if (goal == nullptr) continue;
+    if (!given) given = language::GoalGiven{goal->goal};
+    else given->others.push_back(goal->goal);
+  }
+  if (!given) return std::nullopt;
+  return language::Reply(*given);
 }
 
 Status TaskLearningAgent::Session::learn_goals_of_others(ObjectId asked, ObjectId about, const language::GoalGiven& given,

@@ -191,6 +191,10 @@ class TaskLearningAgent::Session {
   // "the sweater goes on the low shelf", asked about the sock: the goal of
   // one other thing still to come in this subtask; nullopt otherwise.
   std::optional<language::Reply> goal_for_another(ObjectId object, const std::string& text) const;
+  // "tools go in the top drawer": a class WordNet puts kinds here under
+  // (Understanding::kinds_under) gives each of them the goal, the thing
+  // asked about first; nullopt if the reply names no such class.
+  std::optional<language::Reply> goal_for_a_class(ObjectId object, const std::string& text) const;
   // The goals a reply gave other things along with the one for `about`
   // ("plates and forks go in the dishwasher"): those still to come in this
   // subtask are learned for their kinds, and said; the rest are asked

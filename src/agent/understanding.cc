@@ -115,6 +115,15 @@ std::vector<ObjectId> Understanding::may_name(const World& world, std::string_vi
   return set == nullptr ? std::vector<ObjectId>() : set->objects;
 }
 
+std::vector<std::string> Understanding::kinds_under(const World& world, std::string_view phrase) const {
+  std::vector<std::string> kinds;
+  for (ObjectId o : world.universe->of_kind(ObjectKind::kItem)) {
+    const std::string& kind = world.universe->info(o).category;
+    if (std::find(kinds.begin(), kinds.end(), kind) == kinds.end()) kinds.push_back(kind);
+  }
+  return impl_->grounder.lexicon().kinds_under(phrase, kinds);
+}
+
 const language::Lexicon& Understanding::lexicon() const { return impl_->grounder.lexicon(); }
 
 bool Understanding::is_known_action_word(std::string_view word) const {

@@ -51,6 +51,9 @@ class Understanding {
   // "forks": the metal forks and the plastic one); none when it names
   // nothing here. For "same for the fork", which is not asked back about.
   std::vector<ObjectId> may_name(const World& world, std::string_view phrase) const;
+  // The kinds of thing here that a phrase names as a class, by WordNet
+  // ("tools": hammer, screwdriver, wrench); language::Lexicon::kinds_under.
+  std::vector<std::string> kinds_under(const World& world, std::string_view phrase) const;
 
   // The logical form, or kInvalidInput saying what was expected.
   Result<language::LogicalForm> parse(std::string_view sentence) const;

@@ -15,6 +15,9 @@ namespace {
 // look. WordNet's noun hierarchy is at most 20 deep; artifacts reach
 // "container" within a few steps (garbage -> receptacle -> container).
 constexpr int kMaxAncestorDepth = 12;
+// How far below a class word a kind may be to be one of that class ("tool"
+// is two steps above "hammer").
+constexpr int kMaxClassDepth = 3;
 constexpr int kMaxContainerDepth = 4;
 // A word with more kinds than this directly below it in WordNet is too
 // general to name one particular place: "receptacle" has 24 ("garbage" is
@@ -182,10 +185,11 @@ bool Lexicon::has_verb(std::string_view word) const { return wordnet_ && wordnet
 
 bool Lexicon::has_noun(std::string_view word) const { return wordnet_ && wordnet_->has_noun(spaced(word)); }
 
-bool Lexicon::ancestor_of(SynsetOffset ancestor, const Synset& synset, std::string* path) const {
+bool Lexicon::ancestor_of(SynsetOffset ancestor, const Synset& synset, std::string* path, int max_depth) const {
   std::vector<std::pair<SynsetOffset, std::string>> frontier{{synset.offset, describe(synset)}};
   std::set<SynsetOffset> seen{synset.offset};
-  for (int depth = 0; depth < kMaxAncestorDepth && !frontier.empty(); ++depth) {
+  if (max_depth < 0) max_depth = kMaxAncestorDepth;
+  for (int depth = 0; depth < max_depth && !frontier.empty(); ++depth) {
     std::vector<std::pair<SynsetOffset, std::string>> next;
     for (const auto& [offset, trail] : frontier) {
       auto s = wordnet_->synset(offset);
@@ -337,6 +341,29 @@ std::vector<CategoryRelation> Lexicon::related(std::string_view phrase, std::spa
     if (reason.empty() && as_container && !my_contents.empty())
       reason = content_relation(text, name, my_contents, contents(name, theirs, true));
     if (!reason.empty()) out.push_back({category, reason});
+  }
+  return out;
+}
+
+std::vector<std::string> Lexicon::kinds_under(std::string_view phrase, std::span<const std::string> categories) const {
+  std::vector<std::string> out;
+  if (!wordnet_) return out;
+  auto physical = [](std::vector<Synset> senses) {
+    std::erase_if(senses, [](const Synset& s) { return !(s.lexicographer_file == kLexArtifact || is_material(s)); });
+    return senses;
+  };
+  std::vector<Synset> classes = physical(synsets(spaced(phrase)));
+  for (const std::string& lemma : lemmas(phrase))  // "tools" -> "tool"
+    for (Synset& s : physical(synsets(lemma))) classes.push_back(std::move(s));
+  if (classes.empty()) return out;
+  for (const std::string& category : categories) {
+    std::vector<Synset> kinds = physical(synsets(spaced(category)));
+    bool under = std::any_of(kinds.begin(), kinds.end(), [&](const Synset& kind) {
+      return std::any_of(classes.begin(), classes.end(), [&](const Synset& c) {
+        return c.offset != kind.offset && ancestor_of(c.offset, kind, nullptr, kMaxClassDepth);
+      });
+    });
+    if (under) out.push_back(category);
   }
   return out;
 }

@@ -69,6 +69,13 @@ class Lexicon {
   std::vector<CategoryRelation> related(std::string_view phrase, std::span<const std::string> categories,
                                         bool as_container) const;
 
+  // Which of `categories` are kinds of what the phrase names, as a class of
+  // things ("tools": hammer, screwdriver and wrench, each at most three
+  // steps below "tool" in WordNet); for "tools go in the top drawer". Unlike
+  // related(), a general word is allowed: the phrase names every kind
+  // under it, not one thing. {} without WordNet.
+  std::vector<std::string> kinds_under(std::string_view phrase, std::span<const std::string> categories) const;
+
   // Whether WordNet knows the word under any part of speech; false
   // without WordNet.
   bool knows(std::string_view word) const;
@@ -88,7 +95,8 @@ class Lexicon {
   bool is_container(const Synset& synset) const;
   std::vector<Synset> contents(std::string_view phrase, const std::vector<Synset>& senses,
                                bool require_container) const;
-  bool ancestor_of(SynsetOffset ancestor, const Synset& synset, std::string* path) const;
+  // Within `max_depth` steps up (a negative: the default, kMaxAncestorDepth).
+  bool ancestor_of(SynsetOffset ancestor, const Synset& synset, std::string* path, int max_depth = -1) const;
   std::string sense_relation(const std::string& text, const std::string& name, const std::vector<Synset>& mine,
                              const std::vector<Synset>& theirs) const;
 

@@ -566,5 +566,21 @@ TEST_F(Teach, AGarageTaughtPlaceByPlace) {
   EXPECT_THAT(out, HasSubstr("The task is learned: 16 of 16 goal assertions hold"));
 }
 
+// "tools go in the top drawer": WordNet has the hammer, the screwdrivers
+// and the wrench as tools, so each gets the goal; the tape measure is not
+// one, and is asked about in its turn.
+TEST_F(Teach, AClassOfThingsGoesTogether) {
+  Process teach({APPRENTICE_BINARY, "teach", "--scenario",
+                 testing::source_path("data/scenarios/tidy-garage.yaml").string()});
+  ASSERT_TRUE(teach.write(lines({"time to tidy the garage", "clear the workbench",
+                                 "tools go in the top drawer, shut it afterwards", "quit"})));
+  EXPECT_EQ(teach.wait(), 1) << teach.out() << teach.err();
+  EXPECT_THAT(teach.out(), HasSubstr("Instructor: tools go in the top drawer, shut it afterwards\n"
+                                     "Agent: So the hammer goes in the top drawer, and the top drawer ends closed.\n"
+                                     "Agent: The same goes for the screwdriver and the wrench, when I come to them.\n"));
+  EXPECT_THAT(teach.out(), HasSubstr("Agent: Next, the wrench on the workbench: it goes in the top drawer"));
+  EXPECT_THAT(teach.out(), HasSubstr("Agent: Where should the tape measure on the workbench go?\n"));
+}
+
 }  // namespace
 }  // namespace apprentice

@@ -48,6 +48,19 @@ TEST_F(WithWordNet, VariantsSplitCompoundsAndRepairGerunds) {
   EXPECT_TRUE(variant_phrases(lexicon(), "dishwasher").empty());
 }
 
+// A class word names the kinds a few steps below it, however general it
+// is; a word far above them (an "object") names none.
+TEST_F(WithWordNet, KindsUnderAClassWord) {
+  const std::vector<std::string> garage = {"hammer", "screwdriver", "wrench", "tape-measure", "paint-can", "sponge",
+                                           "glue"};
+  const std::vector<std::string> tools = {"hammer", "screwdriver", "wrench"};
+  EXPECT_EQ(lexicon().kinds_under("tools", garage), tools);
+  EXPECT_EQ(lexicon().kinds_under("tool", garage), tools);
+  EXPECT_EQ(lexicon().kinds_under("hand tools", garage), tools);
+  EXPECT_TRUE(lexicon().kinds_under("objects", garage).empty());
+  EXPECT_TRUE(lexicon().kinds_under("hammer", garage).empty()) << "a kind is not under itself";
+}
+
 TEST_F(WithWordNet, Synonyms) {
   EXPECT_TRUE(has(lexicon().synonyms("refrigerator"), "icebox"));
   EXPECT_TRUE(has(lexicon().synonyms("trash can"), "garbage can"));
