@@ -77,6 +77,10 @@ Reply read_action(const ReplyInput& in);
 Reply read_yes_no(const ReplyInput& in);
 Reply read_which(const ReplyInput& in);
 
+// The longest yes or no phrase the words start with: its length, and the
+// answer ("yes, please" -> {2, true}); nullopt if they start with none.
+std::optional<std::pair<std::size_t, bool>> answer_prefix(const std::vector<std::string>& words);
+
 // The finished / go-on expressions of task-structure questions.
 bool says_finished(const std::vector<std::string>& words, const ReplyInput& in);
 bool says_proceed(const std::vector<std::string>& words);
