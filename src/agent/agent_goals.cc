@@ -287,6 +287,8 @@ std::optional<language::Reply> TaskLearningAgent::Session::goal_for_a_class(Obje
     if (goal == nullptr) continue;
     if (!given) given = language::GoalGiven{goal->goal};
     else given->others.push_back(goal->goal);
+    // "crackers, cereal and granola bars in the pantry": the rest of a list.
+    given->others.insert(given->others.end(), goal->others.begin(), goal->others.end());
   }
   if (!given) return std::nullopt;
   return language::Reply(*given);
@@ -348,33 +350,47 @@ bool TaskLearningAgent::Session::still_to_come(ObjectId item) const {
 std::optional<language::Reply> TaskLearningAgent::Session::goal_given_last(ObjectId object, const std::string& named,
                                                                            const std::string& text) const {
   const World& w = world();
-  // Who gets it: the thing asked about, unless the reply names another kind
-  // only: "the milk too", asked about the fork, after the ketchup's goal,
-  // is the milk's (said ahead, goal_from_instructor), if it is still to
-  // come; else this is not the reading.
-  ObjectId to = object;
-  if (!named.empty()) {
-    std::vector<ObjectId> named_things = agent_.understanding_.may_name(w, named);
-    const std::string& kind = w.universe->info(object).category;
-    bool this_kind = std::any_of(named_things.begin(), named_things.end(),
-                                 [&](ObjectId o) { return w.universe->info(o).category == kind; });
-    if (!this_kind) {
-      std::vector<ObjectId> coming;
-      for (ObjectId o : named_things)
-        if (w.universe->info(o).kind == ObjectKind::kItem && still_to_come(o)) coming.push_back(o);
-      if (coming.empty()) return std::nullopt;
-      to = coming.front();
-    }
+  // Who gets it: the thing asked about when the reply names nothing; else
+  // each thing named ("milk and cream too", asked about the milk: the milk,
+  // and the cream ahead), a thing of another kind only if it is still to
+  // come in this subtask (goal_from_instructor learns it ahead). A name
+  // that fits nothing so is not this reading.
+  std::vector<std::string> phrases(1);
+  std::string names = named;
+  std::replace(names.begin(), names.end(), ',', ' ');
+  for (const std::string& word : split_words(names)) {
+    if (word == "and") phrases.emplace_back();
+    else phrases.back() += (phrases.back().empty() ? "" : " ") + word;
   }
+  std::vector<ObjectId> to;
+  for (const std::string& phrase : phrases) {
+    if (phrase.empty()) continue;
+    std::vector<ObjectId> things = agent_.understanding_.may_name(w, phrase);
+    const std::string& kind = w.universe->info(object).category;
+    std::optional<ObjectId> who;
+    if (std::any_of(things.begin(), things.end(), [&](ObjectId o) { return w.universe->info(o).category == kind; }))
+      who = object;
+    for (ObjectId o : things)
+      if (!who && w.universe->info(o).kind == ObjectKind::kItem && still_to_come(o)) who = o;
+    if (!who) return std::nullopt;
+    if (std::find(to.begin(), to.end(), *who) == to.end()) to.push_back(*who);
+  }
+  if (to.empty()) to = {object};
+  std::stable_partition(to.begin(), to.end(), [&](ObjectId o) { return o == object; });
   const GoalKnowledge* last = progress_.last_goal ? agent_.knowledge_.goals.find(*progress_.last_goal) : nullptr;
   if (last == nullptr)
     return language::Reply(language::Unusable{
         "I have not put anything away yet, so I do not know what " + apprentice::quoted(text) + " refers to. Where should " +
             language::spoken_name(w, object) + " go?",
         agent_.understanding_.example_replies(w, context(language::Asked::kGoal, object)), std::nullopt});
-  std::optional<Goal> goal = instantiate_goal(w, *last, to);
-  if (!goal) return std::nullopt;
-  return language::Reply(language::GoalGiven{*goal});
+  language::GoalGiven given;
+  for (std::size_t i = 0; i < to.size(); ++i) {
+    std::optional<Goal> goal = instantiate_goal(w, *last, to[i]);
+    if (!goal) return std::nullopt;
+    if (i == 0) given.goal = std::move(*goal);
+    else given.others.push_back(std::move(*goal));
+  }
+  return language::Reply(std::move(given));
 }
 
 std::optional<language::Reply> TaskLearningAgent::Session::goal_like_another(ObjectId object,

@@ -358,6 +358,8 @@ std::vector<std::string> Lexicon::kinds_under(std::string_view phrase, std::span
   if (classes.empty()) return out;
   for (const std::string& category : categories) {
     std::vector<Synset> kinds = physical(synsets(spaced(category)));
+    for (const std::string& lemma : lemmas(category))  // "saltines" -> "saltine"
+      for (Synset& s : physical(synsets(lemma))) kinds.push_back(std::move(s));
     bool under = std::any_of(kinds.begin(), kinds.end(), [&](const Synset& kind) {
       return std::any_of(classes.begin(), classes.end(), [&](const Synset& c) {
         return c.offset != kind.offset && ancestor_of(c.offset, kind, nullptr, kMaxClassDepth);

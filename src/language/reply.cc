@@ -4,6 +4,7 @@
 #include <set>
 
 #include "language/generation.h"
+#include "language/narration.h"
 #include "language/parser.h"
 #include "language/reply_reading.h"
 #include "language/utterance.h"
@@ -160,8 +161,12 @@ std::vector<std::string> goal_examples(const World& world, const ReplyContext& c
   std::string item = item_noun(world, context.object);
   auto any = destination_for(world, context.object, false);
   auto with_door = destination_for(world, context.object, true);
-  if (any) out.push_back(item + " goes " + in_or_on(world, *any) + distinct_noun_for(world, *any));
-  if (with_door) out.push_back("put it in " + distinct_noun_for(world, *with_door) + " and close it");
+  // "the crackers go", "the ketchup goes".
+  bool plural = context.object && is_plural_category(world.universe->info(*context.object).category);
+  if (any) out.push_back(item + (plural ? " go " : " goes ") + in_or_on(world, *any) + distinct_noun_for(world, *any));
+  if (with_door)
+    out.push_back("put " + std::string(plural ? "them" : "it") + " in " + distinct_noun_for(world, *with_door) +
+                  " and close it");
   if (any) out.push_back(in_or_on(world, *any) + distinct_noun_for(world, *any));
   return out;
 }

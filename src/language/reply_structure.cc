@@ -467,8 +467,9 @@ Reply read_task(const ReplyInput& in) {
   const Words* words = nullptr;
   for (std::size_t i = 0; i < said.size() && words == nullptr; ++i) {
     const Words& piece = said[i];
+    // "I just got back from the store": "back" is a particle here, not "to back".
     if (!piece.empty() && !describes[i] && !is_determiner(piece.front()) && !is_object_pronoun(piece.front()) &&
-        verb_like(piece.front(), in, verb))
+        !is_particle(piece.front()) && verb_like(piece.front(), in, verb))
       words = &piece;
   }
   if (!words) {

@@ -582,5 +582,31 @@ TEST_F(Teach, AClassOfThingsGoesTogether) {
   EXPECT_THAT(teach.out(), HasSubstr("Agent: Where should the tape measure on the workbench go?\n"));
 }
 
+// Groceries as a person puts them: a task after a description ("I just got
+// back from the store", where "back" is not the verb), "milk and cream too",
+// "crackers, cereal and granola bars" (the saltines are crackers in
+// WordNet), "pepper and salt", and the counter place by place.
+TEST_F(Teach, AGroceryRunTaughtAsAPersonTalks) {
+  Process teach({APPRENTICE_BINARY, "teach", "--scenario",
+                 testing::source_path("data/scenarios/unpack-groceries.yaml").string()});
+  ASSERT_TRUE(teach.write(lines({"I just got back from the store, help me put the groceries away", "unpack the bags",
+                                 "the catsup goes in the fridge and close it", "milk and cream too",
+                                 "crackers, cereal and granola bars in the pantry, close it",
+                                 "frozen stuff goes in the freezer, close it", "ice cream too",
+                                 "soda cans in the fridge, close it", "pepper and salt on the spice shelf",
+                                 "now the counter", "clear it", "throw it away", "recycle it", "same as the newspaper",
+                                 "that's everything"})));
+  EXPECT_EQ(teach.wait(), 0) << teach.out() << teach.err();
+  const std::string& out = teach.out();
+  EXPECT_THAT(out, HasSubstr("Agent: What should I do first to put away the groceries?\n"));
+  EXPECT_THAT(out, HasSubstr("Instructor: milk and cream too\n"
+                             "Agent: So the milk goes in the fridge, and the fridge ends closed.\n"
+                             "Agent: The same goes for the cream, when I come to it.\n"));
+  EXPECT_THAT(out, HasSubstr("Instructor: crackers, cereal and granola bars in the pantry, close it\n"
+                             "Agent: So the saltines go in the pantry, and the pantry ends closed.\n"
+                             "Agent: The same goes for the cereal box and the granola bars, when I come to them.\n"));
+  EXPECT_THAT(out, HasSubstr("The task is learned: 18 of 18 goal assertions hold, after 15 instructions.\n"));
+}
+
 }  // namespace
 }  // namespace apprentice

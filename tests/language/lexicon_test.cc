@@ -59,6 +59,9 @@ TEST_F(WithWordNet, KindsUnderAClassWord) {
   EXPECT_EQ(lexicon().kinds_under("hand tools", garage), tools);
   EXPECT_TRUE(lexicon().kinds_under("objects", garage).empty());
   EXPECT_TRUE(lexicon().kinds_under("hammer", garage).empty()) << "a kind is not under itself";
+  // A kind named in the plural is found by its singular.
+  const std::vector<std::string> groceries = {"saltines", "cereal-box", "milk"};
+  EXPECT_EQ(lexicon().kinds_under("crackers", groceries), std::vector<std::string>{"saltines"});
 }
 
 TEST_F(WithWordNet, Synonyms) {

@@ -315,6 +315,9 @@ TEST(ReplyTask, APrepositionAfterTheVerbKeepsItsObject) {
   EXPECT_EQ(read(kitchen, task, "clean up after the party"), "task clean up after party");
   EXPECT_EQ(read(kitchen, task, "let's clean up after the party"), "task clean up after party");
   EXPECT_EQ(read(kitchen, task, "tidy up the kitchen"), "task tidy kitchen");
+  // "back" after "got" is a particle, not the verb "to back".
+  EXPECT_EQ(read(kitchen, task, "I just got back from the store, help me put the groceries away"),
+            "task put away groceries");
   EXPECT_EQ(task_phrase("clean up after party"), "clean up after the party");
   EXPECT_EQ(task_phrase("tidy up kitchen"), "tidy up the kitchen");
   EXPECT_EQ(task_phrase("clean after party"), "clean after the party");
@@ -423,6 +426,11 @@ TEST(ReplyExamples, WorkAtTheirQuestion) {
       }
     }
   }
+  // A kind named in the plural: "the crackers go", "put them in".
+  std::vector<std::string> crackers = example_replies(kitchen, asking(Asked::kGoal, in(kitchen, "crackers1")));
+  ASSERT_GE(crackers.size(), 2u);
+  EXPECT_TRUE(crackers[0].starts_with("the crackers go ")) << crackers[0];
+  EXPECT_TRUE(crackers[1].starts_with("put them in ")) << crackers[1];
 }
 
 // --- Total and bounded ------------------------------------------------------------------------
