@@ -98,7 +98,7 @@ class EventReader {
     if (c.verb.empty() && !c.copula && c.subject && !c.object) thing = &c.subject;
     else if (c.verb_class() == VerbClass::kPlace && c.object && !c.subject) thing = &c.object;
     if (thing == nullptr || (*thing)->pronoun || (*thing)->place_pronoun || (*thing)->words.empty()) return std::nullopt;
-    if (names_place(**thing)) return std::nullopt;
+    if (names_place(**thing) && !names_asked_kind(**thing)) return std::nullopt;
     return **thing;
   }
 
@@ -140,6 +140,16 @@ class EventReader {
       return ambiguous->candidates.front();
     failure = std::move(choice);
     return std::nullopt;
+  }
+
+  // Whether a phrase may name the kind of the thing asked about.
+  bool names_asked_kind(const Chunk& chunk) const {
+    if (!in_.context.object || chunk.pronoun) return false;
+    auto found = resolver_.candidates(chunk, Role::kItem);
+    const auto* objects = std::get_if<std::vector<ObjectId>>(&found);
+    const std::string& kind = in_.world.universe->info(*in_.context.object).category;
+    return objects && std::any_of(objects->begin(), objects->end(),
+                                  [&](ObjectId id) { return in_.world.universe->info(id).category == kind; });
   }
 
   // Whether a phrase names a place here (without committing to it).
@@ -260,8 +270,10 @@ class EventReader {
                std::all_of(c.phrases.begin(), c.phrases.end(), [](const PrepPhrase& p) {
                  return p.preposition == Preposition::kOther || p.preposition == Preposition::kFrom;
                })) {
-      // A place said on its own: the subject, or what follows "is".
-      if (c.subject && !c.object && names_place(*c.subject)) {
+      // A place said on its own: the subject, or what follows "is". A
+      // phrase that also names the asked thing's kind is that thing ("cans"
+      // in "cans and bottles get recycled", not the trash can).
+      if (c.subject && !c.object && names_place(*c.subject) && !names_asked_kind(*c.subject)) {
         where = *c.subject;
       } else if (c.object && c.copula && names_place(*c.object)) {
         where = *c.object;

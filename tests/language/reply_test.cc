@@ -302,6 +302,14 @@ TEST(ReplyGoal, ThingsListedTogetherGoTogether) {
   // A door said of one place is not another place's.
   EXPECT_EQ(read(kitchen, plate, "the plates go in the dishwasher and the milk goes in the fridge"),
             "goal (in ceramic-plate1 dishwasher1); also (in milk1 fridge1)");
+  // A name that is the asked thing's kind and part of a place's ("cans",
+  // "trash can") is the thing, in a list; a place phrase is still a place.
+  static const Scenario party = apprentice::testing::shipped_scenario("party-cleanup");
+  ReplyContext can = asking(Asked::kGoal, in(party.world, "soda-can1"));
+  EXPECT_EQ(read(party.world, can, "cans and bottles get recycled"),
+            "goal (in soda-can1 recycling-bin1); also (in beer-bottle1 recycling-bin1)");
+  EXPECT_EQ(read(party.world, can, "in the can"), "goal (in soda-can1 trash-can1)");
+  EXPECT_EQ(read(party.world, can, "trash can"), "goal (in soda-can1 trash-can1)");
   // Named and never placed is still asked where.
   EXPECT_EQ(read(kitchen, plate, "put the plates"), "unusable");
   // "the trash" after "in" is a place, not a verb to come.
