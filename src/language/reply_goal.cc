@@ -53,10 +53,7 @@ class EventReader {
       if (waiting.empty()) unplaced_before_waiting = unplaced_;
       std::optional<Event> event = read_clause(failure);
       if (event) events.push_back(*event);
-      if (failure) {
-        if (auto* ambiguous = std::get_if<Ambiguous>(&*failure)) return *ambiguous;
-        return std::get<Problem>(*failure);
-      }
+      if (failure) return as_events(std::move(*failure));
       if (in_.context.asked == Asked::kGoal) {
         if (auto thing = waits_for_a_place(clause, event)) {
           waiting.push_back(*thing);
@@ -67,10 +64,7 @@ class EventReader {
             Event same = *event;
             same.item_words = thing.text();
             same.item = item(thing, same.item_named, failure);
-            if (failure) {
-              if (auto* ambiguous = std::get_if<Ambiguous>(&*failure)) return *ambiguous;
-              return std::get<Problem>(*failure);
-            }
+            if (failure) return as_events(std::move(*failure));
             events.push_back(same);
           }
           events.push_back(*event);
@@ -100,6 +94,12 @@ class EventReader {
     if (thing == nullptr || (*thing)->pronoun || (*thing)->place_pronoun || (*thing)->words.empty()) return std::nullopt;
     if (names_place(**thing) && !names_asked_kind(**thing)) return std::nullopt;
     return **thing;
+  }
+
+  // A failed choice as the reader's outcome: the question, or the problem.
+  static Events as_events(Choice failure) {
+    if (auto* ambiguous = std::get_if<Ambiguous>(&failure)) return std::move(*ambiguous);
+    return std::get<Problem>(std::move(failure));
   }
 
   // A place from a phrase, remembered as the place named last.
