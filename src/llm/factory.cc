@@ -5,6 +5,7 @@
 
 #include "llm/cassette.h"
 #include "llm/corpus_client.h"
+#include "llm/placement_corpus.h"
 #include "llm/http_client.h"
 #include "util/text.h"
 
@@ -87,6 +88,15 @@ Result<std::unique_ptr<LlmClient>> make_corpus(std::string_view rest, const LlmO
     path.erase(at, end == std::string::npos ? std::string::npos : end - at);
   }
   if (path.empty()) return make_error(ErrorCode::kInvalidInput, "corpus: needs a file");
+  // Recorded summaries and placements (the TidyBot benchmark's) rather than goal statements.
+  if (PlacementCorpusClient::recognizes(path)) {
+    if (named || selection.pool_all)
+      return make_error(ErrorCode::kInvalidInput, "corpus: " + path + " holds summaries and placements, which have no "
+                                                  "conditions to choose (no ,condition= or ,pool=)");
+    auto placements = PlacementCorpusClient::open(path);
+    if (!placements) return tl::unexpected(placements.error());
+    return std::unique_ptr<LlmClient>(std::move(*placements));
+  }
   auto client = CorpusClient::open(path, selection);
   if (!client) return tl::unexpected(client.error());
   return std::unique_ptr<LlmClient>(std::move(*client));
