@@ -27,8 +27,6 @@
 
 namespace apprentice::cli {
 
-namespace {
-
 // The shipped data: next to the binary's build directory when run from a
 // checkout (build/apprentice -> data/), else where the build was configured.
 std::filesystem::path data_dir() {
@@ -41,6 +39,8 @@ std::filesystem::path data_dir() {
   }
   return APPRENTICE_DATA_DIR;
 }
+
+namespace {
 
 llm::LlmOptions llm_options(const LlmFlags& flags) {
   llm::LlmOptions options;

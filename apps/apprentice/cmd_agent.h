@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdio>
+#include <filesystem>
 #include <iosfwd>
 #include <optional>
 #include <string>
@@ -10,6 +11,9 @@
 #include "outcome.h"
 
 namespace apprentice::cli {
+
+// The shipped data (domains, scenarios, prompts, the page).
+std::filesystem::path data_dir();
 
 // Options shared by the subcommands that may use an LLM.
 struct LlmFlags {
