@@ -181,7 +181,7 @@ function handle(event, seq) {
 }
 
 function setWaiting(waiting) {
-  for (const b of document.querySelectorAll('#question-area button')) b.disabled = !waiting;
+  for (const b of document.querySelectorAll('#question-area button, #knowledge button.forget')) b.disabled = !waiting;
   $('reply').disabled = !waiting;
   if (waiting) $('reply').focus();
 }
@@ -243,20 +243,31 @@ async function send(text) {
 // ---- the room, drawn ----
 
 // Worlds are drawn one after another, a moment apart, so that each action
-// is seen as it happens even when several arrive at once.
+// is seen as it happens even when several arrive at once. A long backlog
+// (a reload, a known task done alone) is cut to its last few frames, so
+// that the drawing never lags far behind the conversation.
+// document.body.dataset.drawing says whether frames are still to come.
+const FRAME_MS = 150, MAX_BACKLOG = 6;
+
 function queueWorld(world, action) {
   if (!world) return;
   state.frames.push({ world, action });
+  if (state.frames.length > MAX_BACKLOG) state.frames.splice(0, state.frames.length - MAX_BACKLOG);
   if (!state.drawing) nextFrame();
 }
 
 function nextFrame() {
   const frame = state.frames.shift();
-  if (!frame) { state.drawing = false; return; }
+  if (!frame) {
+    state.drawing = false;
+    document.body.dataset.drawing = 'no';
+    return;
+  }
   state.drawing = true;
+  document.body.dataset.drawing = 'yes';
   drawWorld(frame.world, frame.action);
   $('action-caption').textContent = frame.action ? frame.action.text : '';
-  setTimeout(nextFrame, state.frames.length > 0 ? 180 : 0);
+  setTimeout(nextFrame, state.frames.length > 0 ? FRAME_MS : 0);
 }
 
 const PLACE_W = 210, CHIP_H = 22, GAP = 14, COLUMNS = 4;
@@ -272,9 +283,9 @@ function drawWorld(world, action) {
   // The robot's hand, above the room.
   const hand = svg('g', { class: 'hand', transform: `translate(${GAP},${y})` });
   hand.append(svg('rect', { class: 'hand-box', width: PLACE_W, height: 32, rx: 6 }));
-  hand.append(svg('text', { class: 'place-name', x: 10, y: 21 }, "Robot's hand:"));
-  if (world.hand) hand.append(chip(world.hand, 100, 5, PLACE_W - 106, acting, 'hand'));
-  else hand.append(svg('text', { class: 'empty', x: 104, y: 21 }, 'empty'));
+  hand.append(svg('text', { class: 'place-name', x: 10, y: 21 }, "Robot's hand"));
+  if (world.hand) hand.append(chip(world.hand, 104, 7, PLACE_W - 112, acting, 'hand'));
+  else hand.append(svg('text', { class: 'empty', x: 110, y: 21 }, 'empty'));
   root.append(hand);
   y += 32 + GAP;
   for (let row = 0; row * COLUMNS < places.length; ++row) {
