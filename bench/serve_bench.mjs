@@ -10,6 +10,9 @@
 //               reply, as a person reads and types (default 1000; 0: replies
 //               at once, every session saturating the server)
 //   --rounds N  teach each session's world N times over (default 2)
+//   --sessions N  sessions teaching at once (default 20)
+import fs from 'node:fs';
+import os from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { chromium } from 'playwright-core';
@@ -22,7 +25,7 @@ const option = (name, fallback) => (args.includes(name) ? Number(args[args.index
 const binary = args[0] && !args[0].startsWith('--') ? args[0] : path.join(sourceDir, 'build/apprentice');
 const think = option('--think', 1000);
 const rounds = option('--rounds', 2);
-const SESSIONS = 20;
+const SESSIONS = option('--sessions', 20);
 
 function percentile(values, p) {
   const sorted = [...values].sort((a, b) => a - b);
@@ -30,6 +33,12 @@ function percentile(values, p) {
 }
 const describe = (values) => `n=${values.length} p50=${percentile(values, 50).toFixed(1)} ms ` +
   `p95=${percentile(values, 95).toFixed(1)} ms max=${Math.max(...values).toFixed(1)} ms`;
+// The server's CPU time so far (user + system), in ms, from /proc: what a
+// reply costs whatever else the machine is doing.
+function cpuMs(pid) {
+  const fields = fs.readFileSync(`/proc/${pid}/stat`, 'utf8').split(') ')[1].split(' ');
+  return (Number(fields[11]) + Number(fields[12])) * 10;  // clock ticks of 10 ms
+}
 const pause = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
 
 // One teacher over HTTP: the round trip of each reply.
@@ -110,16 +119,22 @@ try {
   const laundry = replies(sourceDir, 'laundry_replies.txt');
   const http = [], inPage = [];
   const began = performance.now();
+  const cpuBefore = cpuMs(server.process.pid);
   const teachers = [teachInPage(context, server.address, kitchen, inPage)];
   for (let i = 1; i < SESSIONS; ++i)
     teachers.push(teachOverHttp(client, i % 2 ? 'laundry-room' : 'tidy-kitchen', i % 2 ? laundry : kitchen, http));
   await Promise.all(teachers);
   const seconds = (performance.now() - began) / 1000;
+  const cpu = cpuMs(server.process.pid) - cpuBefore;
+  const load = os.loadavg()[0].toFixed(1);
   console.log(`apprentice serve, ${SESSIONS} sessions teaching at once (1 in chromium, ${SESSIONS - 1} over HTTP), ` +
               `think time ${think} ms, ${rounds} rounds, ${seconds.toFixed(1)} s`);
   console.log(`reply round trip, post to next question, over HTTP: ${describe(http)}`);
   console.log(`reply round trip, Enter to next question shown, in the page: ${describe(inPage)}`);
   console.log(`all replies: ${describe([...http, ...inPage])}`);
+  const count = http.length + inPage.length;
+  console.log(`server CPU: ${(cpu / 1000).toFixed(2)} s for ${count} replies, ${(cpu / count).toFixed(1)} ms a reply; ` +
+              `load average at the end ${load} on ${os.cpus().length} cores`);
   const idle = await client.start('tidy-kitchen');
   await idle.question();
   const loads = await pageLoads(context, server.address, idle.id);

@@ -203,7 +203,12 @@ void WebServer::post_reply(const std::string& id, const httplib::Request& req, h
   if (body.is_discarded() || !body.is_object() || !body.contains("text") || !body["text"].is_string() ||
       !body.contains("question") || !body["question"].is_number_unsigned())
     return send_error(res, 400, "a reply is {\"text\": \"...\", \"question\": N}, N the number of the question's event");
-  std::string text(trim(body["text"].get<std::string>()));
+  // One line, as a terminal would send it: line breaks and other control
+  // characters become spaces.
+  std::string text = body["text"].get<std::string>();
+  for (char& c : text)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
+  text = std::string(trim(text));
   if (text.empty()) return send_error(res, 400, "the reply is empty: type something first");
   if (text.size() > options_.limits.max_reply_chars)
     return send_error(res, 413, "a reply may be at most " + std::to_string(options_.limits.max_reply_chars) +
@@ -335,6 +340,13 @@ void WebServer::routes() {
 Status WebServer::run(std::ostream& out, const std::function<bool()>& stop_requested) {
   routes();
   http_.set_payload_max_length(options_.limits.max_body_bytes);
+  // SO_REUSEADDR only: httplib's default adds SO_REUSEPORT, with which a
+  // second server on a taken port would share it silently instead of
+  // being told the port is in use.
+  http_.set_socket_options([](socket_t sock) {
+    int yes = 1;
+    setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, reinterpret_cast<const void*>(&yes), sizeof(yes));
+  });
   // Each open page holds a thread with its event stream; replies and loads
   // need threads beside them.
   const std::size_t threads = static_cast<std::size_t>(options_.limits.max_sessions) * 3 + 16;

@@ -6,6 +6,17 @@
 
 namespace apprentice::serve {
 
+namespace {
+
+// "30 minutes", "1 second"
+std::string describe_duration(std::chrono::seconds duration) {
+  long long s = duration.count();
+  if (s % 60 == 0) return std::to_string(s / 60) + (s == 60 ? " minute" : " minutes");
+  return std::to_string(s) + (s == 1 ? " second" : " seconds");
+}
+
+}  // namespace
+
 std::string new_session_id() {
   std::random_device device;  // /dev/urandom
   std::string id;
@@ -43,7 +54,7 @@ void SessionRegistry::sweep(std::chrono::steady_clock::time_point now) {
       if (now - session.last_active() < limits_.idle) {
         ++it;
       } else if (!session.ended()) {
-        session.end();
+        session.end("No reply came for " + describe_duration(limits_.idle) + ", so this session has ended.");
         session.touch();  // forgotten after as long again
         ++it;
       } else {
@@ -60,7 +71,7 @@ void SessionRegistry::end_all() {
     std::lock_guard lock(mutex_);
     all.swap(sessions_);
   }
-  for (auto& [id, session] : all) session->end();
+  for (auto& [id, session] : all) session->end("The server is stopping, so this session has ended.");
 }
 
 int SessionRegistry::teaching() const {

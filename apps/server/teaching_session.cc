@@ -90,6 +90,11 @@ TeachingSession::~TeachingSession() {
   if (thread_.joinable()) thread_.join();
 }
 
+void TeachingSession::end(const std::string& why) {
+  if (!why.empty() && !ended_) events_->append({{"type", "say"}, {"text", why}});
+  instructor_->cancel();
+}
+
 nlohmann::json TeachingSession::description() const {
   return {{"id", setup_.id}, {"world", setup_.world_name}, {"store", setup_.store_name}, {"ended", ended()}};
 }

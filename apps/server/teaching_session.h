@@ -47,8 +47,9 @@ class TeachingSession {
   // (PageInstructor::post).
   Status reply(std::string text, std::uint64_t question) { return instructor_->post(std::move(text), question); }
   // Ends the session from outside (idle, shutdown): the agent stops as if
-  // the teacher had said "quit".
-  void end() { instructor_->cancel(); }
+  // the teacher had said "quit". `why`, if given, is told to the page
+  // first, unless the session has ended already.
+  void end(const std::string& why = "");
   bool ended() const { return ended_; }
 
   // The last time the page asked for or sent anything.

@@ -45,6 +45,14 @@ test('a public --host needs --token; a short token is refused', () => {
   assert.match(short.stderr, /--token must be at least 16 characters/);
 });
 
+test('a port already taken is exit 3, saying so', async () => {
+  await withServer([], async (server) => {
+    const second = spawnSync(binary, ['serve', '--port', String(server.port)], { encoding: 'utf8', timeout: 20000 });
+    assert.equal(second.status, 3, second.stdout + second.stderr);
+    assert.match(second.stderr, new RegExp(`cannot listen on 127\\.0\\.0\\.1:${server.port} \\(is another program using the port\\?\\)`));
+  });
+});
+
 test('with a token, every request needs it: a wrong one is refused, the printed address sets a cookie', async () => {
   const token = 'serve-test-token-0123456789';
   await withServer(['--token', token], async (server, client) => {
@@ -129,6 +137,7 @@ test('a session idle past --idle-seconds ends, keeping what it learned, and is f
     }
     const end = await session.waitFor((e) => e.type === 'end', 0, 10000);
     assert.match(end.text, /^Stopped: .*What you taught me is kept in the knowledge store "idle"\./);
+    assert.ok(session.events.some((e) => e.type === 'say' && e.text === 'No reply came for 1 second, so this session has ended.'));
     session.close();
     const deadline = Date.now() + 10000;
     while ((await client.request('GET', '/api/sessions/' + session.id)).status !== 404)
