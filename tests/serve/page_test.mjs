@@ -147,6 +147,32 @@ test('two tabs on two worlds at once, each its own session; a "Which ...?" answe
   await playroom.close();
 });
 
+test('a yes/no question answered by its button, and a goal forgotten by its Forget button', async () => {
+  // The kitchen store holds the first test's goals for "clean the kitchen";
+  // taught as "tidy the kitchen", the agent asks whether those goals apply.
+  const page = await context.newPage();
+  await startSession(page, 'tidy-kitchen', 'kitchen');
+  await reply(page, 'tidy the kitchen');
+  await reply(page, 'clear the table');
+  assert.match(await lastQuestion(page), /^Does the ceramic plate on the table go like /);
+  assert.deepEqual(await page.locator('#choices button').allTextContents(), ['Yes', 'No']);
+  const before = await questions(page);
+  await page.getByRole('button', { name: 'Yes' }).click();
+  await page.waitForFunction((n) => document.querySelectorAll('#conversation li.question').length > n, before);
+  assert.match(await page.locator('#conversation').textContent(), /So the ceramic plate goes in the dishwasher/);
+  const ketchup = page.locator('#knowledge li.goal', { hasText: 'the ketchup goes in the fridge' }).first();
+  await ketchup.waitFor();
+  const count = await page.locator('#knowledge li.goal', { hasText: 'the ketchup goes' }).count();
+  const asked = await questions(page);
+  await ketchup.getByRole('button', { name: 'Forget' }).click();
+  await page.waitForFunction((n) => document.querySelectorAll('#conversation li.question').length > n, asked);
+  assert.match(await page.locator('#conversation li.person').last().textContent(), /forget ketchup/);
+  assert.ok(await page.locator('#knowledge li.goal', { hasText: 'the ketchup goes' }).count() < count);
+  await page.getByRole('button', { name: 'Stop' }).click();
+  await page.locator('#conversation li.summary').waitFor();
+  await page.close();
+});
+
 test('an uploaded broken world gets a readable error with its line', async () => {
   const page = await context.newPage();
   await page.goto(server.address);
