@@ -51,6 +51,8 @@ llm::LlmOptions llm_options(const LlmFlags& flags) {
   return options;
 }
 
+namespace {
+
 Status write_file(const std::filesystem::path& path, const std::string& text) {
   std::ofstream file(path, std::ios::binary);
   file << text;

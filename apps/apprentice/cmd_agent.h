@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "llm/factory.h"
 #include "outcome.h"
 
 namespace apprentice::cli {
@@ -28,6 +29,12 @@ struct LlmFlags {
   bool offer_ungrounded = false;    // --offer-ungrounded
   int goal_responses = 5;           // --llm-goal-responses
 };
+
+// The shipped data (data/): next to the binary's build directory when run
+// from a checkout, else where the build was configured.
+std::filesystem::path data_dir();
+// The LLM client's options from the flags.
+llm::LlmOptions llm_options(const LlmFlags& flags);
 
 struct ExperimentOptions {
   std::string scenario;

@@ -20,6 +20,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cmd_agent.h"
+#include "cmd_benchmark.h"
 #include "cmd_core.h"
 #include "cmd_interpret.h"
 #include "cmd_serve.h"
@@ -365,6 +366,31 @@ int run(int argc, char** argv) {
     if (!serve_log_dir.empty()) serve_options.log_dir = serve_log_dir;
     serve_options.limits.idle = std::chrono::seconds(idle_seconds);
     result = run_serve(serve_options, std::cout);
+  });
+
+  BenchmarkCommandOptions bench;
+  auto* bench_cmd = app.add_subcommand(
+      "benchmark", "Run an outside benchmark through the agent and print its published figures beside ours");
+  bench_cmd->add_option("name", bench.benchmark, "The benchmark: tidybot (Wu et al. 2023)")->required();
+  bench_cmd->add_option("--scenarios", bench.scenarios, "The benchmark's scenarios, in its own format (scenarios.yml)")
+      ->required();
+  bench_cmd->add_option("--settings", bench.settings,
+                        "Comma-separated settings: a-alone, a-alone+llm, a-teacher, a-teacher+llm, b-alone, "
+                        "b-alone+llm, b-teacher (default: all that can run)")
+      ->delimiter(',');
+  bench_cmd->add_option("--only", bench.only, "Run only the scenarios with these benchmark indexes (comma-separated)")
+      ->delimiter(',')
+      ->check(whole_number_in(1, std::numeric_limits<int>::max()));
+  bench_cmd->add_option("--transcript", bench.transcript_dir, "Write each dialogue to DIR/<setting>/<index>.txt");
+  bench_cmd->add_flag("--json", bench.json, "Right, wrong and left counts and questions per setting, tag and scenario");
+  add_llm_flags(bench_cmd, bench.llm);
+  on_run(bench_cmd, [&] {
+    std::vector<std::string> settings;
+    for (const std::string& s : bench.settings)
+      if (!trim(s).empty()) settings.emplace_back(trim(s));
+    bench.settings = std::move(settings);
+    check_llm_flag(bench.llm);
+    result = run_benchmark(bench, std::cout);
   });
 
   required = defer_requirements(app);
