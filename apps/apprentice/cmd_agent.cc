@@ -40,8 +40,6 @@ std::filesystem::path data_dir() {
   return APPRENTICE_DATA_DIR;
 }
 
-namespace {
-
 llm::LlmOptions llm_options(const LlmFlags& flags) {
   llm::LlmOptions options;
   options.model = flags.model;

@@ -13,9 +13,6 @@
 
 namespace apprentice::cli {
 
-// The shipped data (domains, scenarios, prompts, the page).
-std::filesystem::path data_dir();
-
 // Options shared by the subcommands that may use an LLM.
 struct LlmFlags {
   std::string spec;  // --llm; APPRENTICE_LLM when empty
@@ -30,7 +27,7 @@ struct LlmFlags {
   int goal_responses = 5;           // --llm-goal-responses
 };
 
-// The shipped data (data/): next to the binary's build directory when run
+// The shipped data (data/: domains, scenarios, prompts, the page): next to the binary's build directory when run
 // from a checkout, else where the build was configured.
 std::filesystem::path data_dir();
 // The LLM client's options from the flags.
