@@ -27,7 +27,7 @@ struct LlmFlags {
   int goal_responses = 5;           // --llm-goal-responses
 };
 
-// The shipped data (data/): next to the binary's build directory when run
+// The shipped data (data/: domains, scenarios, prompts, the page): next to the binary's build directory when run
 // from a checkout, else where the build was configured.
 std::filesystem::path data_dir();
 // The LLM client's options from the flags.

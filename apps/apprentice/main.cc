@@ -23,6 +23,7 @@
 #include "cmd_benchmark.h"
 #include "cmd_core.h"
 #include "cmd_interpret.h"
+#include "cmd_serve.h"
 #include "util/log.h"
 #include "util/spelling.h"
 #include "util/text.h"
@@ -336,6 +337,36 @@ int run(int argc, char** argv) {
   knowledge_cmd->add_flag("--json", knowledge.json, "Machine-readable output");
   knowledge_cmd->add_flag("--pddl", knowledge.pddl, "Goals and rules in PDDL terms instead of English");
   on_run(knowledge_cmd, [&] { result = run_knowledge(knowledge, program, std::cout); });
+
+  serve::ServeOptions serve_options;
+  std::vector<std::string> serve_scenarios, serve_knowledge;
+  std::string serve_log_dir;
+  int idle_seconds = static_cast<int>(serve_options.limits.idle.count());
+  auto* serve_cmd = app.add_subcommand("serve", "Teach the agent from a web page: serve it, and each session it starts");
+  serve_cmd->add_option("--scenario", serve_scenarios,
+                        "A world to offer besides data/scenarios (YAML; repeatable; the first is preselected)");
+  serve_cmd->add_option("--knowledge", serve_knowledge,
+                        "A knowledge store to offer, by its file name (SQLite; repeatable; created if missing)");
+  serve_cmd->add_option("--host", serve_options.host, "Address to listen on (other than loopback: needs --token)")
+      ->capture_default_str();
+  serve_cmd->add_option("--port", serve_options.port, "Port to listen on (0: any free port)")
+      ->capture_default_str()
+      ->check(whole_number_in(0, 65535));
+  serve_cmd->add_option("--token", serve_options.token, "Secret every request must carry (16+ letters, digits, - or _)");
+  serve_cmd->add_option("--log-dir", serve_log_dir, "Keep each session's log as DIR/<session>.jsonl");
+  serve_cmd->add_option("--max-sessions", serve_options.limits.max_sessions, "Sessions teaching at once")
+      ->capture_default_str()
+      ->check(whole_number_in(1, 256));
+  serve_cmd->add_option("--idle-seconds", idle_seconds, "End a session after this long without a request")
+      ->capture_default_str()
+      ->check(whole_number_in(1, 7 * 24 * 3600));
+  on_run(serve_cmd, [&] {
+    serve_options.scenarios.assign(serve_scenarios.begin(), serve_scenarios.end());
+    serve_options.knowledge.assign(serve_knowledge.begin(), serve_knowledge.end());
+    if (!serve_log_dir.empty()) serve_options.log_dir = serve_log_dir;
+    serve_options.limits.idle = std::chrono::seconds(idle_seconds);
+    result = run_serve(serve_options, std::cout);
+  });
 
   BenchmarkCommandOptions bench;
   auto* bench_cmd = app.add_subcommand(
