@@ -139,6 +139,12 @@ async function openSession(id) {
   const source = new EventSource('/api/sessions/' + id + '/events');
   state.source = source;
   source.onmessage = (message) => handle(JSON.parse(message.data), Number(message.lastEventId));
+  // The browser reconnects by itself after a dropped connection; it gives
+  // up only when the server refuses (the session is gone, the server stopped).
+  source.onerror = () => {
+    if (source.readyState === EventSource.CLOSED && !state.ended)
+      $('reply-error').textContent = 'The connection to the server was lost. Reload the page to go on.';
+  };
 }
 
 function say(who, text, kind) {
@@ -161,7 +167,12 @@ function handle(event, seq) {
       setWaiting(true);
       break;
     case 'say': say('agent', event.text); break;
-    case 'reply': say('person', event.text); break;
+    case 'reply':
+      // Answered, here or in another tab: the agent works until its next question.
+      say('person', event.text);
+      state.question = null;
+      setWaiting(false);
+      break;
     case 'action': queueWorld(event.world, event); break;
     case 'learned': case 'forgotten': break;  // shown with the next question's knowledge
     case 'end':
