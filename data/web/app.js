@@ -161,10 +161,15 @@ function handle(event, seq) {
       state.question = seq;
       state.asked = event.object;
       showChoices(event.choices || []);
-      showKnowledge(event.knowledge || []);
-      showProgress(event.progress);
-      queueWorld(event.world, null);
       setWaiting(true);
+      // The question first; the room and what it knows just after, so
+      // that the question is shown without waiting for them.
+      if (event.world) document.body.dataset.drawing = 'yes';
+      setTimeout(() => {
+        showKnowledge(event.knowledge || []);
+        showProgress(event.progress);
+        queueWorld(event.world, null);
+      }, 0);
       break;
     case 'say': say('agent', event.text); break;
     case 'reply':
@@ -212,6 +217,10 @@ function showProgress(progress) {
 }
 
 function showKnowledge(entries) {
+  // Drawn again only when it changed, or when its Forget buttons must change state.
+  const key = JSON.stringify(entries) + (state.question === null);
+  if (key === state.knowledgeShown) return;
+  state.knowledgeShown = key;
   const list = $('knowledge');
   const rules = $('rules');
   list.replaceChildren();
