@@ -342,10 +342,15 @@ Status WebServer::run(std::ostream& out, const std::function<bool()>& stop_reque
   http_.set_payload_max_length(options_.limits.max_body_bytes);
   // SO_REUSEADDR only: httplib's default adds SO_REUSEPORT, with which a
   // second server on a taken port would share it silently instead of
-  // being told the port is in use.
+  // being told the port is in use. TCP_NODELAY (which accepted sockets
+  // inherit): an event is a few small writes (chunk size, data, end), and
+  // Nagle's algorithm would hold the last one back for the client's
+  // delayed acknowledgement, tens of milliseconds.
+  http_.set_tcp_nodelay(true);
   http_.set_socket_options([](socket_t sock) {
     int yes = 1;
     setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, reinterpret_cast<const void*>(&yes), sizeof(yes));
+    setsockopt(sock, IPPROTO_TCP, TCP_NODELAY, reinterpret_cast<const void*>(&yes), sizeof(yes));
   });
   // Each open page holds a thread with its event stream; replies and loads
   // need threads beside them.

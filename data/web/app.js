@@ -139,6 +139,12 @@ async function openSession(id) {
   const source = new EventSource('/api/sessions/' + id + '/events');
   state.source = source;
   source.onmessage = (message) => handle(JSON.parse(message.data), Number(message.lastEventId));
+  // The browser reconnects by itself after a dropped connection; it gives
+  // up only when the server refuses (the session is gone, the server stopped).
+  source.onerror = () => {
+    if (source.readyState === EventSource.CLOSED && !state.ended)
+      $('reply-error').textContent = 'The connection to the server was lost. Reload the page to go on.';
+  };
 }
 
 function say(who, text, kind) {
@@ -155,13 +161,23 @@ function handle(event, seq) {
       state.question = seq;
       state.asked = event.object;
       showChoices(event.choices || []);
-      showKnowledge(event.knowledge || []);
-      showProgress(event.progress);
-      queueWorld(event.world, null);
       setWaiting(true);
+      // The question first; the room and what it knows just after, so
+      // that the question is shown without waiting for them.
+      if (event.world) document.body.dataset.drawing = 'yes';
+      setTimeout(() => {
+        showKnowledge(event.knowledge || []);
+        showProgress(event.progress);
+        queueWorld(event.world, null);
+      }, 0);
       break;
     case 'say': say('agent', event.text); break;
-    case 'reply': say('person', event.text); break;
+    case 'reply':
+      // Answered, here or in another tab: the agent works until its next question.
+      say('person', event.text);
+      state.question = null;
+      setWaiting(false);
+      break;
     case 'action': queueWorld(event.world, event); break;
     case 'learned': case 'forgotten': break;  // shown with the next question's knowledge
     case 'end':
@@ -201,6 +217,10 @@ function showProgress(progress) {
 }
 
 function showKnowledge(entries) {
+  // Drawn again only when it changed, or when its Forget buttons must change state.
+  const key = JSON.stringify(entries) + (state.question === null);
+  if (key === state.knowledgeShown) return;
+  state.knowledgeShown = key;
   const list = $('knowledge');
   const rules = $('rules');
   list.replaceChildren();

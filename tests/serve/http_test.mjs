@@ -180,7 +180,9 @@ test('nothing a client sends names a path', async () => {
 
 test('two sessions on one store, teaching at once, lose nothing', async () => {
   const store = path.join(scratch, 'shared.sqlite');
-  await withServer(['--knowledge', store], async (server, client) => {
+  const logs = path.join(scratch, 'study-logs');
+  let ids;
+  await withServer(['--knowledge', store, '--log-dir', logs], async (server, client) => {
     const a = await client.start('tidy-kitchen', 'shared');
     const b = await client.start('tidy-kitchen', 'shared');
     const kitchen = replies(sourceDir, 'kitchen_replies.txt');
@@ -189,8 +191,21 @@ test('two sessions on one store, teaching at once, lose nothing', async () => {
     const [endA, endB] = await Promise.all([a.teach([...kitchen.slice(0, 13), 'quit']), b.teach(counter)]);
     assert.equal(endA.type, 'end');
     assert.equal(endB.type, 'end');
+    ids = [a.id, b.id];
+    // --log-dir keeps each session's log as the page downloads it.
+    for (const s of [a, b]) {
+      const downloaded = await client.request('GET', `/api/sessions/${s.id}/log`);
+      assert.equal(fs.readFileSync(path.join(logs, s.id + '.jsonl'), 'utf8'), downloaded.body);
+    }
     a.close(); b.close();
   });
+  assert.deepEqual(fs.readdirSync(logs).sort(), ids.map((id) => id + '.jsonl').sort());
+  for (const id of ids) {
+    const lines = fs.readFileSync(path.join(logs, id + '.jsonl'), 'utf8').trim().split('\n').map((l) => JSON.parse(l));
+    assert.equal(lines[0].type, 'start');
+    assert.equal(lines.at(-1).type, 'end');
+    assert.ok(lines.every((l) => !('world' in l)), 'the log holds no drawings of the room');
+  }
   const known = spawnSync(binary, ['knowledge', '--knowledge', store, '--json'], { encoding: 'utf8' });
   assert.equal(known.status, 0, known.stderr);
   const kinds = new Set(JSON.parse(known.stdout).goals.map((g) => /\(([a-z-]+)\)/.exec(g.object)[1]));

@@ -177,6 +177,10 @@ test('an uploaded broken world gets a readable error with its line', async () =>
   const page = await context.newPage();
   await page.goto(server.address);
   await page.locator('#start').waitFor();
+  await page.locator('#world-select option').first().waitFor({ state: 'attached' });
+  // The start screen alone: no room, no conversation yet.
+  assert.equal(await page.locator('#session').isVisible(), false);
+  await page.screenshot({ path: path.join(artifacts, 'start.png') });
   const broken = 'name: my-bathroom\ndomain: ../domains/kitchen.pddl\nplaces:\n  - {category: sink, kind: bathtub}\nobjects: []\n';
   await page.locator('#world-file').setInputFiles({ name: 'bathroom.yaml', mimeType: 'text/yaml', buffer: Buffer.from(broken) });
   await page.getByRole('button', { name: 'Start teaching' }).click();
