@@ -26,7 +26,8 @@ _apprentice() {
       case ${COMP_WORDS[i-1]} in
         --scenario|--knowledge|--goal|--out|--transcript|--knowledge-out|--knowledge-in|--conditions|--condition|\
         --generalization|--llm|--llm-model|--llm-api-key|--llm-timeout-ms|--depth|--max-nodes|--task|--domain|\
-        --object|--subtask|--corpus|--plot) continue ;;
+        --object|--subtask|--corpus|--plot|--scenarios|--settings|--only|--host|--port|--token|--log-dir|--max-sessions|\
+        --idle-seconds) continue ;;
       esac
       subcommand=${COMP_WORDS[i]}
       break
@@ -34,6 +35,13 @@ _apprentice() {
   done
   local conditions="instruction inst+search4 search4+llm inst+llm inst+search2+llm inst+search4+llm"
   case $prev in
+    --scenarios)
+      COMPREPLY=($(compgen -f -X '!*.yml' -- "$cur") $(compgen -f -X '!*.yaml' -- "$cur") $(compgen -d -- "$cur")); compopt -o filenames 2>/dev/null; return ;;
+    --settings)
+      # The benchmark's settings, a comma-separated list: complete the last name.
+      local settings="a-alone a-alone+llm a-teacher a-teacher+llm b-alone b-alone+llm b-teacher" done_settings="" last_setting=$cur
+      if [[ $cur == *,* ]]; then done_settings=${cur%,*},; last_setting=${cur##*,}; fi
+      COMPREPLY=($(compgen -P "$done_settings" -W "$settings" -- "$last_setting")); compopt -o nospace 2>/dev/null; return ;;
     --scenario)
       COMPREPLY=($(compgen -f -X '!*.yaml' -- "$cur") $(compgen -f -X '!*.yml' -- "$cur") $(compgen -d -- "$cur")); compopt -o filenames 2>/dev/null; return ;;
     --knowledge|--knowledge-in)
@@ -44,7 +52,7 @@ _apprentice() {
       COMPREPLY=($(compgen -f -X '!*.jsonl' -- "$cur") $(compgen -d -- "$cur")); compopt -o filenames 2>/dev/null; return ;;
     --plot)
       COMPREPLY=($(compgen -f -X '!*.svg' -- "$cur") $(compgen -f -X '!*.png' -- "$cur") $(compgen -d -- "$cur")); compopt -o filenames 2>/dev/null; return ;;
-    --out|--transcript|--knowledge-out)
+    --out|--transcript|--knowledge-out|--log-dir)
       COMPREPLY=($(compgen -d -- "$cur")); compopt -o filenames 2>/dev/null; return ;;
     --generalization)
       COMPREPLY=($(compgen -W "full paper" -- "$cur")); return ;;
@@ -58,7 +66,7 @@ _apprentice() {
     --llm)
       COMPREPLY=($(compgen -W "openai:http:// llama:http:// replay: record: corpus:" -- "$cur")); compopt -o nospace 2>/dev/null
       return ;;
-    --goal|--llm-model|--llm-api-key|--llm-timeout-ms|--depth|--max-nodes|--task|--object|--subtask)
+    --goal|--llm-model|--llm-api-key|--llm-timeout-ms|--depth|--max-nodes|--task|--object|--subtask|--host|--port|--token|--max-sessions|--idle-seconds)
       return ;;
   esac
   local words

@@ -27,8 +27,6 @@
 
 namespace apprentice::cli {
 
-namespace {
-
 // The shipped data: next to the binary's build directory when run from a
 // checkout (build/apprentice -> data/), else where the build was configured.
 std::filesystem::path data_dir() {
@@ -51,6 +49,8 @@ llm::LlmOptions llm_options(const LlmFlags& flags) {
   if (flags.connect_timeout_ms) options.transport.connect_timeout = std::chrono::milliseconds(*flags.connect_timeout_ms);
   return options;
 }
+
+namespace {
 
 Status write_file(const std::filesystem::path& path, const std::string& text) {
   std::ofstream file(path, std::ios::binary);

@@ -2,11 +2,13 @@
 #pragma once
 
 #include <cstdio>
+#include <filesystem>
 #include <iosfwd>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "llm/factory.h"
 #include "outcome.h"
 
 namespace apprentice::cli {
@@ -25,6 +27,12 @@ struct LlmFlags {
   bool offer_ungrounded = false;    // --offer-ungrounded
   int goal_responses = 5;           // --llm-goal-responses
 };
+
+// The shipped data (data/: domains, scenarios, prompts, the page): next to the binary's build directory when run
+// from a checkout, else where the build was configured.
+std::filesystem::path data_dir();
+// The LLM client's options from the flags.
+llm::LlmOptions llm_options(const LlmFlags& flags);
 
 struct ExperimentOptions {
   std::string scenario;

@@ -20,8 +20,10 @@
 #include <CLI/CLI.hpp>
 
 #include "cmd_agent.h"
+#include "cmd_benchmark.h"
 #include "cmd_core.h"
 #include "cmd_interpret.h"
+#include "cmd_serve.h"
 #include "llm/factory.h"
 #include "util/log.h"
 #include "util/spelling.h"
@@ -333,6 +335,61 @@ int run(int argc, char** argv) {
   knowledge_cmd->add_flag("--json", knowledge.json, "Machine-readable output");
   knowledge_cmd->add_flag("--pddl", knowledge.pddl, "Goals and rules in PDDL terms instead of English");
   on_run(knowledge_cmd, [&] { result = run_knowledge(knowledge, program, std::cout); });
+
+  serve::ServeOptions serve_options;
+  std::vector<std::string> serve_scenarios, serve_knowledge;
+  std::string serve_log_dir;
+  int idle_seconds = static_cast<int>(serve_options.limits.idle.count());
+  auto* serve_cmd = app.add_subcommand("serve", "Teach the agent from a web page: serve it, and each session it starts");
+  serve_cmd->add_option("--scenario", serve_scenarios,
+                        "A world to offer besides data/scenarios (YAML; repeatable; the first is preselected)");
+  serve_cmd->add_option("--knowledge", serve_knowledge,
+                        "A knowledge store to offer, by its file name (SQLite; repeatable; created if missing)");
+  serve_cmd->add_option("--host", serve_options.host, "Address to listen on (other than loopback: needs --token)")
+      ->capture_default_str();
+  serve_cmd->add_option("--port", serve_options.port, "Port to listen on (0: any free port)")
+      ->capture_default_str()
+      ->check(whole_number_in(0, 65535));
+  serve_cmd->add_option("--token", serve_options.token, "Secret every request must carry (16+ letters, digits, - or _)");
+  serve_cmd->add_option("--log-dir", serve_log_dir, "Keep each session's log as DIR/<session>.jsonl");
+  serve_cmd->add_option("--max-sessions", serve_options.limits.max_sessions, "Sessions teaching at once")
+      ->capture_default_str()
+      ->check(whole_number_in(1, 256));
+  serve_cmd->add_option("--idle-seconds", idle_seconds, "End a session after this long without a request")
+      ->capture_default_str()
+      ->check(whole_number_in(1, 7 * 24 * 3600));
+  on_run(serve_cmd, [&] {
+    serve_options.scenarios.assign(serve_scenarios.begin(), serve_scenarios.end());
+    serve_options.knowledge.assign(serve_knowledge.begin(), serve_knowledge.end());
+    if (!serve_log_dir.empty()) serve_options.log_dir = serve_log_dir;
+    serve_options.limits.idle = std::chrono::seconds(idle_seconds);
+    result = run_serve(serve_options, std::cout);
+  });
+
+  BenchmarkCommandOptions bench;
+  auto* bench_cmd = app.add_subcommand(
+      "benchmark", "Run an outside benchmark through the agent and print its published figures beside ours");
+  bench_cmd->add_option("name", bench.benchmark, "The benchmark: tidybot (Wu et al. 2023)")->required();
+  bench_cmd->add_option("--scenarios", bench.scenarios, "The benchmark's scenarios, in its own format (scenarios.yml)")
+      ->required();
+  bench_cmd->add_option("--settings", bench.settings,
+                        "Comma-separated settings: a-alone, a-alone+llm, a-teacher, a-teacher+llm, b-alone, "
+                        "b-alone+llm, b-teacher (default: all that can run)")
+      ->delimiter(',');
+  bench_cmd->add_option("--only", bench.only, "Run only the scenarios with these benchmark indexes (comma-separated)")
+      ->delimiter(',')
+      ->check(whole_number_in(1, std::numeric_limits<int>::max()));
+  bench_cmd->add_option("--transcript", bench.transcript_dir, "Write each dialogue to DIR/<setting>/<index>.txt");
+  bench_cmd->add_flag("--json", bench.json, "Right, wrong and left counts and questions per setting, tag and scenario");
+  add_llm_flags(bench_cmd, bench.llm);
+  on_run(bench_cmd, [&] {
+    std::vector<std::string> settings;
+    for (const std::string& s : bench.settings)
+      if (!trim(s).empty()) settings.emplace_back(trim(s));
+    bench.settings = std::move(settings);
+    check_llm_flag(bench.llm);
+    result = run_benchmark(bench, std::cout);
+  });
 
   required = defer_requirements(app);
   if (auto word = first_word(argc, argv)) {

@@ -1,0 +1,223 @@
+#include "benchmark/tidybot_benchmark.h"
+
+#include <algorithm>
+
+#include "agent/agent.h"
+#include "benchmark/tidybot_teacher.h"
+#include "benchmark/tidybot_world.h"
+#include "language/generation.h"
+#include "llm/prompts.h"
+
+namespace apprentice::benchmark {
+
+std::vector<Setting> all_settings() {
+  return {
+      {"a-alone", Protocol::kExamples, false, false},   {"a-alone+llm", Protocol::kExamples, false, true},
+      {"a-teacher", Protocol::kExamples, true, false},  {"a-teacher+llm", Protocol::kExamples, true, true},
+      {"b-alone", Protocol::kNote, false, false},       {"b-alone+llm", Protocol::kNote, false, true},
+      {"b-teacher", Protocol::kNote, true, false},
+  };
+}
+
+Result<Setting> parse_setting(std::string_view name) {
+  std::string names;
+  for (const Setting& setting : all_settings()) {
+    if (setting.name == name) return setting;
+    names += (names.empty() ? "" : ", ") + setting.name;
+  }
+  return make_error(ErrorCode::kInvalidInput,
+                    "unknown setting " + apprentice::quoted(name) + " (expected one of: " + names + ")");
+}
+
+Tally& Tally::operator+=(const Tally& other) {
+  right += other.right;
+  wrong += other.wrong;
+  left += other.left;
+  questions += other.questions;
+  instructions += other.instructions;
+  return *this;
+}
+
+const std::vector<PublishedFigure>& tidybot_published() {
+  static const std::vector<PublishedFigure> kFigures = {
+      {"LLM summarization", 91.2},
+      {"CLIP embeddings", 83.7},
+      {"LLM, examples only", 78.5},
+      {"LLM, the human-written note", 97.5},
+  };
+  return kFigures;
+}
+
+namespace {
+
+// What every session of one run shares.
+struct Bench {
+  const BenchmarkOptions& options;
+  language::Lexicon lexicon = language::Lexicon::open_default();
+  std::map<int, Knowledge> taught;  // protocol A: what each scenario's seen placements taught
+};
+
+Condition condition_for(bool teacher, bool llm) {
+  Condition condition;
+  condition.name = std::string(teacher ? "inst+" : "") + "search4" + (llm ? "+llm" : "");
+  condition.instruction = teacher;
+  condition.search_depth = 4;
+  condition.llm = llm;
+  return condition;
+}
+
+struct Session {
+  Knowledge knowledge;  // what the agent knows at the end
+  State end;
+  Tally tally;          // questions and instructions only
+  std::string transcript;
+};
+
+// One learning session of the agent in `world`, from `knowledge`, with the
+// benchmark's teacher.
+Result<Session> run_session(const BenchmarkWorld& world, Knowledge knowledge, const Condition& condition,
+                            const TeacherOptions& teaching, LlmAdvisor* advisor) {
+  AgentOptions agent_options;
+  agent_options.condition = condition;
+  TaskLearningAgent agent(agent_options, std::move(knowledge), Understanding(), nullptr, advisor);
+  Simulator simulator(world.scenario.world);
+  BenchmarkTeacher teacher(world.scenario, teaching);
+  Dialogue dialogue(teacher);
+  auto report = agent.learn(simulator, dialogue);
+  if (!report) return tl::unexpected(report.error());
+  Session session{agent.knowledge(), simulator.state(), {}, dialogue.transcript_text()};
+  session.tally.questions = teacher.questions_about_things();
+  session.tally.instructions = dialogue.counts().instructions;
+  return session;
+}
+
+// Where each object ended, against where the person wants it.
+std::vector<ObjectOutcome> outcomes(const BenchmarkWorld& world, const State& end, Tally& tally) {
+  World now = world.scenario.world;
+  now.state = end;
+  std::vector<ObjectOutcome> out;
+  for (const auto& [name, id] : world.objects) {
+    ObjectOutcome outcome;
+    outcome.object = name;
+    const std::string& category = world.scenario.world.universe->info(id).category;
+    if (const IntentEntry* entry = world.scenario.find_intent("clear", category))
+      outcome.wanted = world.receptacle_name(entry->place);
+    auto place = language::place_of(now, id);
+    if (place && *place != world.cart) outcome.placed = world.receptacle_name(*place);
+    if (outcome.placed.empty()) ++tally.left;
+    else if (outcome.placed == outcome.wanted) ++tally.right;
+    else ++tally.wrong;
+    out.push_back(std::move(outcome));
+  }
+  return out;
+}
+
+std::vector<std::string> all_objects(const TidyBotScenario& scenario) {
+  std::vector<std::string> objects = scenario.seen_objects;
+  objects.insert(objects.end(), scenario.unseen_objects.begin(), scenario.unseen_objects.end());
+  return objects;
+}
+
+// Protocol A's first part: the seen placements taught in a world of the
+// seen objects, from nothing (kept for every setting of protocol A).
+Result<Knowledge> taught_examples(Bench& bench, const TidyBotScenario& scenario) {
+  if (auto known = bench.taught.find(scenario.index); known != bench.taught.end()) return known->second;
+  auto world = build_world(scenario, scenario.seen_objects, bench.options.domain, bench.lexicon);
+  if (!world) return tl::unexpected(world.error());
+  auto session = run_session(*world, Knowledge{}, condition_for(true, false), TeacherOptions{}, nullptr);
+  if (!session) return tl::unexpected(session.error());
+  return bench.taught.emplace(scenario.index, std::move(session->knowledge)).first->second;
+}
+
+Result<ScenarioOutcome> run_scenario(Bench& bench, const TidyBotScenario& scenario, const Setting& setting,
+                                     LlmAdvisor* advisor) {
+  Knowledge knowledge;
+  TeacherOptions teaching;
+  teaching.answers_about_things = setting.teacher;
+  std::vector<std::string> objects;
+  if (setting.protocol == Protocol::kExamples) {
+    auto taught = taught_examples(bench, scenario);
+    if (!taught) return tl::unexpected(taught.error());
+    knowledge = *taught;
+    objects = scenario.unseen_objects;
+  } else {
+    teaching.note = scenario.note;
+    teaching.note_at = setting.teacher ? NoteAt::kGoalQuestion : NoteAt::kTaskStep;
+    objects = all_objects(scenario);
+  }
+  auto world = build_world(scenario, objects, bench.options.domain, bench.lexicon);
+  if (!world) return tl::unexpected(world.error());
+  auto session = run_session(*world, std::move(knowledge), condition_for(setting.teacher, setting.llm), teaching, advisor);
+  if (!session) return tl::unexpected(session.error());
+  ScenarioOutcome outcome;
+  outcome.index = scenario.index;
+  outcome.tags = scenario.tags;
+  outcome.tally = session->tally;
+  outcome.objects = outcomes(*world, session->end, outcome.tally);
+  if (bench.options.keep_transcripts) outcome.transcript = std::move(session->transcript);
+  return outcome;
+}
+
+Result<std::unique_ptr<LlmAdvisor>> make_advisor(const BenchmarkOptions& options, const Setting& setting) {
+  auto client = options.llm();
+  if (!client) return tl::unexpected(client.error());
+  auto templates = llm::PromptTemplates::load(options.prompts_dir);
+  if (!templates) return tl::unexpected(templates.error());
+  LlmAdvisorOptions advice;
+  advice.instructed = setting.teacher;
+  return std::make_unique<LlmAdvisor>(std::move(*client), std::move(*templates), advice);
+}
+
+Result<SettingResult> run_setting(Bench& bench, const std::vector<TidyBotScenario>& scenarios, const Setting& setting) {
+  const auto started = std::chrono::steady_clock::now();
+  std::unique_ptr<LlmAdvisor> advisor;
+  if (setting.llm) {
+    if (!bench.options.llm)
+      return make_error(ErrorCode::kInvalidInput, "setting " + setting.name + " needs an LLM: pass --llm SPEC");
+    auto made = make_advisor(bench.options, setting);
+    if (!made) return tl::unexpected(made.error());
+    advisor = std::move(*made);
+  }
+  SettingResult result;
+  result.setting = setting;
+  double percent_sum = 0;
+  for (const TidyBotScenario& scenario : scenarios) {
+    auto outcome = run_scenario(bench, scenario, setting, advisor.get());
+    if (!outcome)
+      return tl::unexpected(prefix_error(outcome.error(), "TidyBot scenario " + std::to_string(scenario.index)));
+    result.total += outcome->tally;
+    for (const std::string& tag : scenario.tags) result.by_tag[tag] += outcome->tally;
+    if (outcome->tally.objects() > 0) percent_sum += 100.0 * outcome->tally.right / outcome->tally.objects();
+    result.scenarios.push_back(std::move(*outcome));
+  }
+  if (!scenarios.empty()) result.mean_scenario_percent = percent_sum / static_cast<double>(scenarios.size());
+  if (advisor) {
+    LlmTotals totals = advisor->totals();
+    result.llm_calls = totals.calls;
+    result.llm_failures = totals.failures;
+  }
+  result.wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+  return result;
+}
+
+}  // namespace
+
+Result<BenchmarkResults> run_tidybot(const std::vector<TidyBotScenario>& scenarios, const BenchmarkOptions& options) {
+  Bench bench{options, language::Lexicon::open_default(), {}};
+  BenchmarkResults results;
+  std::vector<Setting> settings = options.settings;
+  if (settings.empty()) {
+    for (const Setting& setting : all_settings()) {
+      if (setting.llm && !options.llm) results.skipped.push_back(setting.name);
+      else settings.push_back(setting);
+    }
+  }
+  for (const Setting& setting : settings) {
+    auto result = run_setting(bench, scenarios, setting);
+    if (!result) return tl::unexpected(result.error());
+    results.results.push_back(std::move(*result));
+  }
+  return results;
+}
+
+}  // namespace apprentice::benchmark

@@ -1,0 +1,333 @@
+#include "knowledge/sqlite_store.h"
+
+#include <fcntl.h>
+#include <sqlite3.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <string_view>
+
+#include <SQLiteCpp/SQLiteCpp.h>
+
+#include "knowledge/store.h"
+#include "knowledge/store_codec.h"
+#include "knowledge/store_creation.h"
+#include "util/file.h"
+
+namespace apprentice {
+
+namespace {
+
+constexpr int kBusyTimeoutMs = 5000;
+
+using Texts = std::vector<std::string>;
+
+// What an SQLite failure means to the user, by SQLite's result code.
+Error sqlite_error(const std::filesystem::path& path, const std::exception& e) {
+  const std::string where = path.string() + ": ";
+  const auto* sqlite = dynamic_cast<const SQLite::Exception*>(&e);
+  const int code = sqlite ? sqlite->getErrorCode() : SQLITE_ERROR;
+  switch (code) {
+    case SQLITE_NOTADB:
+      return Error{ErrorCode::kFailedPrecondition, where + "not an apprentice knowledge store (not an SQLite database)"};
+    case SQLITE_CORRUPT:
+      return Error{ErrorCode::kDataLoss, where + "the knowledge store is damaged (" + e.what() + ")"};
+    case SQLITE_BUSY:
+    case SQLITE_LOCKED:
+      return Error{ErrorCode::kIo, where + "the knowledge store is in use by another process and stayed locked for " +
+                                       std::to_string(kBusyTimeoutMs / 1000) + " s (" + e.what() + ")"};
+    case SQLITE_FULL: return Error{ErrorCode::kIo, where + "the disk is full (" + e.what() + ")"};
+    default: return Error{ErrorCode::kIo, where + e.what()};
+  }
+}
+
+tl::unexpected<Error> damaged(const std::filesystem::path& path, const std::string& what) {
+  return make_error(ErrorCode::kDataLoss, path.string() + ": the knowledge store is damaged: " + what);
+}
+
+tl::unexpected<Error> not_a_store(const std::filesystem::path& path, const std::string& why) {
+  return make_error(ErrorCode::kFailedPrecondition, path.string() + ": not an apprentice knowledge store (" + why + ")");
+}
+
+// The columns load() reads: a store without them is damaged.
+constexpr const char* kTasksQuery = "SELECT name, structure FROM tasks ORDER BY name";
+constexpr const char* kGoalsQuery = "SELECT task, subtask, category, place, literals, object, source FROM goals ORDER BY id";
+constexpr const char* kRulesQuery = "SELECT body, object, source FROM rules ORDER BY id";
+
+int table_count(SQLite::Database& db) {
+  SQLite::Statement tables(db, "SELECT count(*) FROM sqlite_master WHERE type='table'");
+  tables.executeStep();
+  return tables.getColumn(0).getInt();
+}
+
+// Checks that the database is a store of this version with every table
+// load() reads, creating the schema in an empty database when `may_create`.
+// Creation happens in an immediate transaction that checks again, so two
+// processes creating one store at once make one schema.
+Status check_or_create_schema(SQLite::Database& db, const std::filesystem::path& path, bool may_create) {
+  if (!db.tableExists("meta")) {
+    if (table_count(db) > 0)
+      return make_error(ErrorCode::kFailedPrecondition,
+                        path.string() + " is an SQLite database of another program, not an apprentice knowledge store");
+    if (!may_create) return not_a_store(path, "an SQLite database with no tables");
+    SQLite::Transaction transaction(db, SQLite::TransactionBehavior::IMMEDIATE);
+    if (!db.tableExists("meta")) {
+      if (table_count(db) > 0)
+        return make_error(ErrorCode::kFailedPrecondition,
+                          path.string() + " is an SQLite database of another program, not an apprentice knowledge store");
+      create_knowledge_schema(db);
+    }
+    transaction.commit();
+  }
+  std::string format, version;
+  SQLite::Statement meta(db, "SELECT key, value FROM meta");
+  while (meta.executeStep()) {
+    std::string key = meta.getColumn(0).getString();
+    if (key == "format") format = meta.getColumn(1).getString();
+    if (key == "schema_version") version = meta.getColumn(1).getString();
+  }
+  if (format != kKnowledgeFormatName)
+    return make_error(ErrorCode::kFailedPrecondition, path.string() + " is not an apprentice knowledge store");
+  if (version != std::to_string(kKnowledgeSchemaVersion))
+    return make_error(ErrorCode::kFailedPrecondition,
+                      path.string() + " was written with knowledge schema version " + version +
+                          "; this apprentice reads version " + std::to_string(kKnowledgeSchemaVersion) +
+                          ". Relearn into a new file, or use the apprentice version that wrote it.");
+  for (auto [table, query] : {std::pair{"tasks", kTasksQuery}, {"goals", kGoalsQuery}, {"rules", kRulesQuery}}) {
+    try {
+      SQLite::Statement check(db, query);
+    } catch (const SQLite::Exception& e) {
+      if (e.getErrorCode() != SQLITE_ERROR) throw;
+      return damaged(path, std::string("its ") + table + " table is missing or incomplete (" + e.what() + ")");
+    }
+  }
+  return {};
+}
+
+// SQLite's quick_check: the pages and indexes are consistent.
+Status quick_check(SQLite::Database& db, const std::filesystem::path& path) {
+  SQLite::Statement check(db, "PRAGMA quick_check(1)");
+  if (!check.executeStep()) return damaged(path, "PRAGMA quick_check gave no answer");
+  std::string answer = check.getColumn(0).getString();
+  if (answer != "ok") return damaged(path, "PRAGMA quick_check reports " + answer);
+  return {};
+}
+
+class SqliteStore final : public StoreEngine {
+ public:
+  SqliteStore(std::filesystem::path path, FileDescriptor lock, std::unique_ptr<SQLite::Database> db)
+      : path_(std::move(path)), lock_(std::move(lock)), db_(std::move(db)) {}
+  // The database first, then its lock (see lock_).
+  ~SqliteStore() override { db_.reset(); }
+
+  Status save_goal(const GoalKnowledge& goal) override;
+  Status save_rule(const Domain& domain, const Rule& rule) override;
+  Status save_task(const TaskKnowledge& task) override;
+  Status remove_goal(const GoalKey& key) override;
+  Status remove_rule(const Domain& domain, const Rule& rule) override;
+  Status remove_task(const std::string& name) override;
+  Result<Knowledge> load(const Domain& domain) const override;
+
+ private:
+  // Runs one statement in its own transaction, with the text parameters
+  // `parameters()` gives (encoding inside the try: nothing escapes).
+  template <typename Parameters>
+  Status write(const char* sql, Parameters parameters);
+
+  std::filesystem::path path_;
+  // The descriptor holding the flock(2). Declared before db_, so closed
+  // after the database: closing any descriptor of a file drops the
+  // process's POSIX locks on it, SQLite's among them.
+  FileDescriptor lock_;
+  std::unique_ptr<SQLite::Database> db_;
+};
+
+template <typename Parameters>
+Status SqliteStore::write(const char* sql, Parameters parameters) {
+  try {
+    const std::vector<std::string> values = parameters();
+    SQLite::Transaction transaction(*db_);
+    SQLite::Statement statement(*db_, sql);
+    for (std::size_t i = 0; i < values.size(); ++i) statement.bind(static_cast<int>(i + 1), values[i]);
+    statement.exec();
+    transaction.commit();
+    return {};
+  } catch (const std::exception& e) {
+    return tl::unexpected(sqlite_error(path_, e));
+  }
+}
+
+Status SqliteStore::save_goal(const GoalKnowledge& goal) {
+  return write(
+      "INSERT OR REPLACE INTO goals(task, subtask, category, place, literals, object, source) VALUES (?, ?, ?, ?, ?, ?, ?)",
+      [&] {
+        return Texts{goal.key.task, goal.key.subtask, goal.key.category, goal.key.place, store_codec::encode_goal_literals(goal),
+       goal.provenance.object, goal.provenance.source}; });
+}
+
+Status SqliteStore::save_rule(const Domain& domain, const Rule& rule) {
+  return write("INSERT OR IGNORE INTO rules(signature, body, object, source) VALUES (?, ?, ?, ?)", [&] { return Texts{rule_signature(domain, rule), store_codec::encode_rule(domain, rule), rule.provenance.object,
+                rule.provenance.source}; });
+}
+
+Status SqliteStore::save_task(const TaskKnowledge& task) {
+  return write("INSERT OR REPLACE INTO tasks(name, structure) VALUES (?, ?)", [&] { return Texts{task.name, store_codec::encode_subtasks(task)}; });
+}
+
+Status SqliteStore::remove_goal(const GoalKey& key) {
+  return write("DELETE FROM goals WHERE task = ? AND subtask = ? AND category = ? AND place = ?", [&] { return Texts{key.task, key.subtask, key.category, key.place}; });
+}
+
+Status SqliteStore::remove_rule(const Domain& domain, const Rule& rule) {
+  return write("DELETE FROM rules WHERE signature = ?", [&] { return Texts{rule_signature(domain, rule)}; });
+}
+
+Status SqliteStore::remove_task(const std::string& name) { return write("DELETE FROM tasks WHERE name = ?", [&] { return Texts{name}; }); }
+
+Result<Knowledge> SqliteStore::load(const Domain& domain) const {
+  Knowledge knowledge;
+  // The text of a column, or the entry's error.
+  auto text = [](const SQLite::Column& column, const std::string& entry) -> Result<std::string> {
+    if (!column.isText()) return tl::unexpected(store_codec::unreadable(entry, "not text"));
+    return column.getString();
+  };
+  auto located = [&](const Error& error) { return tl::unexpected(prefix_error(error, path_.string())); };
+  try {
+    // One read transaction: a consistent snapshot while writers go on.
+    SQLite::Transaction snapshot(*db_, SQLite::TransactionBehavior::DEFERRED);
+    SQLite::Statement tasks(*db_, kTasksQuery);
+    while (tasks.executeStep()) {
+      const std::string name = tasks.getColumn(0).getString();
+      auto structure = text(tasks.getColumn(1), store_codec::task_entry(name));
+      if (!structure) return located(structure.error());
+      auto task = store_codec::decode_task(name, *structure);
+      if (!task) return located(task.error());
+      knowledge.tasks.push_back(std::move(*task));
+    }
+    SQLite::Statement goals(*db_, kGoalsQuery);
+    while (goals.executeStep()) {
+      GoalKey key{goals.getColumn(0).getString(), goals.getColumn(1).getString(), goals.getColumn(2).getString(),
+                  goals.getColumn(3).getString()};
+      auto literals = text(goals.getColumn(4), store_codec::goal_entry(key));
+      if (!literals) return located(literals.error());
+      auto goal = store_codec::decode_goal(domain, std::move(key), *literals,
+                                           Provenance{goals.getColumn(5).getString(), goals.getColumn(6).getString()});
+      if (!goal) return located(goal.error());
+      knowledge.goals.add(std::move(*goal));
+    }
+    SQLite::Statement rules(*db_, kRulesQuery);
+    while (rules.executeStep()) {
+      auto body = text(rules.getColumn(0), store_codec::kRuleEntry);
+      if (!body) return located(body.error());
+      auto rule = store_codec::decode_rule(domain, *body,
+                                           Provenance{rules.getColumn(1).getString(), rules.getColumn(2).getString()});
+      if (!rule) return located(rule.error());
+      knowledge.rules.add(domain, std::move(*rule));
+    }
+  } catch (const std::exception& e) {
+    return tl::unexpected(sqlite_error(path_, e));
+  }
+  return knowledge;
+}
+
+}  // namespace
+
+Result<std::unique_ptr<StoreEngine>> open_sqlite_store(const std::filesystem::path& path, StoreAccess access) {
+  const bool read_only = access == StoreAccess::kReadOnly;
+  // 1. The file, created if absent (unless read-only), and its lock. A new
+  // store is created whole under another name and moved into place
+  // (store_creation.h), so that a killed process never leaves an empty or
+  // half-made store; one that appeared meanwhile is opened instead.
+  if (!read_only) remove_abandoned_creations(path);
+  int fd = -1;
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    fd = open_retrying(path, read_only ? O_RDONLY | O_CLOEXEC : O_RDWR | O_CLOEXEC);
+    if (fd >= 0 || errno != ENOENT || read_only || attempt == 2) break;
+    if (auto created = create_store_file(path); !created) return tl::unexpected(created.error());
+  }
+  if (fd < 0) {
+    const int error = errno;
+    if (error == ENOENT && read_only) return make_error(ErrorCode::kNotFound, path.string() + ": no such knowledge store");
+    if (error == EISDIR)
+      return make_error(ErrorCode::kInvalidInput, path.string() + ": is a directory, not a knowledge store");
+    return make_error(ErrorCode::kIo, path.string() + ": cannot " + (read_only ? "open" : "open or create") +
+                                          " the knowledge store: " + std::strerror(error));
+  }
+  FileDescriptor lock(fd);
+  struct stat info {};
+  if (::fstat(fd, &info) != 0)
+    return make_error(ErrorCode::kIo, path.string() + ": cannot read the knowledge store: " + std::strerror(errno));
+  if (S_ISDIR(info.st_mode))
+    return make_error(ErrorCode::kInvalidInput, path.string() + ": is a directory, not a knowledge store");
+  if (!S_ISREG(info.st_mode)) return not_a_store(path, "not a regular file");
+  const int locked = flock_retrying(fd, (access == StoreAccess::kFresh ? LOCK_EX : LOCK_SH) | LOCK_NB);
+  if (locked != 0) {
+    if (errno == EWOULDBLOCK)
+      return make_error(ErrorCode::kIo,
+                        path.string() + ": the knowledge store is in use by another process" +
+                            (access == StoreAccess::kFresh
+                                 ? "; an experiment starts a store over only when nobody else has it open. Wait "
+                                   "for the other process, or choose another --knowledge-out directory."
+                                 : ", which is starting it over (experiment --knowledge-out); wait until it finishes."));
+    return make_error(ErrorCode::kIo, path.string() + ": cannot lock the knowledge store: " + std::strerror(errno));
+  }
+
+  // 2. What the file holds: nothing (a new store, unless read-only), or an
+  // SQLite database. SQLite itself would take any file of up to 1 byte for
+  // an empty database and overwrite it.
+  if (info.st_size == 0 && read_only) return not_a_store(path, "the file is empty");
+  if (info.st_size > 0) {
+    constexpr std::string_view kHeader("SQLite format 3\0", 16);
+    char head[16] = {};
+    ssize_t n = ::pread(fd, head, sizeof head, 0);
+    if (n != static_cast<ssize_t>(sizeof head) || std::string_view(head, sizeof head) != kHeader)
+      return not_a_store(path, "not an SQLite database");
+  }
+
+  // 3. SQLite: a rollback journal with full syncs, so a transaction that
+  // returned is on disk and a killed writer leaves a journal SQLite rolls
+  // back; quick_check; the schema.
+  try {
+    auto connect = [&](int flags) {
+      auto db = std::make_unique<SQLite::Database>(path.string(), flags);
+      db->exec("PRAGMA busy_timeout = " + std::to_string(kBusyTimeoutMs));
+      return db;
+    };
+    std::unique_ptr<SQLite::Database> db;
+    if (read_only) {
+      db = connect(SQLite::OPEN_READONLY);
+      try {
+        if (auto status = quick_check(*db, path); !status) return tl::unexpected(status.error());
+      } catch (const SQLite::Exception& e) {
+        if (e.getExtendedErrorCode() != SQLITE_READONLY_ROLLBACK) throw;
+        // A killed writer left a hot journal, which only a writer can roll
+        // back: let one do it, then read as before.
+        db.reset();
+        connect(SQLite::OPEN_READWRITE)->exec("SELECT count(*) FROM sqlite_master");
+        db = connect(SQLite::OPEN_READONLY);
+        if (auto status = quick_check(*db, path); !status) return tl::unexpected(status.error());
+      }
+    } else {
+      db = connect(SQLite::OPEN_READWRITE);
+      db->exec("PRAGMA journal_mode = DELETE");
+      db->exec("PRAGMA synchronous = FULL");
+      if (auto status = quick_check(*db, path); !status) return tl::unexpected(status.error());
+    }
+    if (auto status = check_or_create_schema(*db, path, !read_only); !status) return tl::unexpected(status.error());
+    if (access == StoreAccess::kFresh) {
+      SQLite::Transaction transaction(*db, SQLite::TransactionBehavior::IMMEDIATE);
+      db->exec("DELETE FROM goals");
+      db->exec("DELETE FROM tasks");
+      db->exec("DELETE FROM rules");
+      transaction.commit();
+    }
+    return std::unique_ptr<StoreEngine>(std::make_unique<SqliteStore>(path, std::move(lock), std::move(db)));
+  } catch (const std::exception& e) {
+    return tl::unexpected(sqlite_error(path, e));
+  }
+}
+
+}  // namespace apprentice

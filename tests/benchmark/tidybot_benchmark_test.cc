@@ -1,0 +1,138 @@
+// The benchmark run through the agent on two small scenarios written here:
+// what each setting counts, and what must hold whatever the agent learns
+// (every object counted once; with the teacher, everything right).
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "benchmark/tidybot_benchmark.h"
+#include "common/paths.h"
+#include "tidybot_fixtures.h"
+
+namespace apprentice::benchmark {
+namespace {
+
+using ::testing::HasSubstr;
+
+class TidyBotRun : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    auto scenarios = parse_tidybot_scenarios(testing::kTwoScenarios, "two.yml");
+    ASSERT_TRUE(scenarios) << scenarios.error().describe();
+    BenchmarkOptions options;
+    options.prompts_dir = apprentice::testing::source_path("data/prompts");
+    options.domain = apprentice::testing::source_path("data/domains/kitchen.pddl");
+    options.keep_transcripts = true;
+    auto results = run_tidybot(*scenarios, options);
+    ASSERT_TRUE(results) << results.error().describe();
+    results_ = new BenchmarkResults(std::move(*results));
+  }
+  static void TearDownTestSuite() {
+    delete results_;
+    results_ = nullptr;
+  }
+  static const SettingResult& setting(std::string_view name) {
+    for (const SettingResult& r : results_->results)
+      if (r.setting.name == name) return r;
+    ADD_FAILURE() << "no setting " << name;
+    return results_->results.front();
+  }
+  static BenchmarkResults* results_;
+};
+
+BenchmarkResults* TidyBotRun::results_ = nullptr;
+
+TEST_F(TidyBotRun, WithoutAnLlmTheLlmSettingsAreSkipped) {
+  ASSERT_NE(results_, nullptr);
+  EXPECT_EQ(results_->results.size(), 4u);
+  EXPECT_THAT(results_->skipped, ::testing::ElementsAre("a-alone+llm", "a-teacher+llm", "b-alone+llm"));
+}
+
+TEST_F(TidyBotRun, EveryObjectIsCountedOnce) {
+  ASSERT_NE(results_, nullptr);
+  for (const SettingResult& r : results_->results) {
+    const int objects = r.setting.protocol == Protocol::kExamples ? 4 : 8;
+    EXPECT_EQ(r.total.objects(), objects) << r.setting.name;
+    ASSERT_EQ(r.scenarios.size(), 2u);
+    EXPECT_EQ(r.scenarios[0].index, 7);
+    int placements = 0;
+    for (const ScenarioOutcome& s : r.scenarios) placements += static_cast<int>(s.objects.size());
+    EXPECT_EQ(placements, objects) << r.setting.name;
+    // The second scenario alone has the tag attribute.
+    EXPECT_EQ(r.by_tag.at("attribute").objects(), r.scenarios[1].tally.objects()) << r.setting.name;
+    EXPECT_EQ(r.by_tag.at("category").objects(), objects) << r.setting.name;
+  }
+}
+
+TEST_F(TidyBotRun, WithTheTeacherEverythingEndsRight) {
+  ASSERT_NE(results_, nullptr);
+  for (const char* name : {"a-teacher", "b-teacher"}) {
+    const SettingResult& r = setting(name);
+    EXPECT_EQ(r.total.right, r.total.objects()) << name;
+    EXPECT_EQ(r.total.wrong, 0) << name;
+    EXPECT_DOUBLE_EQ(r.mean_scenario_percent, 100.0) << name;
+    for (const ScenarioOutcome& s : r.scenarios)
+      for (const ObjectOutcome& o : s.objects) EXPECT_EQ(o.placed, o.wanted) << name << ": " << o.object;
+  }
+}
+
+TEST_F(TidyBotRun, AKindTaughtByTheExamplesNeedsNoQuestion) {
+  ASSERT_NE(results_, nullptr);
+  // "polo shirt 2" is another polo shirt, whose place was shown.
+  const SettingResult& alone = setting("a-alone");
+  const ObjectOutcome& second_shirt = alone.scenarios[0].objects[2];
+  EXPECT_EQ(second_shirt.object, "polo shirt 2");
+  EXPECT_EQ(second_shirt.placed, "hamper");
+  EXPECT_EQ(alone.total.questions, 0) << "alone, nobody is asked";
+  // With the teacher, only the three new kinds may be asked about.
+  EXPECT_LE(setting("a-teacher").total.questions, 3);
+}
+
+TEST_F(TidyBotRun, TheNoteIsSaidInThePersonsWords) {
+  ASSERT_NE(results_, nullptr);
+  const std::string& alone = setting("b-alone").scenarios[0].transcript;
+  const std::string& taught = setting("b-teacher").scenarios[0].transcript;
+  const std::string note = "Instructor: Put shirts in the hamper and blocks in the toy chest.";
+  EXPECT_THAT(alone, HasSubstr(note));
+  EXPECT_THAT(taught, HasSubstr(note));
+  // Alone it comes before the task's steps; with the teacher at the first
+  // question about where a thing goes.
+  EXPECT_LT(alone.find(note), alone.find("Repeat the following tasks"));
+  EXPECT_GT(taught.find(note), taught.find("Where should"));
+}
+
+TEST_F(TidyBotRun, TheJsonHasTheCountsOfEachSetting) {
+  ASSERT_NE(results_, nullptr);
+  auto json = nlohmann::json::parse(tidybot_json(*results_));
+  ASSERT_EQ(json["settings"].size(), 4u);
+  for (const auto& s : json["settings"]) {
+    for (const char* key : {"objects", "right", "wrong", "left", "questions", "instructions", "llm_calls"})
+      EXPECT_TRUE(s[key].is_number_integer()) << key;
+    EXPECT_EQ(s["right"].get<int>() + s["wrong"].get<int>() + s["left"].get<int>(), s["objects"].get<int>());
+    EXPECT_TRUE(s["by_tag"].contains("attribute"));
+    EXPECT_EQ(s["scenarios"].size(), 2u);
+  }
+  EXPECT_EQ(json["tidybot_published"].size(), tidybot_published().size());
+  const std::string table = format_tidybot_table(*results_);
+  EXPECT_THAT(table, HasSubstr("a-alone"));
+  EXPECT_THAT(table, HasSubstr("CLIP embeddings 83.7%"));
+  EXPECT_THAT(table, HasSubstr("Skipped for want of an LLM: a-alone+llm"));
+}
+
+TEST(TidyBotSettings, ASettingWithAnLlmNeedsOne) {
+  auto scenarios = parse_tidybot_scenarios(testing::kTwoScenarios, "two.yml");
+  ASSERT_TRUE(scenarios);
+  BenchmarkOptions options;
+  options.settings = {*parse_setting("a-alone+llm")};
+  options.domain = apprentice::testing::source_path("data/domains/kitchen.pddl");
+  auto results = run_tidybot(*scenarios, options);
+  ASSERT_FALSE(results);
+  EXPECT_EQ(results.error().code, ErrorCode::kInvalidInput);
+  EXPECT_THAT(results.error().message, HasSubstr("needs an LLM"));
+  auto unknown = parse_setting("c-alone");
+  ASSERT_FALSE(unknown);
+  EXPECT_THAT(unknown.error().message, HasSubstr("a-alone, a-alone+llm"));
+}
+
+}  // namespace
+}  // namespace apprentice::benchmark
