@@ -26,7 +26,8 @@ _apprentice() {
       case ${COMP_WORDS[i-1]} in
         --scenario|--knowledge|--goal|--out|--transcript|--knowledge-out|--knowledge-in|--conditions|--condition|\
         --generalization|--llm|--llm-model|--llm-api-key|--llm-timeout-ms|--depth|--max-nodes|--task|--domain|\
-        --object|--subtask|--corpus|--plot|--scenarios|--settings|--only) continue ;;
+        --object|--subtask|--corpus|--plot|--scenarios|--settings|--only|--host|--port|--token|--log-dir|--max-sessions|\
+        --idle-seconds) continue ;;
       esac
       subcommand=${COMP_WORDS[i]}
       break
@@ -51,7 +52,7 @@ _apprentice() {
       COMPREPLY=($(compgen -f -X '!*.jsonl' -- "$cur") $(compgen -d -- "$cur")); compopt -o filenames 2>/dev/null; return ;;
     --plot)
       COMPREPLY=($(compgen -f -X '!*.svg' -- "$cur") $(compgen -f -X '!*.png' -- "$cur") $(compgen -d -- "$cur")); compopt -o filenames 2>/dev/null; return ;;
-    --out|--transcript|--knowledge-out)
+    --out|--transcript|--knowledge-out|--log-dir)
       COMPREPLY=($(compgen -d -- "$cur")); compopt -o filenames 2>/dev/null; return ;;
     --generalization)
       COMPREPLY=($(compgen -W "full paper" -- "$cur")); return ;;
@@ -65,7 +66,7 @@ _apprentice() {
     --llm)
       COMPREPLY=($(compgen -W "openai:http:// llama:http:// replay: record: corpus:" -- "$cur")); compopt -o nospace 2>/dev/null
       return ;;
-    --goal|--llm-model|--llm-api-key|--llm-timeout-ms|--depth|--max-nodes|--task|--object|--subtask)
+    --goal|--llm-model|--llm-api-key|--llm-timeout-ms|--depth|--max-nodes|--task|--object|--subtask|--host|--port|--token|--max-sessions|--idle-seconds)
       return ;;
   esac
   local words

@@ -20,6 +20,7 @@ struct LlmFlags {
   std::optional<std::string> api_key;
   std::optional<int> timeout_ms;
   std::optional<int> connect_timeout_ms;
+  std::optional<int> seed;  // --llm-seed
   // Go on without the LLM when its server cannot be reached (else exit 4).
   bool optional = false;
   std::string goal_repair = "all";  // --goal-repair
@@ -27,7 +28,7 @@ struct LlmFlags {
   int goal_responses = 5;           // --llm-goal-responses
 };
 
-// The shipped data (data/): next to the binary's build directory when run
+// The shipped data (data/: domains, scenarios, prompts, the page): next to the binary's build directory when run
 // from a checkout, else where the build was configured.
 std::filesystem::path data_dir();
 // The LLM client's options from the flags.

@@ -62,7 +62,7 @@ TaskLearningAgent::Session::Flow<bool> TaskLearningAgent::Session::achieve(InPro
         report_.help_needed.push_back("how to make it so that " + language::goal_facts(world(), work.goal));
       return false;
     }
-    if (auto status = simulator_.execute(*next); !status) {
+    if (auto status = execute(*next); !status) {
       // Advice that cannot be carried out; the plan, if any, is stale.
       attempt.plan.clear();
       say(language::refusal(world(), *next), Voice::kResponse);

@@ -74,6 +74,12 @@ void TaskLearningAgent::Session::say(const std::string& statement, Voice voice) 
   if (dialogue_) dialogue_->say(statement, voice);
 }
 
+Status TaskLearningAgent::Session::execute(const Action& action) {
+  Status status = simulator_.execute(action);
+  if (status && dialogue_) dialogue_->observe(action, world());
+  return status;
+}
+
 TaskLearningAgent::Session::Flow<TaskLearningAgent::Session::Heard> TaskLearningAgent::Session::converse(
     const Question& asked, language::ReplyContext context, const Accept& accept, const Rescue& rescue) {
   APPRENTICE_CHECK(dialogue_ != nullptr);

@@ -142,7 +142,7 @@ void TaskLearningAgent::Session::put_world_back(const State& before, std::size_t
     PlanResult plan = find_plan(domain, *world().universe, world().state, back, options);
     bool done = plan.status == SearchStatus::kSolved;
     for (const Action& action : plan.plan) {
-      if (!done || !simulator_.execute(action)) {
+      if (!done || !execute(action)) {
         done = false;
         break;
       }

@@ -157,6 +157,9 @@ class TaskLearningAgent::Session {
   // by a plural, or by the last word ("plates": ceramic-plate, paper-plate).
   std::vector<std::string> known_kinds(std::string_view phrase) const;
   void say(const std::string& statement, Voice voice = Voice::kNarration);
+  // Executes `action` in the simulator; once it is done, the instructor
+  // sees it (Instructor::observe).
+  Status execute(const Action& action);
   bool person() const { return dialogue_ != nullptr && dialogue_->instructor_is_person(); }
 
   // Lessons and undo (agent_undo.cc).

@@ -40,6 +40,8 @@ class Dialogue {
   void count_reply(const Question& question, std::string_view reply);
   // The agent says something that needs no answer.
   void say(const std::string& statement, Voice voice = Voice::kNarration);
+  // An action the agent has just executed (Instructor::observe).
+  void observe(const Action& action, const World& world) { instructor_.observe(action, world); }
   // Whether a person answers (see Instructor::is_person).
   bool instructor_is_person() const { return instructor_.is_person(); }
 

@@ -71,6 +71,15 @@ class Instructor {
     (void)voice;
     return true;
   }
+  // Each action the agent has just executed, as it happens (towards a goal,
+  // or putting things back for an undo), with the world after it; both are
+  // lent for the call. The agent reports its actions in words through
+  // hear() afterwards; this is for an instructor that shows the world as it
+  // changes (the page of `apprentice serve`). The default ignores it.
+  virtual void observe(const Action& action, const World& world) {
+    (void)action;
+    (void)world;
+  }
   // A person is never given up on: however many replies the agent cannot
   // use, it explains and asks again, until the person ends the session. A
   // program (the simulated instructor, a callback) gets a bounded number of

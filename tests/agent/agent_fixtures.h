@@ -62,10 +62,12 @@ class CallbackInstructor final : public Instructor {
     return *reply;
   }
   void hear(std::string_view statement) override { heard.emplace_back(statement); }
+  void observe(const Action& action, const World& world) override { observed.emplace_back(action, world.state); }
   bool is_person() const override { return person_; }
 
   std::vector<Question> questions;
   std::vector<std::string> heard;
+  std::vector<std::pair<Action, State>> observed;  // each action as it happened, with the world after it
 
  private:
   Reply reply_;

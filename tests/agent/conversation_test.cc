@@ -166,6 +166,32 @@ TEST_F(Conversation, UndoOfATaughtActionPutsTheWorldBackAndAsksForThatStepAgain)
   EXPECT_GT(s.report->rules_learned, 0);
 }
 
+// Instructor::observe sees every action the agent executes, in order, with
+// the world after it: the ones towards a goal and the ones an undo takes to
+// put things back. Replaying them from the start gives the final world.
+TEST_F(Conversation, TheInstructorObservesEveryActionAsItHappensUndoIncluded) {
+  std::vector<std::string> lines = with_structure({kKetchupGoal, "Open the fridge.", "Pick up the ketchup.", "undo",
+                                                   "Pick up the ketchup.", "Put the ketchup in the fridge.",
+                                                   "Close the fridge.", "You are done.", "Repeat.", kPaperPlateGoal,
+                                                   "Pick up the paper-plate.", "Put the paper-plate in the garbage.",
+                                                   "You are done."});
+  CallbackInstructor instructor(replies(lines), true);
+  Session s = teach(two_, instructor, "instruction");
+  ASSERT_TRUE(s.report.has_value()) << s.report.error().describe();
+  ASSERT_FALSE(instructor.observed.empty());
+  State state = two_.world.state;
+  for (const auto& [action, after] : instructor.observed) {
+    ASSERT_TRUE(is_applicable(*two_.world.domain, state, action));
+    state = apply(*two_.world.domain, state, action);
+    EXPECT_EQ(state, after);
+  }
+  EXPECT_EQ(state, s.final_state);
+  // open, pick up, the undo's put-down, pick up, put in, close; pick up, put in.
+  EXPECT_EQ(instructor.observed.size(), 8u);
+  const Domain& domain = *two_.world.domain;
+  EXPECT_EQ(domain.actions[instructor.observed[2].first.schema].name, "put-on");
+}
+
 TEST_F(Conversation, UndoTwiceGoesBackTwoLessonsAndNothingToUndoIsSaid) {
   std::vector<std::string> lines = {"undo",
                                     "Tidy kitchen.",

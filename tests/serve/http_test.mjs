@@ -1,0 +1,214 @@
+// The HTTP face of `apprentice serve`: its token, Origin and CSRF checks,
+// its limits (body, reply, sessions, idle time), requests that try to name
+// a path, and two sessions on one store. Usage: node http_test.mjs BINARY SOURCE_DIR
+import { test, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { spawnSync } from 'node:child_process';
+import fs from 'node:fs';
+import net from 'node:net';
+import path from 'node:path';
+import { startServer, scratchDir } from './serve_process.mjs';
+import { PageClient, replies } from './page_client.mjs';
+
+const [binary, sourceDir] = process.argv.slice(2);
+const scratch = scratchDir('apprentice-http-');
+after(() => fs.rmSync(scratch, { recursive: true, force: true }));
+
+// Runs one server for the test's body, then stops it (exit 0 expected).
+async function withServer(args, body) {
+  const server = await startServer(binary, args);
+  try {
+    await body(server, new PageClient(server.address));
+  } finally {
+    assert.equal(await server.stop(), 0, server.output());
+  }
+}
+
+// A raw HTTP/1.1 request, for what fetch will not send (a foreign Host, a
+// path with dot segments): the status line and the body.
+function raw(port, request) {
+  return new Promise((resolve, reject) => {
+    const socket = net.connect(port, '127.0.0.1', () => socket.write(request));
+    let data = '';
+    socket.on('data', (d) => { data += d; });
+    socket.on('end', () => resolve({ status: Number(data.split(' ')[1]), text: data }));
+    socket.on('error', reject);
+  });
+}
+
+test('a public --host needs --token; a short token is refused', () => {
+  const open = spawnSync(binary, ['serve', '--host', '0.0.0.0', '--port', '0'], { encoding: 'utf8', timeout: 20000 });
+  assert.equal(open.status, 2);
+  assert.match(open.stderr, /--host 0\.0\.0\.0 lets other machines reach the page: give --token/);
+  const short = spawnSync(binary, ['serve', '--port', '0', '--token', 'abc'], { encoding: 'utf8', timeout: 20000 });
+  assert.equal(short.status, 2);
+  assert.match(short.stderr, /--token must be at least 16 characters/);
+});
+
+test('a port already taken is exit 3, saying so', async () => {
+  await withServer([], async (server) => {
+    const second = spawnSync(binary, ['serve', '--port', String(server.port)], { encoding: 'utf8', timeout: 20000 });
+    assert.equal(second.status, 3, second.stdout + second.stderr);
+    assert.match(second.stderr, new RegExp(`cannot listen on 127\\.0\\.0\\.1:${server.port} \\(is another program using the port\\?\\)`));
+  });
+});
+
+test('with a token, every request needs it: a wrong one is refused, the printed address sets a cookie', async () => {
+  const token = 'serve-test-token-0123456789';
+  await withServer(['--token', token], async (server, client) => {
+    assert.match(server.address, new RegExp('\\?token=' + token + '$'));
+    assert.equal((await client.request('GET', '/api/options')).status, 401);
+    assert.equal((await client.request('GET', '/')).status, 401);
+    const wrong = await client.request('GET', '/api/options', undefined, { 'X-Apprentice-Token': token + 'x' });
+    assert.equal(wrong.status, 401);
+    assert.match(wrong.body.error, /the token is wrong/);
+    assert.equal((await client.request('POST', '/api/sessions', { world: 'tidy-kitchen' },
+                                         { 'X-Apprentice-Token': 'nope' })).status, 401);
+    assert.equal((await client.request('GET', '/api/options', undefined, { 'X-Apprentice-Token': token })).status, 200);
+    const page = await client.request('GET', '/?token=' + token);
+    assert.equal(page.status, 302);
+    const cookie = page.headers.get('set-cookie');
+    assert.match(cookie, /HttpOnly; SameSite=Strict/);
+    const withCookie = await client.request('GET', '/', undefined, { Cookie: cookie.split(';')[0] });
+    assert.equal(withCookie.status, 200);
+    assert.match(withCookie.body, /<title>Teach apprentice<\/title>/);
+  });
+});
+
+test('a foreign Origin, a foreign Host, a cross-site fetch and a request without the CSRF header are refused', async () => {
+  await withServer([], async (server, client) => {
+    const foreign = await client.request('POST', '/api/sessions', { world: 'tidy-kitchen' }, { Origin: 'http://evil.example' });
+    assert.equal(foreign.status, 403);
+    assert.match(foreign.body.error, /another site \(http:\/\/evil\.example\) are refused/);
+    assert.equal((await client.request('GET', '/api/options', undefined, { Origin: 'http://evil.example' })).status, 403);
+    assert.equal((await client.request('GET', '/api/options', undefined, { 'Sec-Fetch-Site': 'cross-site' })).status, 403);
+    const noCsrf = await client.request('POST', '/api/sessions', { world: 'tidy-kitchen' }, { 'X-Apprentice-Request': '0' });
+    assert.equal(noCsrf.status, 403);
+    assert.match(noCsrf.body.error, /X-Apprentice-Request: 1/);
+    const form = await client.request('POST', '/api/sessions', 'world=tidy-kitchen',
+                                      { 'Content-Type': 'application/x-www-form-urlencoded' });
+    assert.equal(form.status, 415);
+    const rebound = await raw(server.port, 'GET /api/options HTTP/1.1\r\nHost: attacker.example:' + server.port + '\r\nConnection: close\r\n\r\n');
+    assert.equal(rebound.status, 403);
+    const same = await client.request('POST', '/api/sessions', { world: 'tidy-kitchen' }, { Origin: 'http://127.0.0.1:' + server.port });
+    assert.equal(same.status, 201);
+  });
+});
+
+test('limits: an oversized body, an oversized world, a reply too long, too many sessions', async () => {
+  await withServer(['--max-sessions', '2'], async (server, client) => {
+    const huge = await client.request('POST', '/api/sessions', { world: 'tidy-kitchen', padding: 'x'.repeat(400 * 1024) });
+    assert.equal(huge.status, 413);
+    const bigWorld = await client.request('POST', '/api/sessions', { upload: { name: 'big.yaml', yaml: '#'.repeat(300 * 1024) } });
+    assert.equal(bigWorld.status, 400);
+    assert.match(bigWorld.body.error, /big\.yaml: the world is larger than 256 KiB/);
+    const first = await client.start('tidy-kitchen');
+    const second = await client.start('playroom');
+    const third = await client.request('POST', '/api/sessions', { world: 'tidy-kitchen' });
+    assert.equal(third.status, 503);
+    assert.match(third.body.error, /already teaching 2 sessions/);
+    const asked = await first.question();
+    const long = await first.reply('a'.repeat(2001), asked.seq);
+    assert.equal(long.status, 413);
+    assert.match(long.body.error, /at most 2000 characters; this one has 2001/);
+    assert.equal((await first.reply('   ', asked.seq)).status, 400);
+    // A stale question number (answered in another tab) is refused, not misread.
+    assert.equal((await first.reply('tidy the kitchen', asked.seq + 5)).status, 409);
+    assert.equal((await first.reply('tidy the kitchen', asked.seq)).status, 200);
+    assert.equal((await first.reply('clear the table', asked.seq)).status, 409);
+    // A session that ends frees its place.
+    const stop = await second.question();
+    assert.equal((await second.reply('quit', stop.seq)).status, 200);
+    const end = await second.waitFor((e) => e.type === 'end');
+    assert.match(end.text, /^Stopped: 1 of 14 goal assertions holds, after 0 instructions\./);
+    const fourth = await client.start('tidy-kitchen');
+    first.close(); second.close(); fourth.close();
+  });
+});
+
+test('a session idle past --idle-seconds ends, keeping what it learned, and is forgotten later', async () => {
+  const store = path.join(scratch, 'idle.sqlite');
+  await withServer(['--idle-seconds', '1', '--knowledge', store], async (server, client) => {
+    const session = await client.start('tidy-kitchen', 'idle');
+    let asked = await session.question();
+    for (const line of ['tidy the kitchen', 'clear the table', 'plates go in the dishwasher, close it']) {
+      await session.reply(line, asked.seq);
+      asked = await session.question(asked.seq);
+    }
+    const end = await session.waitFor((e) => e.type === 'end', 0, 10000);
+    assert.match(end.text, /^Stopped: .*What you taught me is kept in the knowledge store "idle"\./);
+    assert.ok(session.events.some((e) => e.type === 'say' && e.text === 'No reply came for 1 second, so this session has ended.'));
+    session.close();
+    const deadline = Date.now() + 10000;
+    while ((await client.request('GET', '/api/sessions/' + session.id)).status !== 404)
+      assert.ok(Date.now() < deadline, 'the ended session was never forgotten');
+  });
+  const known = spawnSync(binary, ['knowledge', '--knowledge', store, '--json'], { encoding: 'utf8' });
+  assert.equal(known.status, 0, known.stderr);
+  assert.deepEqual(JSON.parse(known.stdout).goals.map((g) => g.text.includes('ceramic-plate')), [true]);
+});
+
+test('nothing a client sends names a path', async () => {
+  const outside = path.join(scratch, 'outside.sqlite');
+  await withServer([], async (server, client) => {
+    for (const world of ['../../../../etc/passwd', '/etc/passwd', 'tidy-kitchen.yaml', '../scenarios/tidy-kitchen']) {
+      const r = await client.request('POST', '/api/sessions', { world });
+      assert.equal(r.status, 404, world);
+      assert.match(r.body.error, /this server offers no world named .*; it offers dish-tower, /);
+    }
+    for (const store of [outside, '../outside', 'outside.sqlite']) {
+      const r = await client.request('POST', '/api/sessions', { world: 'tidy-kitchen', store });
+      assert.equal(r.status, 404, store);
+      assert.match(r.body.error, /no knowledge store named .*it has none/);
+    }
+    assert.equal(fs.existsSync(outside), false);
+    for (const domain of ['/etc/passwd', '../../../../etc/hosts', 'kitchen.pddl']) {
+      const yaml = `name: sneaky\ndomain: ${domain}\nplaces: []\nobjects: []\n`;
+      const r = await client.request('POST', '/api/sessions', { upload: { name: '../../etc/sneaky.yaml', yaml } });
+      assert.equal(r.status, 400, domain);
+      assert.match(r.body.error, /^sneaky\.yaml:2: an uploaded world must use one of the server's domains: \.\.\/domains\/kitchen\.pddl or \.\.\/domains\/kitchen-stacking\.pddl, not /);
+      assert.doesNotMatch(r.body.error, /root:/);
+    }
+    for (const route of ['/../../../etc/passwd', '/%2e%2e/%2e%2e/etc/passwd', '/app.js/../../../../etc/passwd',
+                         '/api/sessions/..%2f..%2fetc%2fpasswd/log', '/data/scenarios/tidy-kitchen.yaml', '/style.css%00.html']) {
+      const r = await raw(server.port, `GET ${route} HTTP/1.1\r\nHost: 127.0.0.1:${server.port}\r\nConnection: close\r\n\r\n`);
+      assert.ok(r.status === 404 || r.status === 400, route + ': ' + r.status);
+      assert.doesNotMatch(r.text, /root:|intent:/, route);
+    }
+  });
+});
+
+test('two sessions on one store, teaching at once, lose nothing', async () => {
+  const store = path.join(scratch, 'shared.sqlite');
+  const logs = path.join(scratch, 'study-logs');
+  let ids;
+  await withServer(['--knowledge', store, '--log-dir', logs], async (server, client) => {
+    const a = await client.start('tidy-kitchen', 'shared');
+    const b = await client.start('tidy-kitchen', 'shared');
+    const kitchen = replies(sourceDir, 'kitchen_replies.txt');
+    // a teaches the table; b, at the same time, the counter.
+    const counter = [kitchen[0], 'put away what is on the counter', ...kitchen.slice(14, 21), 'quit'];
+    const [endA, endB] = await Promise.all([a.teach([...kitchen.slice(0, 13), 'quit']), b.teach(counter)]);
+    assert.equal(endA.type, 'end');
+    assert.equal(endB.type, 'end');
+    ids = [a.id, b.id];
+    // --log-dir keeps each session's log as the page downloads it.
+    for (const s of [a, b]) {
+      const downloaded = await client.request('GET', `/api/sessions/${s.id}/log`);
+      assert.equal(fs.readFileSync(path.join(logs, s.id + '.jsonl'), 'utf8'), downloaded.body);
+    }
+    a.close(); b.close();
+  });
+  assert.deepEqual(fs.readdirSync(logs).sort(), ids.map((id) => id + '.jsonl').sort());
+  for (const id of ids) {
+    const lines = fs.readFileSync(path.join(logs, id + '.jsonl'), 'utf8').trim().split('\n').map((l) => JSON.parse(l));
+    assert.equal(lines[0].type, 'start');
+    assert.equal(lines.at(-1).type, 'end');
+    assert.ok(lines.every((l) => !('world' in l)), 'the log holds no drawings of the room');
+  }
+  const known = spawnSync(binary, ['knowledge', '--knowledge', store, '--json'], { encoding: 'utf8' });
+  assert.equal(known.status, 0, known.stderr);
+  const kinds = new Set(JSON.parse(known.stdout).goals.map((g) => /\(([a-z-]+)\)/.exec(g.object)[1]));
+  for (const kind of ['ceramic-plate', 'ketchup', 'pepsi-can', 'mug', 'coffee-grinder', 'newspaper'])
+    assert.ok(kinds.has(kind), kind + ' was lost: ' + [...kinds].join(', '));
+});
