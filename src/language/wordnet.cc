@@ -2,12 +2,14 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <charconv>
 #include <map>
 #include <mutex>
 
 #include <spdlog/spdlog.h>
 #include <wn.h>
 
+#include "util/file.h"
 #include "util/text.h"
 
 namespace apprentice::language {
@@ -20,6 +22,12 @@ constexpr std::size_t kMaxLemmaBytes = 200;
 // The library's global state, mirrored: whether wninit() succeeded and from
 // which directory. This and the lock are the process's only WordNet state,
 // kept as function-local statics because the C library's state is global.
+// Every noun synset's offset, ascending, and its size (WordNet::class_size).
+struct SynsetSizes {
+  std::vector<SynsetOffset> offsets;
+  std::vector<int> sizes;
+};
+
 struct Library {
   std::mutex mutex;
   bool open = false;
@@ -30,6 +38,9 @@ struct Library {
   std::string directory;  // "" = the environment or the compiled default
   bool saw_environment = false;
   std::optional<std::string> environment;  // WNSEARCHDIR before we touched it
+  // class_size's table, built once from the directory the library reads.
+  bool sizes_built = false;
+  SynsetSizes sizes;
 };
 
 Library& library() {
@@ -114,6 +125,10 @@ Result<WordNet> WordNet::open(const std::optional<std::filesystem::path>& dictio
                             (env ? std::string(env) : std::string("the library's default directory")));
     }
     lib.open = true;
+    if (wanted != lib.directory) {
+      lib.sizes_built = false;
+      lib.sizes = SynsetSizes{};
+    }
     lib.directory = wanted;
     spdlog::debug("wordnet: opened {}", wanted.empty() ? "the default database" : wanted);
   }
@@ -188,6 +203,109 @@ std::optional<Synset> WordNet::synset(SynsetOffset offset) const {
   }
   cache_->synsets.emplace(offset, result);
   return result;
+}
+
+namespace {
+
+// Each noun synset's size, from data.noun's pointer fields: a line is
+// "offset lex_filenum ss_type w_cnt (word lex_id)* p_cnt (symbol offset pos
+// source/target)* ... | gloss", w_cnt in hex; "~" points to a hyponym. The
+// synsets come in the order of their offsets, so they are found again by
+// binary search.
+SynsetSizes read_sizes(const std::string& directory) {
+  SynsetSizes out;
+  InputLimits limits;  // data.noun is 15 MB, its lines short
+  auto read = read_input_file(directory + "/data.noun", limits);
+  if (!read) return out;
+  const std::string& text = *read;
+  std::vector<std::size_t> first_child;  // per synset, into targets
+  std::vector<SynsetOffset> targets;
+  std::size_t at = 0;
+  // The next space-separated field before `end` ("" at the end).
+  auto field = [&](std::size_t end) -> std::string_view {
+    while (at < end && text[at] == ' ') ++at;
+    const std::size_t start = at;
+    while (at < end && text[at] != ' ') ++at;
+    return std::string_view(text).substr(start, at - start);
+  };
+  auto number = [](std::string_view f, int base) {
+    long value = 0;
+    std::from_chars(f.data(), f.data() + f.size(), value, base);
+    return value;
+  };
+  while (at < text.size()) {
+    std::size_t line_end = text.find('\n', at);
+    if (line_end == std::string::npos) line_end = text.size();
+    if (text[at] != ' ') {  // not the licence at the top
+      const std::size_t end = std::min(line_end, text.find('|', at));
+      out.offsets.push_back(number(field(end), 10));
+      first_child.push_back(targets.size());
+      field(end);  // lex_filenum
+      field(end);  // ss_type
+      const long words = number(field(end), 16);
+      for (long i = 0; i < 2 * words; ++i) field(end);
+      const long pointers = number(field(end), 10);
+      for (long i = 0; i < pointers && at < end; ++i) {
+        std::string_view symbol = field(end), target = field(end), pos = field(end);
+        field(end);  // source/target
+        if (symbol == "~" && pos == "n") targets.push_back(number(target, 10));
+      }
+    }
+    at = line_end + 1;
+  }
+  first_child.push_back(targets.size());
+  const std::size_t n = out.offsets.size();
+  if (!std::is_sorted(out.offsets.begin(), out.offsets.end())) {
+    out.offsets.clear();
+    return out;
+  }
+  // Children as indexes, then sizes bottom-up by a depth-first walk.
+  std::vector<std::size_t> children(targets.size());
+  for (std::size_t t = 0; t < targets.size(); ++t)
+    children[t] = static_cast<std::size_t>(std::lower_bound(out.offsets.begin(), out.offsets.end(), targets[t]) -
+                                           out.offsets.begin());
+  out.sizes.assign(n, 0);
+  std::vector<std::pair<std::size_t, std::size_t>> stack;  // synset, next child
+  for (std::size_t root = 0; root < n; ++root) {
+    if (out.sizes[root] != 0) continue;
+    stack.push_back({root, first_child[root]});
+    out.sizes[root] = -1;  // on the stack
+    while (!stack.empty()) {
+      auto& [synset, next] = stack.back();
+      if (next < first_child[synset + 1]) {
+        const std::size_t child = children[next++];
+        if (child < n && out.sizes[child] == 0) {
+          out.sizes[child] = -1;
+          stack.push_back({child, first_child[child]});
+        }
+        continue;
+      }
+      int size = 1;
+      for (std::size_t c = first_child[synset]; c < first_child[synset + 1]; ++c)
+        if (children[c] < n && out.sizes[children[c]] > 0) size += out.sizes[children[c]];
+      out.sizes[synset] = size;
+      stack.pop_back();
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+int WordNet::class_size(SynsetOffset offset) const {
+  Library& lib = library();
+  std::lock_guard lock(lib.mutex);
+  if (!lib.open) return 0;
+  if (!lib.sizes_built) {
+    const char* directory = SetSearchdir();
+    lib.sizes = read_sizes(directory ? directory : "");
+    lib.sizes_built = true;
+    spdlog::debug("wordnet: class sizes of {} noun synsets from {}", lib.sizes.offsets.size(), directory ? directory : "?");
+  }
+  const std::vector<SynsetOffset>& offsets = lib.sizes.offsets;
+  auto found = std::lower_bound(offsets.begin(), offsets.end(), offset);
+  if (found == offsets.end() || *found != offset) return 0;
+  return std::max(lib.sizes.sizes[static_cast<std::size_t>(found - offsets.begin())], 1);
 }
 
 bool WordNet::has_noun(std::string_view lemma) const { return !noun_senses(lemma).empty(); }

@@ -61,6 +61,12 @@ class WordNet {
   // The synset at an offset of data.noun. Pass only offsets WordNet gave
   // (noun_senses, a Synset's pointers): the C library trusts them.
   std::optional<Synset> synset(SynsetOffset offset) const;
+  // How many noun synsets a class holds: itself and every synset below it
+  // by hyponymy (one under two hypernyms counts in each); 1 for a leaf, 0
+  // for an offset WordNet lacks. Read from data.noun once per process, on
+  // the first call (about a tenth of a second), since walking a large class
+  // synset by synset would read tens of thousands of them.
+  int class_size(SynsetOffset offset) const;
   bool has_noun(std::string_view lemma) const;
   bool has_verb(std::string_view lemma) const;
   // In WordNet under any part of speech, directly or through morphology.

@@ -16,6 +16,8 @@ fs::path scenario_path(std::string_view name) {
 
 fs::path corpus_path() { return shared_path("data/stars-tidy-kitchen/goal_responses.jsonl"); }
 
+fs::path built_vectors_path() { return fs::path(APPRENTICE_BUILD_DIR) / "vectors" / "glove-6b-100d.vectors"; }
+
 bool have_corpus() { return fs::exists(corpus_path()); }
 
 bool in_ci() {

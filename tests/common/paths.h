@@ -21,6 +21,10 @@ std::filesystem::path scenario_path(std::string_view name);
 std::filesystem::path corpus_path();
 bool have_corpus();
 
+// The word vectors the build converted (build/vectors/; absent when the
+// npm packages were not installed).
+std::filesystem::path built_vectors_path();
+
 // Whether the environment says this is a CI run (CI set to "true" or "1").
 bool in_ci();
 
@@ -40,3 +44,15 @@ bool in_ci();
 
 // The STARS corpus of recorded GPT-3 responses, as above.
 #define SKIP_WITHOUT_CORPUS() APPRENTICE_REQUIRE_SHARED(::apprentice::testing::corpus_path())
+
+// Skips the test when the build has no word vectors (scripts/install-deps.sh
+// was not run before the build); fails it instead under CI=true, where
+// install-deps always runs.
+#define APPRENTICE_REQUIRE_VECTORS()                                                                    \
+  do {                                                                                                  \
+    const ::std::filesystem::path apprentice_vectors_ = ::apprentice::testing::built_vectors_path();    \
+    if (!::std::filesystem::exists(apprentice_vectors_)) {                                              \
+      if (::apprentice::testing::in_ci()) FAIL() << "CI=true but the build has no " << apprentice_vectors_; \
+      GTEST_SKIP() << "no " << apprentice_vectors_ << " (run scripts/install-deps.sh, then build)";     \
+    }                                                                                                   \
+  } while (0)

@@ -1,0 +1,114 @@
+// Deciding where a thing goes from what several knowledge sources propose.
+//
+// Each source proposes destinations for one thing, each with the source's
+// own probability that the thing goes there: the agent's memory of the
+// kind, the class rules that cover it (induced, the person's, an LLM's
+// summary), its likeness to the things taught (WordNet's hierarchy and the
+// word vectors), an LLM's placement, later a fleet's prior. The agent
+// combines them (combine) and acts alone when the combined belief is high
+// enough; otherwise it asks one yes/no question that shows its evidence, or,
+// when nothing is likely, where the thing goes (decide).
+//
+// The combination treats the sources as independent experts over the same
+// set of places (a product of their distributions, each raised to a weight
+// that discounts sources which share their evidence): a source's proposals
+// for some destinations leave the rest of its belief spread evenly over the
+// places it did not name. Calibrated on data: docs/benchmarks.md.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "knowledge/preferences.h"
+
+namespace apprentice {
+
+enum class ProposalSource {
+  kMemory,        // the goal learned for this very kind
+  kSimilarity,    // likeness to the kinds taught: WordNet's hierarchy (the analogy of transfer.h) and vectors
+  kInducedRule,   // a class rule induced from the examples
+  kPersonRule,    // a class rule the person said
+  kLlmPlacement,  // the LLM placed the thing
+  kLlmRule,       // a class rule read from the LLM's summary
+  kFleet,         // other robots' knowledge
+};
+// "memory", "similarity", "induced rule", "person's rule", "llm placement",
+// "llm summary", "fleet".
+std::string_view proposal_source_name(ProposalSource source);
+
+struct DestinationProposal {
+  Destination destination;
+  // The source's probability that the thing goes there, in (0, 1].
+  double confidence = 0;
+  ProposalSource source = ProposalSource::kSimilarity;
+  // The kinds taught that support it, nearest first ("banana", "apple"):
+  // what the question shows ("with the banana and the apple").
+  std::vector<std::string> evidence;
+  // The class rule it came from, when one did: a "no" becomes an exception
+  // to it.
+  std::optional<ClassRule> rule;
+  // One line for logs and reports: "edible fruit, like the banana and the
+  // apple".
+  std::string reason;
+};
+
+// The combined belief in one destination.
+struct Belief {
+  Destination destination;
+  double probability = 0;
+  // The proposals for it, most confident first.
+  std::vector<DestinationProposal> support;
+};
+
+struct DecisionPolicy {
+  // Acts alone when the best destination's combined probability is at least
+  // this.
+  double act_at = 0.9;
+  // Below act_at, asks yes/no about the best destination when its
+  // probability is at least this; else asks where the thing goes.
+  double confirm_at = 0.25;
+  // Each source's weight in the product (its exponent): 1 trusts it as an
+  // independent expert, less discounts it. A source not named weighs 1.
+  std::map<ProposalSource, double> weights;
+  double weight(ProposalSource source) const;
+};
+
+// The combined belief over the destinations proposed, most probable first.
+// `place_count` is how many places the thing could go to in this world (at
+// least the number of distinct destinations proposed): the belief a source
+// did not give to the destinations it named is spread over the rest, and a
+// place no source names keeps its share of the total (so a lone proposal at
+// 0.5 among four places combines to 0.5, not 1). A source's proposals for
+// one destination are merged (the most confident kept), and a source whose
+// proposals sum past 1 is scaled down to 1. Empty when nothing is proposed.
+std::vector<Belief> combine(std::span<const DestinationProposal> proposals, std::size_t place_count,
+                            const DecisionPolicy& policy);
+
+struct Decision {
+  enum class Kind {
+    kAct,       // confident: act alone
+    kConfirm,   // in doubt: ask yes/no about `destination`, showing `support`
+    kAskWhere,  // nothing is likely: ask where the thing goes
+  };
+  Kind kind = Kind::kAskWhere;
+  // The most probable destination (kAct, kConfirm); nullopt for kAskWhere
+  // when nothing was proposed.
+  std::optional<Destination> destination;
+  double confidence = 0;
+  std::vector<DestinationProposal> support;
+  // The whole belief, most probable first, for reports and the next
+  // question after a "no".
+  std::vector<Belief> beliefs;
+};
+
+Decision decide(std::span<const DestinationProposal> proposals, std::size_t place_count, const DecisionPolicy& policy);
+
+// The proposals without those for a destination the teacher refused for
+// this thing (after a "no", the next question is about what is left).
+std::vector<DestinationProposal> without_destination(std::span<const DestinationProposal> proposals, const Destination& refused);
+
+}  // namespace apprentice

@@ -1,0 +1,59 @@
+// Proposing a destination for a new thing by its likeness to the things
+// taught: the source "similarity" of knowledge/decision.h. It generalizes
+// the agent's analogies across worlds (agent/transfer.h) from WordNet's
+// hierarchy to the word vectors, which know brands and compounds WordNet
+// lacks ("Skittles", "Kleenex tissue box"), and weighs what the names share:
+// their heads ("fork" and "fork") and their modifiers ("plastic" and
+// "plastic", "muddy" and "soiled").
+//
+// For each destination it scores the thing by features of its examples:
+//   name      the highest cosine of the whole names' vectors
+//   mean      the mean of those cosines
+//   head      the highest cosine of the heads' vectors
+//   modifier  the highest cosine of the modifiers' vectors (both have some)
+//   shared    1 when some example has one of its modifiers
+//   same_head 1 when some example has its head
+//   class     the highest cosine of its vector with the name of a class
+//             induced for the destination ("candy" for the Reese's and the
+//             Life Savers), times that rule's confidence
+// and proposes the softmax of the weighted sum over the destinations. The
+// weights are fitted on the examples of the TidyBot benchmark's
+// development half, each left out in turn (docs/benchmarks.md).
+#pragma once
+
+#include <array>
+#include <span>
+#include <vector>
+
+#include "knowledge/concepts.h"
+#include "knowledge/decision.h"
+#include "knowledge/induction.h"
+
+namespace apprentice {
+
+inline constexpr std::size_t kLikenessFeatures = 7;
+
+struct LikenessWeights {
+  // In the order of the features above.
+  std::array<double, kLikenessFeatures> weights = {4.0, 12.0, 1.0, 1.5, 1.0, 1.0, 4.0};
+};
+
+// Each destination's features for one thing (the rows of the fit). `rules`
+// are the rules induced from the same examples, for the class feature; its
+// class names' vectors come from `concepts`.
+struct LikenessFeatures {
+  Destination destination;
+  std::array<double, kLikenessFeatures> values{};
+  // Its examples, most like the thing first (by the whole names' cosine).
+  std::vector<std::string> nearest;
+};
+std::vector<LikenessFeatures> likeness_features(std::span<const PlacementExample> examples, const KindProfile& thing,
+                                                std::span<const ClassRule> rules, const ConceptSource& concepts);
+
+// The proposals, one per destination with examples, most probable first;
+// none without examples.
+std::vector<DestinationProposal> likeness_proposals(std::span<const PlacementExample> examples, const KindProfile& thing,
+                                                    std::span<const ClassRule> rules, const ConceptSource& concepts,
+                                                    const LikenessWeights& weights = {});
+
+}  // namespace apprentice

@@ -1,0 +1,97 @@
+// The agent's ConceptSource over the real WordNet (and the word vectors when
+// the build has them): how names are read, what classes they get, and the
+// preference model's induction on them ("fruit", not "food").
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "agent/concept_source.h"
+#include "common/paths.h"
+#include "knowledge/induction.h"
+
+namespace apprentice {
+namespace {
+
+using ::testing::ElementsAre;
+
+class ConceptSourceTest : public ::testing::Test {
+ protected:
+  language::Lexicon lexicon_ = language::Lexicon::open_default();
+  LexicalConcepts concepts_{lexicon_, nullptr};
+
+  void SetUp() override {
+    if (!lexicon_.has_wordnet()) GTEST_SKIP() << "no WordNet database";
+  }
+  static Destination on(const std::string& place) { return Destination{"on", GoalTemplateArgument{false, place, {}}, {}}; }
+  static Destination in(const std::string& place) { return Destination{"in", GoalTemplateArgument{false, place, {}}, {}}; }
+  PlacementExample example(const std::string& kind, Destination d) { return {concepts_.profile(kind), std::move(d)}; }
+};
+
+TEST(NameWords, ANameIsReadAsAPersonWritesIt) {
+  auto none = [](std::string_view) { return false; };
+  auto tshirt = [](std::string_view w) { return w == "t-shirt"; };
+  EXPECT_THAT(name_words("The Los Angeles Times newspaper", none),
+              ElementsAre("the", "los", "angeles", "times", "newspaper"));
+  EXPECT_THAT(name_words("Rubik's cube", none), ElementsAre("rubik", "cube"));
+  EXPECT_THAT(name_words("decorative pillow 2", none), ElementsAre("decorative", "pillow"));
+  EXPECT_THAT(name_words("ceramic-plate", none), ElementsAre("ceramic", "plate"));
+  EXPECT_THAT(name_words("Disney t-shirt", tshirt), ElementsAre("disney", "t-shirt"));
+  EXPECT_THAT(name_words("Mr. Clean Magic Eraser", none), ElementsAre("mr", "clean", "magic", "eraser"));
+}
+
+TEST_F(ConceptSourceTest, TheHeadIsTheLongestEndingWordNetKnows) {
+  KindProfile chips = concepts_.profile("Ruffles sour cream potato chips");
+  EXPECT_EQ(chips.head, "potato chips");
+  EXPECT_THAT(chips.modifiers, ElementsAre("ruffles", "sour", "cream"));
+  ASSERT_FALSE(chips.classes.empty());
+  KindProfile fork = concepts_.profile("stainless steel fork");
+  EXPECT_EQ(fork.head, "fork");
+  EXPECT_THAT(fork.modifiers, ElementsAre("stainless", "steel"));
+  KindProfile tuna = concepts_.profile("case of canned tuna");
+  EXPECT_EQ(tuna.head, "tuna");
+  EXPECT_THAT(tuna.modifiers, ElementsAre("case", "canned"));
+  KindProfile unknown = concepts_.profile("Skittles");
+  EXPECT_EQ(unknown.head, "skittles");
+  // WordNet's "skittles" is the game; that is a class, but no food.
+  KindProfile plate = concepts_.profile("ceramic-plate");
+  EXPECT_EQ(plate.head, "plate");
+  EXPECT_THAT(plate.modifiers, ElementsAre("ceramic"));
+}
+
+TEST_F(ConceptSourceTest, ClassesAreNearestFirstAndLargerHigherUp) {
+  KindProfile banana = concepts_.profile("banana");
+  ASSERT_GT(banana.classes.size(), 4u);
+  EXPECT_EQ(banana.classes.front().depth, 0);
+  const ConceptClass* fruit = nullptr;
+  const ConceptClass* food = nullptr;
+  for (const ConceptClass& c : banana.classes) {
+    if (c.name == "edible fruit") fruit = &c;
+    if (c.name == "food" && c.id != "" && (food == nullptr || c.depth < food->depth)) food = &c;
+  }
+  ASSERT_NE(fruit, nullptr);
+  ASSERT_NE(food, nullptr);
+  EXPECT_LT(fruit->depth, food->depth);
+  EXPECT_LT(fruit->size, food->size);
+  EXPECT_GT(fruit->size, 50);
+}
+
+TEST_F(ConceptSourceTest, TheBananaAndTheAppleGiveFruitNotFood) {
+  std::vector<PlacementExample> examples = {example("banana", on("coffee-table")), example("apple", on("coffee-table")),
+                                            example("Lego brick", in("storage-box")),
+                                            example("toy car", in("storage-box"))};
+  std::vector<ClassRule> rules = induce_rules(examples, GoalScope{});
+  const ClassRule* fruit = nullptr;
+  for (const ClassRule& r : rules)
+    if (r.destination == on("coffee-table") && fruit == nullptr) fruit = &r;
+  ASSERT_NE(fruit, nullptr);
+  EXPECT_EQ(fruit->class_name, "edible fruit");
+  EXPECT_THAT(fruit->evidence, ElementsAre("banana", "apple"));
+  // An orange goes with them, and a teddy bear does not.
+  auto orange = rule_proposals(rules, concepts_.profile("orange"), RuleSource::kInduced);
+  ASSERT_FALSE(orange.empty());
+  EXPECT_EQ(orange.front().destination, on("coffee-table"));
+  auto bear = rule_proposals(rules, concepts_.profile("teddy bear"), RuleSource::kInduced);
+  for (const DestinationProposal& p : bear) EXPECT_NE(p.destination, on("coffee-table"));
+}
+
+}  // namespace
+}  // namespace apprentice
