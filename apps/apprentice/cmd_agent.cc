@@ -44,8 +44,9 @@ llm::LlmOptions llm_options(const LlmFlags& flags) {
   llm::LlmOptions options;
   options.model = flags.model;
   options.api_key = flags.api_key;
-  if (flags.timeout_ms) options.request_timeout = std::chrono::milliseconds(*flags.timeout_ms);
-  if (flags.connect_timeout_ms) options.connect_timeout = std::chrono::milliseconds(*flags.connect_timeout_ms);
+  options.seed = flags.seed;
+  if (flags.timeout_ms) options.transport.request_timeout = std::chrono::milliseconds(*flags.timeout_ms);
+  if (flags.connect_timeout_ms) options.transport.connect_timeout = std::chrono::milliseconds(*flags.connect_timeout_ms);
   return options;
 }
 
@@ -64,7 +65,8 @@ Status write_file(const std::filesystem::path& path, const std::string& text) {
 // Printed under the table: what its columns mean where that is not plain.
 const char* const kTableLegend =
     "Relevant%: yes answers over yes/no questions; without an instructor (search4+llm), the share of the LLM's\n"
-    "goals adopted that were the intended ones. --: the condition asks the LLM nothing, as in the paper.\n";
+    "goals adopted that were the intended ones. --: the condition asks the LLM nothing, as in the paper.\n"
+    "n/a: it asked the LLM, but no yes/no question came of it (without an instructor: no goal was adopted).\n";
 
 std::string skipped_hint(const std::vector<std::string>& skipped) {
   std::string names;
@@ -72,6 +74,22 @@ std::string skipped_hint(const std::vector<std::string>& skipped) {
   return "Skipped for want of an LLM: " + names +
          ".\nTo run them, pass --llm SPEC or set APPRENTICE_LLM: openai:http://127.0.0.1:8080/v1 for any "
          "OpenAI-compatible\nserver, or corpus:FILE for recorded responses (see docs/llm.md).\n";
+}
+
+// Where the LLM answers came from, for the table's header: one source for
+// all, or each condition's own (a cassette each on replay).
+std::string llm_sources(const std::vector<ConditionResult>& results) {
+  std::vector<const ConditionResult*> asked;
+  for (const ConditionResult& r : results)
+    if (!r.llm_description.empty()) asked.push_back(&r);
+  if (asked.empty()) return "";
+  const bool one = std::all_of(asked.begin(), asked.end(),
+                               [&](const ConditionResult* r) { return r->llm_description == asked.front()->llm_description; });
+  if (one) return "; LLM answers from " + asked.front()->llm_description;
+  std::string out = "; LLM answers from";
+  for (size_t i = 0; i < asked.size(); ++i)
+    out += std::string(i == 0 ? " " : ", ") + asked[i]->llm_description + " (" + asked[i]->condition + ")";
+  return out;
 }
 
 // What the conditions carried over from the knowledge they started from:
@@ -142,11 +160,7 @@ CommandResult run_experiment(const ExperimentOptions& options, const std::string
     if (request.options.knowledge_in)
       out << "; every condition starts from the knowledge in " << options.knowledge_in << " ("
           << request.options.knowledge_in->goals.size() << " goals, " << request.options.knowledge_in->rules.size() << " rules)";
-    for (const ConditionResult& r : results)
-      if (!r.llm_description.empty()) {
-        out << "; LLM answers from " << r.llm_description;
-        break;
-      }
+    out << llm_sources(results);
     out << "\n" << format_results_table(results, scenario->reference == "table3") << "\n" << kTableLegend;
     if (request.options.knowledge_in && !results.empty()) print_transfer(results, out);
     if (!run->skipped.empty()) out << skipped_hint(run->skipped);

@@ -20,6 +20,7 @@ struct LlmFlags {
   std::optional<std::string> api_key;
   std::optional<int> timeout_ms;
   std::optional<int> connect_timeout_ms;
+  std::optional<int> seed;  // --llm-seed
   // Go on without the LLM when its server cannot be reached (else exit 4).
   bool optional = false;
   std::string goal_repair = "all";  // --goal-repair

@@ -24,6 +24,7 @@
 #include "cmd_core.h"
 #include "cmd_interpret.h"
 #include "cmd_serve.h"
+#include "llm/factory.h"
 #include "util/log.h"
 #include "util/spelling.h"
 #include "util/text.h"
@@ -79,17 +80,12 @@ CLI::Validator positive_number() {
 }
 
 // --llm names a backend before anything runs, so that a slip is blamed on
-// the flag, not on the first condition that would have used it. The
-// backends themselves are checked by llm::make_llm_client.
+// the flag, not on the first condition that would have used it. The llm
+// module reads the spec (llm::check_llm_spec), so the two cannot differ.
 void check_llm_flag(const LlmFlags& flags) {
-  const std::string_view spec = trim(flags.spec);
-  if (spec.empty()) return;
-  const std::string_view scheme = spec.substr(0, spec.find(':'));
-  for (std::string_view known : {"openai", "llama", "replay", "record", "corpus"})
-    if (scheme == known) return;
-  throw CLI::ValidationError("--llm", apprentice::quoted(spec) +
-                                          " is not an LLM backend: expected openai:URL, llama:URL, replay:FILE, "
-                                          "record:FILE,SPEC or corpus:FILE (docs/llm.md)");
+  if (trim(flags.spec).empty()) return;
+  if (auto checked = llm::check_llm_spec(flags.spec); !checked)
+    throw CLI::ValidationError("--llm", checked.error().message);
 }
 
 // The subcommands a user can name, for "did you mean".
@@ -228,16 +224,18 @@ int run(int argc, char** argv) {
   on_run(export_cmd, [&] { result = run_export_pddl(export_pddl, std::cout); });
 
   auto add_llm_flags = [](CLI::App* cmd, LlmFlags& flags) {
-    cmd->add_option("--llm", flags.spec,
-                    "LLM backend: openai:URL, openai-chat:URL, llama:URL, replay:FILE, record:FILE,SPEC, "
-                    "corpus:FILE[,condition=NAME|,pool=all] (default: $APPRENTICE_LLM)");
+    cmd->add_option("--llm", flags.spec, "LLM backend: " + llm::llm_spec_forms() + " (default: $APPRENTICE_LLM)");
     cmd->add_option("--llm-model", flags.model, "Model name sent to the LLM server (default: $OPENAI_MODEL)");
     cmd->add_option("--llm-api-key", flags.api_key, "API key for the LLM server (default: $OPENAI_API_KEY)");
-    cmd->add_option("--llm-timeout-ms", flags.timeout_ms, "Total time allowed for one LLM request (default 30000)")
+    cmd->add_option("--llm-timeout-ms", flags.timeout_ms,
+                    "Time allowed for one LLM request in all, connecting, the server's work and its answer; "
+                    "not retried when it runs out (default 30000)")
         ->check(whole_number_in(1, std::numeric_limits<int>::max()));
     cmd->add_option("--llm-connect-timeout-ms", flags.connect_timeout_ms,
-                    "Time allowed to connect to the LLM server (default 5000)")
+                    "Time allowed to connect to the LLM server, within --llm-timeout-ms (default 5000)")
         ->check(whole_number_in(1, std::numeric_limits<int>::max()));
+    cmd->add_option("--llm-seed", flags.seed, "Seed sent to the LLM server with every request (servers that take one)")
+        ->check(whole_number_in(0, std::numeric_limits<int>::max()));
     cmd->add_flag("--llm-optional", flags.optional,
                   "Go on without the LLM when its server cannot be reached or fails (else exit 4)");
     cmd->add_option("--goal-repair", flags.goal_repair,

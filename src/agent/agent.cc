@@ -266,11 +266,33 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::work_on_subtask() {
   return {};
 }
 
+namespace {
+
+// The things (not furniture) on or in `places`.
+size_t items_at(const World& world, const std::vector<ObjectId>& places) {
+  size_t count = 0;
+  for (PredicateId predicate : {world.vocabulary.on, world.vocabulary.in})
+    for (ObjectId place : places)
+      for (const Fact& f : world.state.facts_with_second(predicate, 2, place))
+        if (world.universe->info(f.args[0]).kind == ObjectKind::kItem) ++count;
+  return count;
+}
+
+}  // namespace
+
 void TaskLearningAgent::Session::finish_subtask() {
   const Current& c = current();
-  if (learning_)
-    say("There is nothing " + std::string(c.mode == Current::Mode::kFirstObject ? "" : "left ") + c.relation + " " +
-        language::spoken_places(world(), c.places) + ".");
+  if (learning_) {
+    // Objects the agent could not tidy are still there: saying "nothing
+    // left" would be false (issue 25: 30 of 30 were still on the table).
+    const long long remaining = static_cast<long long>(items_at(world(), c.places));
+    if (remaining == 0)
+      say("There is nothing " + std::string(c.mode == Current::Mode::kFirstObject ? "" : "left ") + c.relation + " " +
+          language::spoken_places(world(), c.places) + ".");
+    else
+      say("I could not " + c.verb + " " + (remaining == 1 ? "1 object" : std::to_string(remaining) + " objects") +
+          " still " + c.relation + " " + language::spoken_places(world(), c.places) + ".");
+  }
   progress_.current = std::move(progress_.queued);
   progress_.queued.reset();
 }

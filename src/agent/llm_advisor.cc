@@ -30,6 +30,8 @@ void LlmAdvisor::account(const llm::Retrieval& retrieval, const llm::LlmUsage& b
   }
   if (options_.breaker_threshold > 0 && consecutive_failures_ >= options_.breaker_threshold) {
     stopped_ = true;
+    stopped_after_calls_ = static_cast<int>(after.queries);
+    stop_error_ = retrieval.failure;
     spdlog::warn("the LLM failed {} times in a row: it is not asked again in this run ({})", consecutive_failures_,
                  client_->describe());
   }
@@ -60,8 +62,12 @@ std::vector<llm::Candidate> LlmAdvisor::actions(const llm::TaskContext& context,
 
 LlmTotals LlmAdvisor::totals() const {
   const llm::LlmUsage& usage = client_->usage();
-  return LlmTotals{static_cast<int>(usage.queries), static_cast<long>(usage.prompt_tokens + usage.completion_tokens),
-                   static_cast<int>(usage.failures), stopped_};
+  return LlmTotals{static_cast<int>(usage.queries),
+                   static_cast<long>(usage.prompt_tokens + usage.completion_tokens),
+                   static_cast<int>(usage.failures),
+                   stopped_,
+                   stopped_after_calls_,
+                   stop_error_};
 }
 
 }  // namespace apprentice

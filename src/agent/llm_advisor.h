@@ -40,6 +40,10 @@ struct LlmTotals {
   long tokens = 0;
   int failures = 0;        // queries that failed
   bool stopped = false;    // the breaker tripped, or the LLM was disabled
+  // When the breaker tripped: the queries made until then (the last of them
+  // failed) and the last failure. Unset when it did not trip.
+  std::optional<int> stopped_after_calls;
+  std::optional<Error> stop_error;
 };
 
 class LlmAdvisor {
@@ -75,6 +79,8 @@ class LlmAdvisor {
   int consecutive_failures_ = 0;
   bool warned_ = false;
   bool stopped_ = false;
+  std::optional<int> stopped_after_calls_;
+  std::optional<Error> stop_error_;
   std::optional<Error> last_failure_;
 };
 

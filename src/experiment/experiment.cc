@@ -157,12 +157,15 @@ Result<ConditionResult> run_condition(const Scenario& scenario, const Condition&
   if (condition.llm && condition.instruction && result.counts.yes_no > 0)
     result.relevance = 100.0 * result.counts.yes / result.counts.yes_no;
   if (condition.llm && !condition.instruction) result.relevance = silent_relevance(scenario, report->objects);
+  result.uses_llm = condition.llm;
   if (advisor) {
     LlmTotals totals = advisor->totals();
     result.llm_calls = totals.calls;
     result.llm_tokens = totals.tokens;
     result.llm_failures = totals.failures;
     result.llm_stopped = totals.stopped;
+    result.llm_stopped_after_calls = totals.stopped_after_calls;
+    if (totals.stop_error) result.llm_stop_error = totals.stop_error->describe();
     result.llm_ensemble = advisor->pools_sources();
     result.llm_description = advisor->describe();
   }
@@ -196,6 +199,13 @@ std::string percent(std::optional<double> value) {
   return buffer;
 }
 
+// Relevant%: "--" only for a condition that asks the LLM nothing, as in the
+// paper; "n/a" for one that asked it but had nothing to measure.
+std::string relevance_cell(const ConditionResult& r) {
+  if (r.relevance) return percent(r.relevance);
+  return r.uses_llm ? "n/a" : "--";
+}
+
 std::string row_text(const char* format, auto... args) {
   char buffer[256];
   std::snprintf(buffer, sizeof buffer, format, args...);
@@ -203,6 +213,15 @@ std::string row_text(const char* format, auto... args) {
 }
 
 }  // namespace
+
+std::string degraded_why(const ConditionResult& r) {
+  if (!r.degraded()) return "";
+  if (r.llm_failures == 0) return "the LLM could not be reached and was not asked";
+  std::string why = "the LLM failed " + std::to_string(r.llm_failures) + " quer" + (r.llm_failures == 1 ? "y" : "ies");
+  if (r.llm_stopped) why += " and was not asked again";
+  if (r.llm_stopped_after_calls) why += " after query " + std::to_string(*r.llm_stopped_after_calls);
+  return why;
+}
 
 std::string format_results_table(const std::vector<ConditionResult>& results, bool beside_paper) {
   // The label column fits "ensemble" only when a row needs it, so that other
@@ -219,14 +238,9 @@ std::string format_results_table(const std::vector<ConditionResult>& results, bo
     std::string objects = std::to_string(r.objects_done) + "/" + std::to_string(r.objects_total);
     out += row_text("%-18s %-*s %11s %9s %9s %8d %7d %7d %12llu %9d %9.1f\n", name.c_str(), label,
                     r.llm_ensemble ? "ensemble" : "ours", percent(r.completion_rate).c_str(), objects.c_str(),
-                    percent(r.relevance).c_str(), r.counts.instructions, r.counts.words, r.counts.yes_no,
+                    relevance_cell(r).c_str(), r.counts.instructions, r.counts.words, r.counts.yes_no,
                     static_cast<unsigned long long>(r.search_nodes), r.llm_calls, r.wall_ms);
-    if (r.degraded())
-      notes += "* " + r.condition + ": degraded, the LLM " +
-               (r.llm_failures > 0 ? "failed " + std::to_string(r.llm_failures) + " quer" +
-                                         (r.llm_failures == 1 ? "y" : "ies")
-                                   : std::string("could not be reached")) +
-               (r.llm_stopped ? " and was not asked again" : "") + "\n";
+    if (r.degraded()) notes += "* " + r.condition + ": degraded, " + degraded_why(r) + "\n";
     // An ensemble of runs is not what the paper's agent had: not set beside it.
     if (!beside_paper || r.llm_ensemble) continue;
     if (auto paper = paper_row(r.condition))

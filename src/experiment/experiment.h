@@ -34,14 +34,20 @@ struct ConditionResult {
   DialogueCounts counts;
   // Yes answers over yes/no questions, in percent. Without an instructor:
   // the share of adopted LLM goals that are the intended ones. Unset when
-  // the condition uses no LLM (the paper's "--").
+  // the condition uses no LLM (the paper's "--"), or when it asked the LLM
+  // but nothing came of it to measure (no yes/no question; no goal adopted).
   std::optional<double> relevance;
+  bool uses_llm = false;  // the condition asks an LLM (Relevant% "n/a" rather than "--")
   int llm_calls = 0;
   long llm_tokens = 0;
   // LLM queries that failed (server down, hung, garbled); a row with any is
   // degraded: its figures are not what the LLM would have given.
   int llm_failures = 0;
   bool llm_stopped = false;   // the LLM was not asked after repeated failures, or at all
+  // The breaker's stop: the queries made when it tripped, and the failure
+  // that tripped it (unset when it did not trip).
+  std::optional<int> llm_stopped_after_calls;
+  std::string llm_stop_error;
   bool llm_ensemble = false;  // the answers pooled several sources (corpus pool=all)
   std::uint64_t search_nodes = 0;
   double wall_ms = 0;
@@ -51,6 +57,12 @@ struct ConditionResult {
 
   bool degraded() const { return llm_failures > 0 || llm_stopped; }
 };
+
+// Why a degraded row is degraded, as the table's note and the JSON's
+// "degraded_why" both say it: "the LLM failed 3 queries and was not asked
+// again after query 3", "the LLM could not be reached and was not asked".
+// Empty for a row that is not degraded.
+std::string degraded_why(const ConditionResult& result);
 
 // Makes a fresh LLM client for one condition.
 using LlmFactory = std::function<Result<std::unique_ptr<llm::LlmClient>>()>;

@@ -15,14 +15,32 @@ std::string per_condition_llm_spec(const std::string& spec, const std::string& c
 }
 
 Result<bool> check_llm_before_run(const std::string& spec, const llm::LlmOptions& options, bool optional) {
-  auto reachable = llm::check_llm_connection(spec, options);
-  if (reachable) return true;
+  auto checked = llm::check_llm_server(spec, options);
+  if (checked) {
+    const llm::LogprobsArrived logprobs = checked->logprobs;
+    if (checked->asked)
+      spdlog::info("the LLM server answered a one-token request in {} ms, {} ({})", checked->took.count(),
+                   logprobs == llm::LogprobsArrived::kYes  ? "with log-probabilities"
+                   : logprobs == llm::LogprobsArrived::kNo ? "without log-probabilities"
+                                                           : "with no text",
+                   checked->server);
+    if (checked->asked && logprobs == llm::LogprobsArrived::kNo)
+      spdlog::warn("the LLM server at {} gives no log-probabilities: its candidates keep the order they came in",
+                   checked->server);
+    return true;
+  }
+  // A server that is down or too slow may be done without; a configuration
+  // it refuses (a wrong URL, key or model) is the user's to fix, whatever
+  // --llm-optional says.
+  const ErrorCode code = checked.error().code;
+  const bool unreachable = code == ErrorCode::kUnavailable || code == ErrorCode::kDeadlineExceeded;
+  if (!unreachable) return tl::unexpected(checked.error());
   if (!optional) {
-    Error error = reachable.error();
+    Error error = checked.error();
     error.message += " (--llm-optional goes on without it)";
     return tl::unexpected(std::move(error));
   }
-  spdlog::warn("{}; going on without the LLM (--llm-optional)", reachable.error().message);
+  spdlog::warn("{}; going on without the LLM (--llm-optional)", checked.error().message);
   return false;
 }
 
@@ -87,6 +105,13 @@ std::string results_json(const std::vector<ConditionResult>& results) {
   for (const ConditionResult& r : results)
     all.push_back(nlohmann::json{{"condition", r.condition},
                                  {"llm_failures", r.llm_failures},
+                                 {"degraded", r.degraded()},
+                                 {"degraded_why", r.degraded() ? nlohmann::json(degraded_why(r)) : nlohmann::json(nullptr)},
+                                 {"llm_stopped", r.llm_stopped},
+                                 {"llm_stopped_after_calls", r.llm_stopped_after_calls ? nlohmann::json(*r.llm_stopped_after_calls)
+                                                                                      : nlohmann::json(nullptr)},
+                                 {"llm_stop_error", r.llm_stop_error.empty() ? nlohmann::json(nullptr)
+                                                                             : nlohmann::json(r.llm_stop_error)},
                                  {"llm_ensemble", r.llm_ensemble},
                                  {"completion_rate", r.completion_rate},
                                  {"assertions_achieved", r.assertions_achieved},

@@ -27,6 +27,7 @@
 #include <string>
 #include <string_view>
 
+#include "llm/http_client.h"
 #include "llm/llm_client.h"
 #include "util/result.h"
 
@@ -39,35 +40,53 @@ struct LlmOptions {
   // The API key. Not set: OPENAI_API_KEY if set, else none. It is sent only
   // in the Authorization header, and never logged or written to a cassette.
   std::optional<std::string> api_key;
-  std::optional<int> seed;  // sent to the server when set
-  std::chrono::milliseconds connect_timeout{5'000};
-  // A request gets at most request_timeout in all: a hung server costs that,
-  // and is not asked again (not retried).
-  std::chrono::milliseconds request_timeout{30'000};
-  std::chrono::milliseconds stall_timeout{30'000};
-  int max_retries = 3;
-  std::chrono::milliseconds backoff_initial{500};
-  std::chrono::milliseconds backoff_max{8'000};
-  std::chrono::milliseconds retry_after_cap{30'000};
-  // How an HTTP client waits between attempts (HttpOptions::sleep).
-  std::function<void(std::chrono::milliseconds)> sleep;
+  std::optional<int> seed;  // sent to the server when set (--llm-seed)
+  // Timeouts and retries, handed to an HTTP backend whole (http_client.h).
+  HttpTransport transport;
   // corpus: this condition's responses; empty: TBP (see corpus_client.h).
   // A ",condition=NAME" or ",pool=all" in the spec takes precedence.
   std::string corpus_condition;
 };
 
-// Errors: kInvalidInput for a spec that does not parse (the message lists
-// the forms above), kNotFound / kDataLoss / kIo from opening files. Creating
-// an HTTP client does not contact the server.
+// The forms a spec takes, as one phrase for help and messages: "openai:URL,
+// openai, openai-chat:URL, ...", with each backend's options (corpus's
+// ",condition=NAME") when `with_options`. The backends are listed once, in
+// factory.cc.
+std::string llm_spec_forms(bool with_options = true);
+
+// Whether `spec` names a backend in a form it takes (a known scheme; a URL,
+// or OPENAI_BASE_URL for openai and openai-chat; FILE,SPEC for record:,
+// whose SPEC is checked the same way; corpus options), without opening a
+// file or reaching a server: what the CLI checks --llm with before anything
+// runs. kInvalidInput saying what is wrong and listing the forms.
+Status check_llm_spec(std::string_view spec);
+
+// Errors: kInvalidInput for a spec that does not parse (check_llm_spec),
+// kNotFound / kDataLoss / kIo from opening files. Creating an HTTP client
+// does not contact the server.
 Result<std::unique_ptr<LlmClient>> make_llm_client(std::string_view spec, const LlmOptions& options);
 
-// Whether the LLM server of `spec` accepts a connection (HttpLlmClient::
-// check_connection), before a run depends on it; also through record:. No
-// request is sent and no file is created. Backends without a server
-// (replay:, corpus:) are fine here: their files are read when the client
-// is made. Errors: as make_llm_client for a bad spec, kUnavailable or
-// kDeadlineExceeded for a server that cannot be reached.
-Status check_llm_connection(std::string_view spec, const LlmOptions& options);
+// What the check before a run found.
+struct ServerCheck {
+  bool asked = false;          // a server was asked (false: replay, corpus)
+  std::string server;          // its description (LlmClient::describe)
+  std::chrono::milliseconds took{0};
+  // Whether its answer came with log-probabilities (kNoText: it had none
+  // to give, the answer being empty).
+  LogprobsArrived logprobs = LogprobsArrived::kNoText;
+};
+
+// Whether the LLM server of `spec` answers, before a run depends on it: one
+// real, tiny request (a one-token completion of "Hello", with the client's
+// timeouts and retries), so that a server that accepts connections but
+// never answers, a wrong URL, a refused key or an unknown model are found
+// at once; also through record: (nothing is recorded). Backends without a
+// server (replay:, corpus:) are fine here: their files are read when the
+// client is made. Errors: as make_llm_client for a bad spec; those of the
+// request (HttpLlmClient): kUnavailable or kDeadlineExceeded for a server
+// that does not answer, kFailedPrecondition, kNotFound or kInvalidInput for
+// a configuration it refuses (each naming the flag to fix).
+Result<ServerCheck> check_llm_server(std::string_view spec, const LlmOptions& options);
 
 // The spec to use: `flag` when not empty, else APPRENTICE_LLM, else nothing.
 std::optional<std::string> resolve_llm_spec(std::string_view flag);

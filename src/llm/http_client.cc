@@ -50,33 +50,6 @@ size_t on_header(char* data, size_t size, size_t count, void* user) {
   return bytes;
 }
 
-// Watches an attempt for a stall: no byte sent or received for `limit`.
-// (libcurl's own low-speed limit averages over a window of several seconds,
-// which would make a short stall timeout several seconds late.)
-struct StallWatch {
-  std::chrono::milliseconds limit;
-  std::chrono::steady_clock::time_point last_change = std::chrono::steady_clock::now();
-  curl_off_t last_down = 0;
-  curl_off_t last_up = 0;
-  bool stalled = false;
-};
-
-int on_progress(void* user, curl_off_t, curl_off_t down, curl_off_t, curl_off_t up) {
-  auto* watch = static_cast<StallWatch*>(user);
-  const auto now = std::chrono::steady_clock::now();
-  if (down != watch->last_down || up != watch->last_up) {
-    watch->last_down = down;
-    watch->last_up = up;
-    watch->last_change = now;
-    return 0;
-  }
-  if (now - watch->last_change > watch->limit) {
-    watch->stalled = true;
-    return 1;  // aborts the transfer with CURLE_ABORTED_BY_CALLBACK
-  }
-  return 0;
-}
-
 // "http://user:secret@host/x" -> "http://[redacted]@host/x".
 std::string without_userinfo(std::string_view url) {
   size_t scheme = url.find("://");
@@ -118,11 +91,12 @@ struct HttpLlmClient::Attempt {
   std::string body;
   std::optional<std::chrono::milliseconds> retry_after;
   std::string curl_message;  // libcurl's own explanation when code != OK
+  bool connected = false;    // the connection was made (a timeout came later)
 };
 
 HttpLlmClient::HttpLlmClient(HttpOptions options)
     : options_(std::move(options)), handle_(std::make_unique<Handle>()) {
-  APPRENTICE_CHECK(options_.max_retries >= 0);
+  APPRENTICE_CHECK(options_.transport.max_retries >= 0);
   ensure_curl_initialised();
   handle_->curl = curl_easy_init();
   APPRENTICE_CHECK_MSG(handle_->curl != nullptr, "curl_easy_init failed");
@@ -135,29 +109,8 @@ std::string HttpLlmClient::describe() const {
                     : options_.format == WireFormat::kOpenAiChat ? "openai-chat "
                                                                  : "llama ";
   out += without_userinfo(options_.endpoint);
-  if (!options_.model.empty()) out += " model=" + options_.model;
+  if (!options_.wire.model.empty()) out += " model=" + options_.wire.model;
   return out;
-}
-
-Status HttpLlmClient::check_connection() {
-  CURL* curl = curl_easy_init();
-  APPRENTICE_CHECK_MSG(curl != nullptr, "curl_easy_init failed");
-  char error_buffer[CURL_ERROR_SIZE] = {0};
-  curl_easy_setopt(curl, CURLOPT_URL, options_.endpoint.c_str());
-  curl_easy_setopt(curl, CURLOPT_CONNECT_ONLY, 1L);
-  curl_easy_setopt(curl, CURLOPT_NOSIGNAL, 1L);
-  curl_easy_setopt(curl, CURLOPT_CONNECTTIMEOUT_MS, static_cast<long>(options_.connect_timeout.count()));
-  curl_easy_setopt(curl, CURLOPT_ERRORBUFFER, error_buffer);
-  const CURLcode code = curl_easy_perform(curl);
-  const std::string why = error_buffer[0] != '\0' ? std::string(error_buffer) : std::string(curl_easy_strerror(code));
-  curl_easy_cleanup(curl);
-  if (code == CURLE_OK) return {};
-  const std::string where = without_userinfo(options_.endpoint);
-  if (code == CURLE_OPERATION_TIMEDOUT)
-    return make_error(ErrorCode::kDeadlineExceeded, "no answer from the LLM server at " + where + " within " +
-                                                        std::to_string(options_.connect_timeout.count()) +
-                                                        " ms (" + why + ")");
-  return make_error(ErrorCode::kUnavailable, "cannot connect to the LLM server at " + where + ": " + why);
 }
 
 Error HttpLlmClient::scrub(Error error) const {
@@ -184,7 +137,6 @@ HttpLlmClient::Attempt HttpLlmClient::post_once(const std::string& body) {
     authorization = "Authorization: Bearer " + options_.api_key;
     headers = curl_slist_append(headers, authorization.c_str());
   }
-  StallWatch stall{options_.stall_timeout};
   curl_easy_setopt(curl, CURLOPT_URL, options_.endpoint.c_str());
   curl_easy_setopt(curl, CURLOPT_POST, 1L);
   curl_easy_setopt(curl, CURLOPT_POSTFIELDS, body.data());
@@ -192,11 +144,10 @@ HttpLlmClient::Attempt HttpLlmClient::post_once(const std::string& body) {
   curl_easy_setopt(curl, CURLOPT_HTTPHEADER, headers);
   curl_easy_setopt(curl, CURLOPT_USERAGENT, "apprentice");
   curl_easy_setopt(curl, CURLOPT_NOSIGNAL, 1L);  // timeouts without SIGALRM
-  curl_easy_setopt(curl, CURLOPT_CONNECTTIMEOUT_MS, static_cast<long>(options_.connect_timeout.count()));
-  curl_easy_setopt(curl, CURLOPT_TIMEOUT_MS, static_cast<long>(options_.request_timeout.count()));
-  curl_easy_setopt(curl, CURLOPT_NOPROGRESS, 0L);
-  curl_easy_setopt(curl, CURLOPT_XFERINFOFUNCTION, on_progress);
-  curl_easy_setopt(curl, CURLOPT_XFERINFODATA, &stall);
+  // The one deadline of an attempt is request_timeout, the connection's
+  // within it (HttpTransport).
+  curl_easy_setopt(curl, CURLOPT_CONNECTTIMEOUT_MS, static_cast<long>(options_.transport.connect_timeout.count()));
+  curl_easy_setopt(curl, CURLOPT_TIMEOUT_MS, static_cast<long>(options_.transport.request_timeout.count()));
   curl_easy_setopt(curl, CURLOPT_WRITEFUNCTION, on_body);
   curl_easy_setopt(curl, CURLOPT_WRITEDATA, &attempt.body);
   curl_easy_setopt(curl, CURLOPT_HEADERFUNCTION, on_header);
@@ -205,15 +156,13 @@ HttpLlmClient::Attempt HttpLlmClient::post_once(const std::string& body) {
 
   attempt.code = curl_easy_perform(curl);
   curl_easy_getinfo(curl, CURLINFO_RESPONSE_CODE, &attempt.status);
+  curl_off_t connect_time = 0;
+  curl_easy_getinfo(curl, CURLINFO_CONNECT_TIME_T, &connect_time);
+  attempt.connected = connect_time > 0;
   if (attempt.code != CURLE_OK) {
     attempt.curl_message = error_buffer[0] != '\0' ? std::string(error_buffer)
                                                    : std::string(curl_easy_strerror(attempt.code));
     if (attempt.code == CURLE_WRITE_ERROR) attempt.curl_message = "response body larger than 16 MiB";
-    if (stall.stalled) {
-      attempt.code = CURLE_OPERATION_TIMEDOUT;
-      attempt.curl_message = "nothing sent or received for " +
-                             std::to_string(options_.stall_timeout.count()) + " ms";
-    }
   }
   // The handle must not keep pointers into this frame.
   curl_easy_setopt(curl, CURLOPT_HTTPHEADER, nullptr);
@@ -222,20 +171,67 @@ HttpLlmClient::Attempt HttpLlmClient::post_once(const std::string& body) {
   return attempt;
 }
 
-Result<Completion> HttpLlmClient::do_complete(const CompletionRequest& request) {
-  const std::string body =
-      build_request_body(options_.format, request, WireOptions{options_.model, options_.seed});
+namespace {
+
+// Whether a refusal's body says the model is unknown or missing (vLLM: "The
+// model `x` does not exist.", Ollama: "model \"x\" not found, try pulling
+// it first", OpenAI: "model_not_found"), rather than, say, that the prompt
+// is longer than the model's context.
+bool refuses_the_model(std::string_view body) {
+  const std::string text = to_lower(body);
+  if (text.find("model") == std::string::npos) return false;
+  for (std::string_view says : {"not found", "does not exist", "not exist", "unknown model", "no such model",
+                                "model_not_found", "must provide", "model is required", "invalid model"})
+    if (text.find(says) != std::string::npos) return true;
+  return false;
+}
+
+}  // namespace
+
+// A refusal (4xx other than 429) as the configuration error it is, naming
+// the flag to fix, in one line.
+Error HttpLlmClient::refusal(long status, std::string_view body) const {
   const std::string where = without_userinfo(options_.endpoint);
-  const int attempts = options_.max_retries + 1;
+  const std::string answered = "HTTP " + std::to_string(status) + ": " + excerpt_for_message(body);
+  if (status == 401 || status == 403)
+    return Error{ErrorCode::kFailedPrecondition, "the LLM server at " + where + " refused the API key (" + answered +
+                                                     "); fix --llm-api-key or OPENAI_API_KEY"};
+  if (refuses_the_model(body)) {
+    const std::string model = options_.wire.model.empty() ? std::string("no model was sent")
+                                                          : "the model sent was " + apprentice::quoted(options_.wire.model);
+    return Error{status == 404 ? ErrorCode::kNotFound : ErrorCode::kInvalidInput,
+                 "the LLM server at " + where + " does not serve the model asked for (" +
+                                               answered + "; " + model + "); fix --llm-model or OPENAI_MODEL"};
+  }
+  if (status == 404)
+    return Error{ErrorCode::kNotFound,
+                 "the LLM server at " + where + " has no such endpoint (" + answered +
+                     "); fix the URL in --llm: openai: and openai-chat: take the API base (http://host:port/v1), "
+                     "llama: the server root (http://host:port)"};
+  return Error{ErrorCode::kInvalidInput,
+               "the LLM server at " + where + " refused the request (" + answered + "); check --llm and --llm-model"};
+}
+
+Result<Completion> HttpLlmClient::do_complete(const CompletionRequest& request) {
+  const std::string body = build_request_body(options_.format, request, options_.wire);
+  const std::string where = without_userinfo(options_.endpoint);
+  const HttpTransport& transport = options_.transport;
+  const int attempts = transport.max_retries + 1;
   Error last{ErrorCode::kUnavailable, "no attempt made"};
   for (int n = 0; n < attempts; ++n) {
     Attempt attempt = post_once(body);
     std::chrono::milliseconds wait = std::min<std::chrono::milliseconds>(
-        options_.backoff_max, options_.backoff_initial * (int64_t{1} << std::min(n, 20)));
+        transport.backoff_max, transport.backoff_initial * (int64_t{1} << std::min(n, 20)));
     if (attempt.code == CURLE_OPERATION_TIMEDOUT) {
-      return tl::unexpected(scrub(Error{
-          ErrorCode::kDeadlineExceeded,
-          "no answer from the LLM server at " + where + " in time (" + attempt.curl_message + ")"}));
+      // Not retried: asking a server that is too slow again doubles the wait.
+      const std::string bound =
+          attempt.connected ? "no answer within " + std::to_string(transport.request_timeout.count()) +
+                                  " ms (--llm-timeout-ms)"
+                            : "no connection within " +
+                                  std::to_string(std::min(transport.connect_timeout, transport.request_timeout).count()) +
+                                  " ms (--llm-connect-timeout-ms)";
+      return tl::unexpected(scrub(Error{ErrorCode::kDeadlineExceeded,
+                                        "no answer from the LLM server at " + where + " in time: " + bound}));
     }
     if (attempt.code != CURLE_OK) {
       last = Error{ErrorCode::kUnavailable,
@@ -249,28 +245,15 @@ Result<Completion> HttpLlmClient::do_complete(const CompletionRequest& request) 
       last = Error{ErrorCode::kUnavailable, "the LLM server at " + where + " answered HTTP " +
                                                 std::to_string(attempt.status) + ": " +
                                                 excerpt_for_message(attempt.body)};
-      if (attempt.retry_after) wait = std::min(*attempt.retry_after, options_.retry_after_cap);
+      if (attempt.retry_after) wait = std::min(*attempt.retry_after, transport.retry_after_cap);
     } else {
-      const std::string what = "the LLM server at " + where + " answered HTTP " +
-                               std::to_string(attempt.status) + ": " +
-                               excerpt_for_message(attempt.body);
-      ErrorCode code = ErrorCode::kInvalidInput;
-      std::string hint = " (the request was refused)";
-      if (attempt.status == 401 || attempt.status == 403) {
-        code = ErrorCode::kFailedPrecondition;
-        hint = " (check the API key: --llm-api-key or OPENAI_API_KEY)";
-      } else if (attempt.status == 404) {
-        code = ErrorCode::kNotFound;
-        hint = " (wrong URL or model? openai: expects a base like http://host:port/v1, "
-               "llama: the server root)";
-      }
-      return tl::unexpected(scrub(Error{code, what + hint}));
+      return tl::unexpected(scrub(refusal(attempt.status, attempt.body)));
     }
     if (n + 1 < attempts) {
       spdlog::info("{}; retrying in {} ms (attempt {} of {})", scrub(last).message, wait.count(),
                    n + 2, attempts);
-      if (options_.sleep) {
-        options_.sleep(wait);
+      if (transport.sleep) {
+        transport.sleep(wait);
       } else {
         std::this_thread::sleep_for(wait);
       }

@@ -2,10 +2,12 @@
 
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "util/check.h"
 #include "util/log.h"
+#include "util/text.h"
 
 namespace apprentice::llm {
 
@@ -47,6 +49,31 @@ std::optional<double> mean_logprob(const std::vector<TokenLogprob>& tokens) {
   }
   if (count == 0) return std::nullopt;
   return sum / count;
+}
+
+LogprobsArrived logprobs_arrived(const Completion& completion) {
+  if (completion.text.empty() && completion.tokens.empty()) return LogprobsArrived::kNoText;
+  return mean_logprob(completion.tokens) ? LogprobsArrived::kYes : LogprobsArrived::kNo;
+}
+
+std::string describe_answer(const Completion& completion) {
+  if (!completion.answered) return "(nothing for this query)";
+  switch (logprobs_arrived(completion)) {
+    case LogprobsArrived::kNoText: return "(no text)";
+    case LogprobsArrived::kNo: return apprentice::quoted(completion.text) + " (no log-probabilities)";
+    case LogprobsArrived::kYes: break;
+  }
+  // Tokens of the text: an end-of-sequence entry has none.
+  int reported = 0, spelled = 0;
+  for (const TokenLogprob& token : completion.tokens) {
+    if (token.token.empty() && !std::isfinite(token.logprob)) continue;
+    ++spelled;
+    reported += std::isfinite(token.logprob) ? 1 : 0;
+  }
+  char mean[32];
+  std::snprintf(mean, sizeof mean, "%.3f", *mean_logprob(completion.tokens));
+  return apprentice::quoted(completion.text) + " (mean log-probability " + mean + " over " +
+         std::to_string(reported) + " of " + std::to_string(spelled) + " tokens)";
 }
 
 Result<Completion> LlmClient::complete(const CompletionRequest& request) {

@@ -100,6 +100,17 @@ struct Completion {
 // none. exp() of it is what the paper reports as "prob".
 std::optional<double> mean_logprob(const std::vector<TokenLogprob>& tokens);
 
+// Whether an answer's log-probabilities arrived: kNoText for an answer with
+// no text (the stop came first), which has none to report whatever the
+// server, so that it is not taken for a server without them.
+enum class LogprobsArrived { kYes, kNo, kNoText };
+LogprobsArrived logprobs_arrived(const Completion& completion);
+
+// An answer in one line, for -v: its text quoted with newlines escaped, and
+// what came with it: "\" Open the fridge\" (mean log-probability -0.41
+// over 4 tokens)", "(no log-probabilities)", or "(no text)".
+std::string describe_answer(const Completion& completion);
+
 // Running totals kept by every client (see LlmClient::complete).
 struct LlmUsage {
   int64_t queries = 0;            // calls to complete()

@@ -41,6 +41,8 @@ bool query_once(LlmClient& client, CompletionRequest& request, double temperatur
     out.failure = completion.error();
     return false;
   }
+  spdlog::info("LLM {} answer at temperature {}: {}", to_string(request.about.kind), temperature,
+               describe_answer(*completion));
   if (!completion->answered) {
     out.unanswered = true;
     return false;
@@ -105,7 +107,10 @@ std::vector<TokenLogprob> kept_words(const std::vector<TokenLogprob>& words,
   std::vector<std::string> seen;
   for (const TokenLogprob& word : words) {
     std::string text(trim(word.token));
-    if (text.empty()) continue;
+    // A step starts with a word: a quote or a dash a chat model opens its
+    // answer with ("\"", p = 0.72) is no action, however probable.
+    if (std::none_of(text.begin(), text.end(), [](char c) { return std::isalpha(static_cast<unsigned char>(c)); }))
+      continue;
     if (std::find(seen.begin(), seen.end(), to_lower(text)) != seen.end()) continue;
     seen.push_back(to_lower(text));
     // A word whose probability the server did not report is the model's own
@@ -143,6 +148,13 @@ Retrieval retrieve_actions(LlmClient& client, const PromptTemplates& templates,
   }
   out.first_words = *words;
   out.unanswered = words->empty();
+  if (spdlog::should_log(spdlog::level::info)) {
+    std::string listed;
+    for (const TokenLogprob& word : *words)
+      listed += (listed.empty() ? "" : ", ") + apprentice::quoted(word.token) +
+                (std::isnan(word.logprob) ? std::string(" (p unknown)") : fmt::format(" (p {:.3f})", std::exp(word.logprob)));
+    spdlog::info("LLM first words: {}", listed.empty() ? std::string("none") : listed);
+  }
   for (const TokenLogprob& word : kept_words(*words, is_known_action_word, params)) {
     CompletionRequest request;
     request.prompt = prompt + " " + word.token;

@@ -124,6 +124,30 @@ void sort_alternatives(std::vector<TokenLogprob>& alternatives) {
                    });
 }
 
+// Whether an entry's log-probability is only that of the last byte of its
+// character: llama-server sends no entry for the byte tokens that begin a
+// character (its text is incomplete then) and gives the character to the
+// token that completes it, with that token's own log-probability; its
+// alternatives are then bytes that cannot stand alone (a continuation byte
+// such as [169]). The character's true log-probability, the sum over its
+// bytes, is not in the reply.
+bool carries_only_the_last_byte(const json& entry, const TokenLogprob& chosen) {
+  auto bytes = bytes_field(entry);
+  if (!bytes || bytes->size() < 2 || find_invalid_utf8(*bytes)) return false;
+  for (const char* key : {"top_logprobs", "top_probs"}) {
+    auto it = entry.find(key);
+    if (it == entry.end() || !it->is_array()) continue;
+    for (const json& alternative : *it) {
+      if (!alternative.is_object()) continue;
+      auto alternative_bytes = bytes_field(alternative);
+      if (!alternative_bytes || alternative_bytes->empty() || !find_invalid_utf8(*alternative_bytes)) continue;
+      const auto first = static_cast<unsigned char>(alternative_bytes->front());
+      if (first >= 0x80 && first <= 0xBF && chosen.token.size() > 1) return true;  // a continuation byte
+    }
+  }
+  return false;
+}
+
 // One position of llama-server's per-token layouts (current, post-sampling
 // and legacy); see wire_format.h.
 void read_position(const json& entry, Completion& out) {
@@ -144,9 +168,62 @@ void read_position(const json& entry, Completion& out) {
       if (alternative.token == chosen.token) chosen.logprob = alternative.logprob;
     }
   }
+  if (carries_only_the_last_byte(entry, chosen)) {
+    // Unreported rather than wrong; the alternatives are of the last byte.
+    chosen.logprob = kNan;
+    alternatives.clear();
+  }
   sort_alternatives(alternatives);
   out.tokens.push_back(std::move(chosen));
   out.top_logprobs.push_back(std::move(alternatives));
+}
+
+// llama-server's entries as its text really is:
+//  - an entry with no text is a token whose text came with the next entry
+//    (held back while it might begin a stop string): its log-probability
+//    joins the next one's, the probability of the two; at the end it is
+//    the end of the sequence (or the stop string), which is not text and
+//    is not counted (NaN), its alternatives kept for the next-token query;
+//  - at a stop string the server leaves out the entries of as many tokens
+//    as the stop string has on its own, which may be the last tokens of the
+//    text: text the entries do not cover becomes one token without a
+//    log-probability, so that the tokens spell the text.
+void reconcile_with_text(Completion& out) {
+  std::vector<TokenLogprob> tokens;
+  std::vector<std::vector<TokenLogprob>> top;
+  std::optional<TokenLogprob> held;
+  std::vector<TokenLogprob> held_alternatives;
+  for (size_t i = 0; i < out.tokens.size(); ++i) {
+    TokenLogprob token = out.tokens[i];
+    std::vector<TokenLogprob> alternatives = i < out.top_logprobs.size() ? out.top_logprobs[i] : std::vector<TokenLogprob>{};
+    if (held) {
+      token.logprob = std::max(token.logprob + held->logprob, kFloorLogprob);  // NaN if either is
+      alternatives = std::move(held_alternatives);
+      held.reset();
+    }
+    if (token.token.empty()) {
+      held = token;
+      held_alternatives = std::move(alternatives);
+      continue;
+    }
+    tokens.push_back(std::move(token));
+    top.push_back(std::move(alternatives));
+  }
+  if (held) {
+    tokens.push_back(TokenLogprob{"", kNan});
+    top.push_back(std::move(held_alternatives));
+  }
+  std::string spelled;
+  for (const TokenLogprob& token : tokens) spelled += token.token;
+  if (spelled.size() < out.text.size() && out.text.compare(0, spelled.size(), spelled) == 0 && !tokens.empty()) {
+    // Before a trailing end-of-sequence entry, if there is one.
+    const bool ends_empty = tokens.back().token.empty();
+    const auto at = static_cast<std::ptrdiff_t>(tokens.size() - (ends_empty ? 1 : 0));
+    tokens.insert(tokens.begin() + at, TokenLogprob{out.text.substr(spelled.size()), kNan});
+    top.insert(top.begin() + at, std::vector<TokenLogprob>{});
+  }
+  out.tokens = std::move(tokens);
+  out.top_logprobs = std::move(top);
 }
 
 void read_openai_logprobs(const json& logprobs, Completion& out) {
@@ -154,6 +231,7 @@ void read_openai_logprobs(const json& logprobs, Completion& out) {
   if (auto content = logprobs.find("content"); content != logprobs.end() && content->is_array()) {
     for (const json& entry : *content) read_position(entry, out);
     join_cut_characters(out);
+    reconcile_with_text(out);
     return;
   }
   const json& tokens = logprobs.at("tokens");
@@ -206,6 +284,7 @@ void read_native(const json& body, Completion& out) {
   if (auto probs = body.find("completion_probabilities"); probs != body.end() && probs->is_array()) {
     for (const json& entry : *probs) read_position(entry, out);
     join_cut_characters(out);
+    reconcile_with_text(out);
   }
   std::string stop_type = string_field(body, {"stop_type"});
   if (stop_type == "eos" || stop_type == "word") {

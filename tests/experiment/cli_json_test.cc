@@ -17,10 +17,13 @@ using ::testing::ElementsAreArray;
 using ::testing::HasSubstr;
 using ::testing::StartsWith;
 
-const std::vector<std::string> kKeys = {"assertions_achieved", "assertions_total", "completion_rate", "condition",
-                                        "instructions",        "llm_calls",        "llm_ensemble",    "llm_failures",
-                                        "llm_tokens",          "objects_done",     "objects_total",   "relevance",
-                                        "search_nodes",        "transfer",         "wall_ms",         "words",
+const std::vector<std::string> kKeys = {"assertions_achieved", "assertions_total", "completion_rate",
+                                        "condition",           "degraded",         "degraded_why",
+                                        "instructions",        "llm_calls",        "llm_ensemble",
+                                        "llm_failures",        "llm_stop_error",   "llm_stopped",
+                                        "llm_stopped_after_calls", "llm_tokens",   "objects_done",
+                                        "objects_total",       "relevance",        "search_nodes",
+                                        "transfer",            "wall_ms",          "words",
                                         "yes_no"};
 
 std::vector<std::string> keys_of(const json& object) {
@@ -34,6 +37,9 @@ void expect_types(const json& r, bool llm) {
   EXPECT_TRUE(r["condition"].is_string());
   EXPECT_TRUE(r["completion_rate"].is_number());
   EXPECT_TRUE(r["llm_ensemble"].is_boolean());
+  EXPECT_EQ(r["degraded"], false);  // a healthy run
+  EXPECT_TRUE(r["degraded_why"].is_null());
+  EXPECT_EQ(r["llm_stopped"], false);
   for (const char* key : {"assertions_achieved", "assertions_total", "objects_done", "objects_total", "instructions",
                           "words", "yes_no", "llm_calls", "llm_tokens", "llm_failures", "search_nodes"}) {
     EXPECT_TRUE(r[key].is_number_integer()) << key << " is " << r[key].dump();

@@ -22,13 +22,12 @@ namespace fs = std::filesystem;
 // Small enough that a failing server costs a test little time.
 inline llm::LlmOptions fast_failing_options() {
   llm::LlmOptions options;
-  options.connect_timeout = std::chrono::milliseconds(300);
-  options.request_timeout = std::chrono::milliseconds(300);
-  options.stall_timeout = std::chrono::milliseconds(300);
-  options.max_retries = 1;
-  options.backoff_initial = std::chrono::milliseconds(5);
-  options.backoff_max = std::chrono::milliseconds(10);
-  options.retry_after_cap = std::chrono::milliseconds(30);
+  options.transport.connect_timeout = std::chrono::milliseconds(300);
+  options.transport.request_timeout = std::chrono::milliseconds(300);
+  options.transport.max_retries = 1;
+  options.transport.backoff_initial = std::chrono::milliseconds(5);
+  options.transport.backoff_max = std::chrono::milliseconds(10);
+  options.transport.retry_after_cap = std::chrono::milliseconds(30);
   return options;
 }
 

@@ -5,7 +5,9 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <sstream>
 #include <stdexcept>
 
@@ -88,6 +90,8 @@ struct FakeLlmServer::Answer {
   double logprob = 0.0;
   std::vector<std::pair<std::string, double>> alternatives;
   int prompt_tokens = 0;
+  // How it ended: at a stop string, at the end of the sequence, or at max_tokens.
+  enum class End { kStop, kEndOfSequence, kLength } end = End::kStop;
 };
 
 namespace {
@@ -128,36 +132,85 @@ json as_completion(const FakeLlmServer::Answer& a) {
               {"usage", usage(a)}};
 }
 
-json entries(const FakeLlmServer::Answer& a, const char* top_key) {
+json bytes_of(const std::string& text) {
+  json out = json::array();
+  for (unsigned char c : text) out.push_back(static_cast<int>(c));
+  return out;
+}
+
+bool has_multibyte(const std::string& text) {
+  return std::any_of(text.begin(), text.end(), [](char c) { return static_cast<unsigned char>(c) >= 0x80; });
+}
+
+// Per-token entries, as OpenAI's chat and llama-server send them; with
+// `quirks`, as llama-server really does (LlamaQuirks).
+json entries(const FakeLlmServer::Answer& a, const char* top_key, const LlamaQuirks& quirks) {
   json content = json::array();
-  for (size_t i = 0; i < a.tokens.size(); ++i) {
+  size_t count = a.tokens.size();
+  if (quirks.on && a.end == FakeLlmServer::Answer::End::kStop && count > 0) --count;  // the stop drops the last
+  for (size_t i = 0; i < count; ++i) {
     json top = json::array();
     for (const auto& [token, lp] : alternatives_at(a, i)) top.push_back(json{{"token", token}, {"logprob", lp}});
-    content.push_back(json{{"token", a.tokens[i]}, {"logprob", a.logprob}, {top_key, top}});
+    json entry{{"token", a.tokens[i]}, {"logprob", a.logprob}, {top_key, top}};
+    if (quirks.on) {
+      entry["bytes"] = bytes_of(a.tokens[i]);
+      if (has_multibyte(a.tokens[i])) {
+        // The last byte's log-probability, and the last byte as alternative.
+        const std::string last(1, a.tokens[i].back());
+        entry["logprob"] = -6.0;
+        entry[top_key] = json::array({json{{"token", ""}, {"bytes", bytes_of(last)}, {"logprob", -6.0}}});
+      }
+    }
+    content.push_back(entry);
   }
+  if (quirks.on && a.end == FakeLlmServer::Answer::End::kEndOfSequence)
+    content.push_back(json{{"token", ""}, {"bytes", json::array()}, {"logprob", -9.0},
+                           {top_key, json::array({json{{"token", ""}, {"bytes", json::array()}, {"logprob", -9.0}}})}});
   return content;
 }
 
-// OpenAI's chat completions layout.
-json as_chat(const FakeLlmServer::Answer& a) {
+// OpenAI's chat completions layout. llama-server leaves "logprobs" out when
+// it has no entry.
+json as_chat(const FakeLlmServer::Answer& a, const LlamaQuirks& quirks) {
+  json choice{{"index", 0},
+              {"message", json{{"role", "assistant"}, {"content", a.text}}},
+              {"finish_reason", a.end == FakeLlmServer::Answer::End::kLength ? "length" : "stop"}};
+  json content = entries(a, "top_logprobs", quirks);
+  if (!quirks.on || !content.empty()) choice["logprobs"] = json{{"content", content}};
   return json{{"id", "chatcmpl-fake"},
               {"object", "chat.completion"},
               {"model", "fake-chat"},
-              {"choices", json::array({json{{"index", 0},
-                                            {"message", json{{"role", "assistant"}, {"content", a.text}}},
-                                            {"logprobs", json{{"content", entries(a, "top_logprobs")}}},
-                                            {"finish_reason", "stop"}}})},
+              {"choices", json::array({choice})},
+              {"usage", usage(a)}};
+}
+
+// llama-server's /v1/completions layout: its own entries under
+// logprobs.content, null when it has none.
+json as_llama_completion(const FakeLlmServer::Answer& a, const LlamaQuirks& quirks) {
+  json content = entries(a, "top_logprobs", quirks);
+  return json{{"id", "cmpl-fake"},
+              {"object", "text_completion"},
+              {"model", "fake-llama"},
+              {"choices", json::array({json{{"text", a.text},
+                                            {"index", 0},
+                                            {"finish_reason", a.end == FakeLlmServer::Answer::End::kLength ? "length" : "stop"},
+                                            {"logprobs", content.empty() ? json(nullptr) : json{{"content", content}}}}})},
               {"usage", usage(a)}};
 }
 
 // llama-server's /completion layout.
-json as_llama(const FakeLlmServer::Answer& a) {
-  return json{{"content", a.text},
-              {"stop", true},
-              {"stop_type", "word"},
-              {"tokens_evaluated", a.prompt_tokens},
-              {"tokens_predicted", static_cast<int>(a.tokens.size())},
-              {"completion_probabilities", entries(a, "top_logprobs")}};
+json as_llama(const FakeLlmServer::Answer& a, const LlamaQuirks& quirks) {
+  const char* stop_type = a.end == FakeLlmServer::Answer::End::kLength          ? "limit"
+                          : a.end == FakeLlmServer::Answer::End::kEndOfSequence ? "eos"
+                                                                               : "word";
+  json body{{"content", a.text},
+            {"stop", true},
+            {"stop_type", stop_type},
+            {"tokens_evaluated", a.prompt_tokens},
+            {"tokens_predicted", static_cast<int>(a.tokens.size())}};
+  json content = entries(a, "top_logprobs", quirks);
+  if (!quirks.on || !content.empty()) body["completion_probabilities"] = content;
+  return body;
 }
 
 }  // namespace
@@ -195,6 +248,11 @@ void FakeLlmServer::pause(std::chrono::milliseconds limit) {
   released_.wait_for(lock, limit, [this] { return stopping_; });
 }
 
+std::vector<std::string> FakeLlmServer::bodies() {
+  std::lock_guard lock(mutex_);
+  return bodies_;
+}
+
 std::vector<std::string> FakeLlmServer::goal_prompts() {
   std::lock_guard lock(mutex_);
   return goal_prompts_;
@@ -202,7 +260,31 @@ std::vector<std::string> FakeLlmServer::goal_prompts() {
 
 void FakeLlmServer::handle(Dialect dialect, const httplib::Request& request, httplib::Response& response) {
   const int n = ++requests_;
-  switch (mode_) {
+  {
+    std::lock_guard lock(mutex_);
+    bodies_.push_back(request.body);
+  }
+  if (!required_key_.empty() && request.get_header_value("Authorization") != "Bearer " + required_key_) {
+    response.status = 401;
+    response.set_content(R"({"error": {"message": "Incorrect API key provided", "type": "invalid_request_error"}})",
+                         "application/json");
+    return;
+  }
+  if (!served_model_.empty()) {
+    json asked = json::parse(request.body, nullptr, false);
+    const std::string model = asked.is_object() ? asked.value("model", "") : "";
+    if (model != served_model_) {
+      response.status = 404;
+      response.set_content(json{{"object", "error"},
+                                {"message", "The model `" + model + "` does not exist."},
+                                {"type", "NotFoundError"},
+                                {"code", 404}}
+                               .dump(),
+                           "application/json");
+      return;
+    }
+  }
+  switch (n <= healthy_for_ ? ServerMode::kModel : mode_) {
     case ServerMode::kStatus500:
       response.status = 500;
       response.set_content(R"({"error": {"message": "the model is overloaded"}})", "application/json");
@@ -251,8 +333,19 @@ void FakeLlmServer::handle(Dialect dialect, const httplib::Request& request, htt
     return;
   }
   Answer answer = model_answer(prompt, body.value("temperature", 0.0), max_tokens, logprobs);
-  json reply = dialect == Dialect::kChat ? as_chat(answer) : dialect == Dialect::kLlama ? as_llama(answer)
-                                                                                          : as_completion(answer);
+  if (quote_first_ && dialect == Dialect::kChat && max_tokens == 1) {
+    // A chat model's answer opens with a quote, the step's word below it.
+    answer.alternatives = {{"\"", std::log(0.72)}, {answer.tokens.front(), std::log(0.2)}};
+    answer.tokens = {"\""};
+    answer.text = "\"";
+    answer.logprob = std::log(0.72);
+  }
+  if (llama_quirks_.on && prompt == "Hello") answer = Answer{"", {}, 0.0, {}, 1, Answer::End::kStop};  // the stop came first
+  const LlamaQuirks& quirks = llama_quirks_;
+  json reply = dialect == Dialect::kChat    ? as_chat(answer, quirks)
+               : dialect == Dialect::kLlama ? as_llama(answer, quirks)
+               : quirks.on                  ? as_llama_completion(answer, quirks)
+                                            : as_completion(answer);
   response.set_content(reply.dump(), "application/json");
 }
 
@@ -281,7 +374,9 @@ FakeLlmServer::Answer FakeLlmServer::model_answer(const std::string& prompt, dou
     std::string text = " " + replace_all(choices[index], "X", category);
     std::vector<std::string> tokens;
     for (const std::string& w : words_of(text)) tokens.push_back(" " + w);
-    return Answer{text, tokens, -0.2 * static_cast<double>(index + 1), {}, prompt_tokens};
+    // At temperature 0 it ends at the end of the sequence, above at the stop string.
+    return Answer{text, tokens, -0.2 * static_cast<double>(index + 1), {}, prompt_tokens,
+                  temperature == 0.0 ? Answer::End::kEndOfSequence : Answer::End::kStop};
   }
   const int number = next_step_number(prompt);
   std::vector<std::string> steps = usual_steps(prompt, false);
@@ -293,7 +388,7 @@ FakeLlmServer::Answer FakeLlmServer::model_answer(const std::string& prompt, dou
     std::vector<std::pair<std::string, double>> alternatives = {
         {" Open", -3.0}, {" Pick", -3.2}, {" Put", -3.4}, {" Close", -3.6}, {" Wash", -3.8}};
     if (static_cast<int>(alternatives.size()) > logprobs - 1) alternatives.resize(std::max(logprobs - 1, 0));
-    return Answer{" " + word, {" " + word}, -0.1, alternatives, prompt_tokens};
+    return Answer{" " + word, {" " + word}, -0.1, alternatives, prompt_tokens, Answer::End::kLength};
   }
   // The rest of a step after its first word: the usual step if the word
   // fits it, with "the" when asked again at a higher temperature.

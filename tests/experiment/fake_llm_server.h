@@ -13,8 +13,13 @@
 // /completion.
 //
 // When it misbehaves, it fails every request in one of the ways a real
-// server does. A listener that never accepts stands in for a hung
-// connection.
+// server does (after the first `healthy_for` requests, if set). A listener
+// that never accepts stands in for a hung connection.
+//
+// Like a real server it can refuse a configuration: a wrong API key (401),
+// a model it does not serve (404, as vLLM words it), a path it does not
+// serve (404). And it can answer in llama-server's own shape, with the four
+// ways llama-server's log-probabilities differ from OpenAI's (LlamaQuirks).
 #pragma once
 
 #include <httplib.h>
@@ -40,6 +45,24 @@ enum class ServerMode {
   kWrongJson,         // 200 with JSON that is not a completion
 };
 
+// How llama-server (tools/server) really reports log-probabilities, in all
+// three dialects, where they differ from OpenAI's:
+//  - at a stop string it leaves out as many entries as the stop string has
+//    tokens on its own, which may be the text's last token: here, goal
+//    answers above temperature 0 and step completions end at a stop string
+//    and lack their last token's entry;
+//  - when the stop string comes first, the answer is empty and has no
+//    log-probabilities at all (no "logprobs" key in chat, null in
+//    completions, no completion_probabilities): here, the one-token check
+//    ("Hello");
+//  - a character made of several byte tokens gets one entry, of the last
+//    byte's log-probability (-6 here), with the last byte as alternative;
+//  - an answer that ends at the end of the sequence has one more entry,
+//    with no text (-9 here): here, goal answers at temperature 0.
+struct LlamaQuirks {
+  bool on = false;
+};
+
 class FakeLlmServer {
  public:
   // Goal statements by object category, most probable first. A category
@@ -60,6 +83,17 @@ class FakeLlmServer {
   // The server root, for the llama: backend.
   std::string root() const { return "http://127.0.0.1:" + std::to_string(port_); }
   int requests() const { return requests_.load(); }
+
+  // Set before the first request.
+  void healthy_for(int requests) { healthy_for_ = requests; }
+  void require_key(std::string key) { required_key_ = std::move(key); }
+  void serve_only(std::string model) { served_model_ = std::move(model); }
+  void llama_server_shape() { llama_quirks_.on = true; }
+  // A chat model opens its first word with a quote: '"' at p = 0.72, the
+  // step's word after it.
+  void open_with_a_quote() { quote_first_ = true; }
+  // Every request body received, in order (as JSON text).
+  std::vector<std::string> bodies();
   // Every goal prompt received, in order.
   std::vector<std::string> goal_prompts();
 
@@ -85,6 +119,12 @@ class FakeLlmServer {
   bool stopping_ = false;
   std::map<std::string, int> asked_;  // prompt -> times asked (guarded by mutex_)
   std::vector<std::string> goal_prompts_;  // guarded by mutex_
+  std::vector<std::string> bodies_;        // guarded by mutex_
+  int healthy_for_ = 0;
+  std::string required_key_;
+  std::string served_model_;
+  LlamaQuirks llama_quirks_;
+  bool quote_first_ = false;
 };
 
 // A port that accepts connections into its backlog and never answers: a

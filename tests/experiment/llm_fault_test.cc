@@ -192,7 +192,9 @@ TEST(LlmRateLimit, ARetryAfterA429GetsTheAnswerAndTheLlmIsUsed) {
                        {{"ketchup", {"The goal is that the X is in the fridge and the fridge is closed"}},
                         {"milk", {"The goal is that the X is in the fridge and the fridge is closed"}}});
   llm::LlmOptions options = testing::fast_failing_options();
-  options.retry_after_cap = std::chrono::milliseconds(5);
+  options.transport.retry_after_cap = std::chrono::milliseconds(5);
+  // Not a timeout test: a busy machine must not turn a slow answer into a failure.
+  options.transport.request_timeout = std::chrono::milliseconds(10'000);
   auto started = std::chrono::steady_clock::now();
   ConditionResult result =
       testing::run(scenario, "inst+search4+llm", experiment_options(factory("openai:" + server.url(), options)));
@@ -226,7 +228,7 @@ TEST_F(LlmCli, ADeadServerExits4AtOnceWithOneLine) {
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   EXPECT_EQ(run.exit_code, 4) << run.err;
   EXPECT_EQ(lines(run.err), 1) << run.err;
-  EXPECT_THAT(run.err, HasSubstr("apprentice: unavailable: cannot connect to the LLM server at http://127.0.0.1:"));
+  EXPECT_THAT(run.err, HasSubstr("apprentice: unavailable: cannot get an answer from the LLM server at http://127.0.0.1:"));
   EXPECT_THAT(run.err, HasSubstr("(--llm-optional goes on without it)"));
   EXPECT_EQ(run.out, "");  // checked before any condition runs
   EXPECT_LT(seconds, 20.0);  // the bound; it is one refused connection
@@ -241,11 +243,12 @@ TEST_F(LlmCli, WithLlmOptionalADeadServerIsDoneWithout) {
   EXPECT_LE(lines(run.err), 5) << run.err;
   EXPECT_THAT(run.err, HasSubstr("going on without the LLM"));
   EXPECT_THAT(run.out, HasSubstr("\ninst+llm*          ours         100.0"));
-  EXPECT_THAT(run.out, HasSubstr("* inst+llm: degraded, the LLM could not be reached and was not asked again\n"));
+  EXPECT_THAT(run.out, HasSubstr("* inst+llm: degraded, the LLM could not be reached and was not asked\n"));
 }
 
 TEST_F(LlmCli, AServerThatFailsDuringTheRunMarksTheRowAndExits4) {
   FakeLlmServer server(ServerMode::kMalformedJson);
+  server.healthy_for(1);  // the check before the run is answered
   auto args = experiment("instruction,inst+llm", "openai:" + server.url());
   args.push_back("--json");
   testing::Invocation run = testing::run_cli(args, dir_);
@@ -258,25 +261,10 @@ TEST_F(LlmCli, AServerThatFailsDuringTheRunMarksTheRowAndExits4) {
   EXPECT_EQ(rows[0]["llm_failures"], 0);
   EXPECT_EQ(rows[1]["llm_failures"], kBreaker);
   EXPECT_EQ(rows[1]["completion_rate"], 100.0);  // the instructor took over
-  EXPECT_EQ(server.requests(), kBreaker);
+  EXPECT_EQ(server.requests(), 1 + kBreaker);
 }
 
-TEST_F(LlmCli, AHungServerCostsAtMostThreeTimeoutsPerCondition) {
-  testing::HungServer server;
-  auto args = experiment("inst+llm,inst+search4+llm", "openai:" + server.url());
-  args.insert(args.end(), {"--llm-timeout-ms", "300", "--json"});
-  testing::Invocation run = testing::run_cli(args, dir_);
-  EXPECT_EQ(run.exit_code, 4) << run.err;
-  EXPECT_LE(lines(run.err), 5) << run.err;
-  auto rows = nlohmann::json::parse(run.out);
-  ASSERT_EQ(rows.size(), 2u);
-  // Each query waits out the 300 ms and is not retried; after 3 the LLM is
-  // not asked again: 3 timeouts per condition, whatever the machine's load.
-  for (const auto& row : rows) {
-    EXPECT_EQ(row["llm_failures"], kBreaker) << row.dump();
-    EXPECT_EQ(row["llm_calls"], kBreaker) << row.dump();
-  }
-}
+// A hung server, before and during a run: llm_cli_test.cc.
 
 }  // namespace
 }  // namespace apprentice

@@ -259,6 +259,68 @@ TEST(WireFormatTest, ChatBadBodiesAreClearErrors) {
                   "logprobs are not supported");
 }
 
+// Issue 25, item 4: llama-server's entries as it really sends them, in its
+// native reply (tools/server: the stop string's tokens are cut off by count,
+// byte tokens that begin a character get no entry, the end of the sequence
+// gets one with no text). Each was read before as if it were OpenAI's.
+TEST(WireFormatTest, LlamaServersStopDropsTheLastEntry) {
+  // " cupboard\n" was generated as " cup", "board\n(" ... ; the stop
+  // string's count of entries took "board\n(" along.
+  auto native = parse_response_body(WireFormat::kLlamaNative, R"({"content":" the cupboard\n","stop_type":"word",
+    "completion_probabilities":[{"token":" the","bytes":[32,116,104,101],"logprob":-0.5,"top_logprobs":[]},
+    {"token":" cup","bytes":[32,99,117,112],"logprob":-1.5,"top_logprobs":[]}]})");
+  ASSERT_TRUE(native.has_value()) << native.error().describe();
+  ASSERT_EQ(native->tokens.size(), 3u);
+  EXPECT_EQ(native->tokens[2].token, "board\n");  // the tokens spell the text
+  EXPECT_TRUE(std::isnan(native->tokens[2].logprob));
+  EXPECT_DOUBLE_EQ(*mean_logprob(native->tokens), -1.0);
+}
+
+TEST(WireFormatTest, LlamaServersEmptyAnswerHasNoLogprobsKey) {
+  auto chat = parse_response_body(WireFormat::kOpenAiChat,
+                                  R"({"choices":[{"finish_reason":"stop","index":0,"message":{"role":"assistant","content":""}}]})");
+  ASSERT_TRUE(chat.has_value()) << chat.error().describe();
+  EXPECT_EQ(logprobs_arrived(*chat), LogprobsArrived::kNoText);
+  auto text = parse_response_body(WireFormat::kOpenAi, R"({"choices":[{"text":" Open","logprobs":null}]})");
+  ASSERT_TRUE(text.has_value());
+  EXPECT_EQ(logprobs_arrived(*text), LogprobsArrived::kNo);  // a server without them
+}
+
+TEST(WireFormatTest, LlamaServersByteTokensCarryOnlyTheLastBytesLogprob) {
+  // "é" from two byte tokens: one entry, the second byte's -6, with the
+  // byte 169 as its alternative.
+  auto native = parse_response_body(WireFormat::kLlamaNative, R"({"content":" caf\u00e9","stop_type":"limit",
+    "completion_probabilities":[{"token":" caf","bytes":[32,99,97,102],"logprob":-0.25,"top_logprobs":[]},
+    {"token":"\u00e9","bytes":[195,169],"logprob":-6.0,"top_logprobs":[{"token":"","bytes":[169],"logprob":-6.0}]}]})");
+  ASSERT_TRUE(native.has_value()) << native.error().describe();
+  ASSERT_EQ(native->tokens.size(), 2u);
+  EXPECT_EQ(native->tokens[1].token, "\xC3\xA9");
+  EXPECT_TRUE(std::isnan(native->tokens[1].logprob));
+  EXPECT_TRUE(native->top_logprobs[1].empty());
+  EXPECT_DOUBLE_EQ(*mean_logprob(native->tokens), -0.25);
+  // A character that is one token of the vocabulary keeps its own.
+  auto whole = parse_response_body(WireFormat::kLlamaNative, R"({"content":"\u00e9","completion_probabilities":[
+    {"token":"\u00e9","bytes":[195,169],"logprob":-0.5,"top_logprobs":[{"token":"\u00e9","bytes":[195,169],"logprob":-0.5}]}]})");
+  ASSERT_TRUE(whole.has_value());
+  EXPECT_DOUBLE_EQ(whole->tokens[0].logprob, -0.5);
+}
+
+TEST(WireFormatTest, LlamaServersEndOfSequenceEntryIsNotCounted) {
+  auto chat = parse_response_body(WireFormat::kOpenAiChat, R"({"choices":[{"finish_reason":"stop","index":0,
+    "message":{"role":"assistant","content":" Open it"},"logprobs":{"content":[
+    {"token":" Open","bytes":[32,79,112,101,110],"logprob":-0.2,"top_logprobs":[]},
+    {"token":"","bytes":[],"logprob":-1.0,"top_logprobs":[]},
+    {"token":" it","bytes":[32,105,116],"logprob":-0.3,"top_logprobs":[]},
+    {"token":"","bytes":[],"logprob":-9.0,"top_logprobs":[{"token":"","bytes":[],"logprob":-9.0},{"token":" now","logprob":-9.5}]}]}}]})");
+  ASSERT_TRUE(chat.has_value()) << chat.error().describe();
+  ASSERT_EQ(chat->tokens.size(), 3u);
+  EXPECT_DOUBLE_EQ(chat->tokens[1].logprob, -1.3);  // the held-back token joins the next
+  EXPECT_EQ(chat->tokens[2].token, "");
+  EXPECT_TRUE(std::isnan(chat->tokens[2].logprob));  // the end of the sequence: not text
+  EXPECT_EQ(chat->top_logprobs[2].size(), 2u);        // its alternatives kept
+  EXPECT_DOUBLE_EQ(*mean_logprob(chat->tokens), -0.75);
+}
+
 TEST(WireFormatTest, Utf8Validation) {
   EXPECT_FALSE(find_invalid_utf8("plain ascii").has_value());
   EXPECT_FALSE(find_invalid_utf8("caf\xC3\xA9 \xE2\x82\xAC \xF0\x9F\x8D\xBD").has_value());
