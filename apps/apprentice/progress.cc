@@ -26,6 +26,8 @@ std::string describe_query(const llm::QueryAbout& about) {
     case llm::QueryKind::kGoal: return "a goal for " + object;
     case llm::QueryKind::kActionWord:
     case llm::QueryKind::kAction: return "the next step for " + object;
+    case llm::QueryKind::kSummary: return "the rule of the examples taught";
+    case llm::QueryKind::kPlacement: return "where " + std::to_string(about.objects.size()) + " things go";
   }
   return object;
 }

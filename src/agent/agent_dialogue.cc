@@ -107,6 +107,13 @@ TaskLearningAgent::Session::Flow<TaskLearningAgent::Session::Heard> TaskLearning
     }
     if (rescue && std::holds_alternative<language::Unusable>(reply))
       if (auto rescued = rescue(*text)) reply = std::move(*rescued);
+    // A person's rule is kept whatever was asked, and the question asked
+    // again (a program is asked at most max_retries times).
+    if (auto rule = rule_in_reply(*text, reply, context)) {
+      hear_rule(*rule, *text);
+      if (!person() && ++unusable > agent_.options_.max_retries) return Heard{std::nullopt, *text};
+      continue;
+    }
     std::optional<std::string> why;
     std::vector<std::string> examples;
     if (const auto* u = std::get_if<language::Unusable>(&reply)) {

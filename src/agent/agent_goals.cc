@@ -49,6 +49,11 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
                                                                                              ObjectReport& report) {
   std::optional<Goal> goal;
   if (agent_.options_.condition.llm) {
+    auto placed = goal_from_llm_placement(object, report);
+    if (!placed) return placed;
+    goal = *placed;
+  }
+  if (!goal && agent_.options_.condition.llm) {
     auto from_llm = goal_from_llm(object, report);
     if (!from_llm) return from_llm;
     goal = *from_llm;

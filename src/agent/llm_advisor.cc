@@ -60,6 +60,33 @@ std::vector<llm::Candidate> LlmAdvisor::actions(const llm::TaskContext& context,
   return retrieval.candidates;
 }
 
+std::string LlmAdvisor::ask(const llm::CompletionRequest& request) {
+  last_failure_.reset();
+  if (stopped_) return {};
+  const llm::LlmUsage before = client_->usage();
+  llm::Retrieval retrieval;
+  auto answer = client_->complete(request);
+  retrieval.queries = 1;
+  if (!answer) retrieval.failure = answer.error();
+  account(retrieval, before);
+  if (!answer || !answer->answered) return {};
+  return answer->text;
+}
+
+std::string LlmAdvisor::summarize(const std::vector<std::string>& receptacles,
+                                  const std::vector<llm::ThingPlace>& examples) {
+  if (!preference_prompts_ || examples.empty()) return {};
+  return llm::read_summary(ask(preference_prompts_->summary_request(receptacles, examples)));
+}
+
+std::vector<llm::ThingPlace> LlmAdvisor::place(const std::vector<std::string>& receptacles, const std::string& rule,
+                                               const std::vector<llm::ThingPlace>& examples,
+                                               const std::vector<std::string>& objects) {
+  if (!preference_prompts_ || objects.empty()) return {};
+  return llm::read_placements(ask(preference_prompts_->placement_request(receptacles, rule, examples, objects)),
+                              objects, receptacles);
+}
+
 LlmTotals LlmAdvisor::totals() const {
   const llm::LlmUsage& usage = client_->usage();
   return LlmTotals{static_cast<int>(usage.queries),

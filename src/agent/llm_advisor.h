@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "llm/llm_client.h"
+#include "llm/preference_prompts.h"
 #include "llm/prompts.h"
 #include "llm/retrieval.h"
 
@@ -60,6 +61,19 @@ class LlmAdvisor {
                                       const std::vector<std::string>& steps_so_far,
                                       const llm::IsKnownActionWord& is_known_action_word);
 
+  // A person's preferences (llm/preference_prompts.h), once the prompts are
+  // given (without them these ask nothing). The rule the `examples` follow,
+  // in one sentence ("" when the LLM has none, or fails); and where each of
+  // `objects` goes, among `receptacles`, by `rule` when it is not empty,
+  // else by the examples, else by common sense (those it places, in the
+  // world's words).
+  void set_preference_prompts(llm::PreferencePrompts prompts) { preference_prompts_ = std::move(prompts); }
+  bool knows_preference_prompts() const { return preference_prompts_.has_value(); }
+  std::string summarize(const std::vector<std::string>& receptacles, const std::vector<llm::ThingPlace>& examples);
+  std::vector<llm::ThingPlace> place(const std::vector<std::string>& receptacles, const std::string& rule,
+                                     const std::vector<llm::ThingPlace>& examples,
+                                     const std::vector<std::string>& objects);
+
   LlmTotals totals() const;
   // The error that cut the last retrieval short, if any (none when the
   // advisor did not ask at all).
@@ -72,9 +86,13 @@ class LlmAdvisor {
  private:
   // Keeps the counts after a retrieval that made queries from `before`.
   void account(const llm::Retrieval& retrieval, const llm::LlmUsage& before);
+  // One query of its own, counted as a retrieval is; the answer's text ("" when
+  // there is none or it failed).
+  std::string ask(const llm::CompletionRequest& request);
 
   std::unique_ptr<llm::LlmClient> client_;
   llm::PromptTemplates templates_;
+  std::optional<llm::PreferencePrompts> preference_prompts_;
   LlmAdvisorOptions options_;
   int consecutive_failures_ = 0;
   bool warned_ = false;

@@ -15,6 +15,7 @@
 #include <set>
 
 #include "agent/agent.h"
+#include "agent/llm_preferences.h"
 #include "agent/transfer.h"
 #include "language/reply.h"
 
@@ -176,6 +177,20 @@ class TaskLearningAgent::Session {
   Flow<std::optional<Goal>> goal_from_llm(ObjectId object, ObjectReport& report);
   Flow<std::optional<Goal>> goal_from_instructor(ObjectId object, ObjectReport& report);
   Status learn_goal(ObjectId object, const Goal& goal, const std::string& source);
+  // The LLM's placement of `object` (agent_llm_placement.cc; LlmPreferences,
+  // asked once per session for every thing to place), confirmed by the
+  // instructor where there is one; nullopt when it placed it nowhere, the
+  // instructor says no, or there is no LLM.
+  Flow<std::optional<Goal>> goal_from_llm_placement(ObjectId object, ObjectReport& report);
+  // A person's rules (agent_person_rules.cc). A reply that states one ("toys
+  // go in the storage box and fruits on the coffee table",
+  // language/rule_reader.h) rather than an answer `reply` can use: its
+  // reading, else nullopt.
+  std::optional<language::RuleReading> rule_in_reply(const std::string& text, const language::Reply& reply,
+                                                     const language::ReplyContext& context) const;
+  // Keeps a rule the person said, and says what was understood of it and
+  // what was not.
+  void hear_rule(const language::RuleReading& rule, const std::string& text);
   // Knowledge across worlds (agent_transfer.cc): the goal of the nearest
   // kind learned before, proposed to the teacher as a yes/no question, or,
   // alone, adopted at kAdoptAnalogyAt or more. nullopt when there is none,
@@ -241,6 +256,10 @@ class TaskLearningAgent::Session {
   // What the agent knew, in this world's words, and the analogies it offers.
   // Constructed last: it renames the agent's knowledge when the session starts.
   KnowledgeTransfer transfer_;
+  // The person's rules said this session, as said, and what the LLM says of
+  // the person's preferences (asked once, when a thing first needs it).
+  std::vector<std::string> rules_said_;
+  LlmPreferences llm_preferences_;
 };
 
 }  // namespace apprentice

@@ -163,9 +163,13 @@ Result<std::unique_ptr<LlmAdvisor>> make_advisor(const BenchmarkOptions& options
   if (!client) return tl::unexpected(client.error());
   auto templates = llm::PromptTemplates::load(options.prompts_dir);
   if (!templates) return tl::unexpected(templates.error());
+  auto preferences = llm::PreferencePrompts::load(options.prompts_dir);
+  if (!preferences) return tl::unexpected(preferences.error());
   LlmAdvisorOptions advice;
   advice.instructed = setting.teacher;
-  return std::make_unique<LlmAdvisor>(std::move(*client), std::move(*templates), advice);
+  auto advisor = std::make_unique<LlmAdvisor>(std::move(*client), std::move(*templates), advice);
+  advisor->set_preference_prompts(std::move(*preferences));
+  return advisor;
 }
 
 Result<SettingResult> run_setting(Bench& bench, const std::vector<TidyBotScenario>& scenarios, const Setting& setting) {

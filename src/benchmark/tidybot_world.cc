@@ -27,6 +27,10 @@ std::vector<std::string> name_words(std::string_view name) {
   return split_words(cleaned);
 }
 
+bool is_number(std::string_view word) {
+  return !word.empty() && std::all_of(word.begin(), word.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
 // The hyphenated name, made of ASCII letters, digits and hyphens only
 // (other bytes are dropped), as the scenario format requires.
 std::string hyphenated(const std::vector<std::string>& words) {
@@ -41,14 +45,13 @@ std::string hyphenated(const std::vector<std::string>& words) {
   return out.empty() ? std::string("thing") : out;
 }
 
-bool is_number(std::string_view word) {
-  return !word.empty() && std::all_of(word.begin(), word.end(), [](char c) { return c >= '0' && c <= '9'; });
-}
-
 // Whether WordNet puts a sense of the noun within a few steps below a
-// container or a storage space: a place things go *in*.
-bool holds_things_in(const language::Lexicon& lexicon, const std::vector<std::string>& words) {
+// container or a storage space, or says near it that things are stored
+// there or that it is a basin (a cabinet, a refrigerator, a sink): a place
+// things go *in*. A trailing number ("bin 1") is not part of the noun.
+bool holds_things_in(const language::Lexicon& lexicon, std::vector<std::string> words) {
   const language::WordNet* wordnet = lexicon.wordnet();
+  while (!words.empty() && is_number(words.back())) words.pop_back();
   if (wordnet == nullptr || words.empty()) return false;
   std::vector<language::SynsetOffset> senses = wordnet->noun_senses(join(words, " "));
   if (senses.empty()) senses = wordnet->noun_senses(words.back());
@@ -56,6 +59,12 @@ bool holds_things_in(const language::Lexicon& lexicon, const std::vector<std::st
     for (const std::string& lemma : wordnet->noun_base_forms(words.back()))
       if (senses.empty()) senses = wordnet->noun_senses(lemma);
   constexpr int kMaxSteps = 5;
+  constexpr int kMaxGlossSteps = 1;  // the sense's own definition and its hypernyms'
+  auto says_stored = [](const std::string& gloss) {
+    for (std::string_view word : {"stored", "storage", "storing", "basin"})
+      if (gloss.find(word) != std::string::npos) return true;
+    return false;
+  };
   for (language::SynsetOffset sense : senses) {
     auto synset = wordnet->synset(sense);
     if (!synset || synset->lexicographer_file != language::kLexArtifact) continue;
@@ -69,6 +78,7 @@ bool holds_things_in(const language::Lexicon& lexicon, const std::vector<std::st
         if (!s) continue;
         for (const std::string& lemma : s->lemmas)
           if (lemma == "container" || lemma == "storage space") return true;
+        if (step <= kMaxGlossSteps && says_stored(s->gloss)) return true;
         next.insert(next.end(), s->hypernyms.begin(), s->hypernyms.end());
       }
       frontier = std::move(next);

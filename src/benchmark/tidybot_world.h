@@ -10,8 +10,9 @@
 // box" is a storage-box with the property left, told apart from the right
 // one as every look-alike place is (docs/scenarios.md); a receptacle is a
 // place things go in when WordNet calls it a container or a storage space
-// (basket, drawer, closet), otherwise a surface things go on (shelf, sofa,
-// coffee table). A second object of a kind ("pillow 2" beside "pillow",
+// (basket, drawer, closet), or says things are stored in it or that it is
+// a basin (cabinet, refrigerator, sink); otherwise a surface things go on
+// (shelf, sofa, coffee table). A second object of a kind ("pillow 2" beside "pillow",
 // going to the same place) is another object of that kind.
 #pragma once
 

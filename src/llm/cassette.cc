@@ -25,6 +25,11 @@ json about_to_json(const QueryAbout& about) {
          {"steps", about.steps_so_far},       {"action_word", about.action_word}};
   // Only re-prompts carry it, so cassettes of first queries keep their bytes.
   if (!about.rejected.empty()) j["rejected"] = about.rejected;
+  // Only preference queries (llm/preference_prompts.h) carry these.
+  if (!about.receptacles.empty()) j["receptacles"] = about.receptacles;
+  if (!about.examples.empty()) j["examples"] = about.examples;
+  if (!about.summary.empty()) j["summary"] = about.summary;
+  if (!about.objects.empty()) j["objects"] = about.objects;
   return j;
 }
 
@@ -41,6 +46,10 @@ QueryAbout about_from_json(const json& j) {
   about.steps_so_far = j.value("steps", std::vector<std::string>{});
   about.action_word = j.value("action_word", "");
   about.rejected = j.value("rejected", std::vector<std::string>{});
+  about.receptacles = j.value("receptacles", std::vector<std::string>{});
+  about.examples = j.value("examples", std::vector<std::pair<std::string, std::string>>{});
+  about.summary = j.value("summary", "");
+  about.objects = j.value("objects", std::vector<std::string>{});
   return about;
 }
 
@@ -183,6 +192,14 @@ std::string meaning_key(const QueryAbout& about) {
     json rejected = json::array();
     for (const std::string& statement : about.rejected) rejected.push_back(normalize_label(statement));
     key.push_back(rejected);
+  }
+  if (about.kind == QueryKind::kSummary || about.kind == QueryKind::kPlacement) {
+    json receptacles = json::array(), examples = json::array(), objects = json::array();
+    for (const std::string& r : about.receptacles) receptacles.push_back(normalize_label(r));
+    for (const auto& [thing, place] : about.examples)
+      examples.push_back(json::array({normalize_label(thing), normalize_label(place)}));
+    for (const std::string& o : about.objects) objects.push_back(normalize_label(o));
+    key.push_back(json::array({receptacles, examples, normalize_label(about.summary), objects}));
   }
   return dump(key);
 }

@@ -6,6 +6,7 @@
 
 #include "llm/cassette.h"
 #include "llm/corpus_client.h"
+#include "llm/placement_corpus.h"
 #include "llm/http_client.h"
 #include "util/text.h"
 
@@ -252,6 +253,16 @@ Result<std::unique_ptr<LlmClient>> make_llm_client(std::string_view spec, const 
       return std::unique_ptr<LlmClient>(std::move(*client));
     }
     case ParsedSpec::Kind::kCorpus: {
+      // Recorded summaries and placements (the TidyBot benchmark's) rather than goal statements.
+      if (PlacementCorpusClient::recognizes(parsed->target)) {
+        if (parsed->selection.pool_all || !parsed->selection.condition.empty())
+          return make_error(ErrorCode::kInvalidInput, "corpus: " + parsed->target +
+                                                          " holds summaries and placements, which have no conditions "
+                                                          "to choose (no ,condition= or ,pool=)");
+        auto placements = PlacementCorpusClient::open(parsed->target);
+        if (!placements) return tl::unexpected(placements.error());
+        return std::unique_ptr<LlmClient>(std::move(*placements));
+      }
       auto client = CorpusClient::open(parsed->target, parsed->selection);
       if (!client) return tl::unexpected(client.error());
       return std::unique_ptr<LlmClient>(std::move(*client));

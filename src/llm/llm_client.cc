@@ -16,12 +16,15 @@ std::string_view to_string(QueryKind kind) {
     case QueryKind::kGoal: return "goal";
     case QueryKind::kActionWord: return "action_word";
     case QueryKind::kAction: return "action";
+    case QueryKind::kSummary: return "summary";
+    case QueryKind::kPlacement: return "placement";
   }
   return "goal";
 }
 
 std::optional<QueryKind> query_kind_from_string(std::string_view text) {
-  for (QueryKind kind : {QueryKind::kGoal, QueryKind::kActionWord, QueryKind::kAction}) {
+  for (QueryKind kind : {QueryKind::kGoal, QueryKind::kActionWord, QueryKind::kAction, QueryKind::kSummary,
+                         QueryKind::kPlacement}) {
     if (to_string(kind) == text) return kind;
   }
   return std::nullopt;

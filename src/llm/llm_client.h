@@ -17,11 +17,14 @@
 
 namespace apprentice::llm {
 
-// What a query asks for (the three query types of the paper's appendix).
+// What a query asks for: the three query types of the paper's appendix,
+// and the two of a person's preferences (llm/preference_prompts.h).
 enum class QueryKind {
   kGoal,        // a goal statement for an object (goal template)
   kActionWord,  // the top-k first words of the next step (action template)
   kAction,      // the rest of a step after a chosen first word
+  kSummary,     // the rule a person's placements follow, in one sentence
+  kPlacement,   // where each of several things goes, by a rule or by examples
 };
 
 std::string_view to_string(QueryKind kind);
@@ -42,6 +45,15 @@ struct QueryAbout {
   // instructor, or unusable), which the prompt lists so that the model
   // proposes something else. Empty for a first query.
   std::vector<std::string> rejected;
+  // kSummary, kPlacement: the places things go, in the world's words
+  // ("left storage box"); the [thing, place] examples the person gave
+  // (kSummary, and kPlacement by examples); the rule to place by
+  // (kPlacement; empty: by the examples, or with neither by common sense);
+  // the things to place (kPlacement).
+  std::vector<std::string> receptacles = {};
+  std::vector<std::pair<std::string, std::string>> examples = {};
+  std::string summary = {};
+  std::vector<std::string> objects = {};
 
   friend bool operator==(const QueryAbout&, const QueryAbout&) = default;
 };

@@ -6,7 +6,11 @@
 #include <nlohmann/json.hpp>
 
 #include "benchmark/tidybot_benchmark.h"
+#include <fstream>
+
 #include "common/paths.h"
+#include "common/scratch.h"
+#include "llm/factory.h"
 #include "tidybot_fixtures.h"
 
 namespace apprentice::benchmark {
@@ -117,6 +121,42 @@ TEST_F(TidyBotRun, TheJsonHasTheCountsOfEachSetting) {
   EXPECT_THAT(table, HasSubstr("a-alone"));
   EXPECT_THAT(table, HasSubstr("CLIP embeddings 83.7%"));
   EXPECT_THAT(table, HasSubstr("Skipped for want of an LLM: a-alone+llm"));
+}
+
+// The LLM settings with answers recorded for the two scenarios: a summary
+// asked of the seen placements and placements by it (protocol A), and
+// placements by the person's note (protocol B).
+TEST(TidyBotWithAnLlm, TheLlmsPlacementsAreActedOnAloneAndConfirmedWithTheTeacher) {
+  apprentice::testing::ScratchDir scratch;
+  const auto corpus = scratch / "answers.jsonl";
+  std::ofstream(corpus) << testing::kTwoScenariosAnswers;
+  auto scenarios = parse_tidybot_scenarios(testing::kTwoScenarios, "two.yml");
+  ASSERT_TRUE(scenarios);
+  BenchmarkOptions options;
+  options.prompts_dir = apprentice::testing::source_path("data/prompts");
+  options.domain = apprentice::testing::source_path("data/domains/kitchen.pddl");
+  options.llm = [corpus] { return llm::make_llm_client("corpus:" + corpus.string(), llm::LlmOptions{}); };
+  for (const char* name : {"a-alone+llm", "a-teacher+llm", "b-alone+llm"}) options.settings.push_back(*parse_setting(name));
+  auto results = run_tidybot(*scenarios, options);
+  ASSERT_TRUE(results) << results.error().describe();
+  const SettingResult& alone = results->results[0];
+  // The shirt and the block as the LLM placed them, the second polo shirt
+  // by what was taught; the coffee mug where the LLM (wrongly) put it.
+  EXPECT_EQ(alone.total.right, 3);
+  EXPECT_EQ(alone.total.wrong, 1);
+  EXPECT_EQ(alone.scenarios[1].objects[0].placed, "bottom shelf");
+  EXPECT_EQ(alone.total.questions, 0);
+  EXPECT_GT(alone.llm_calls, 0);
+  const SettingResult& taught = results->results[1];
+  EXPECT_EQ(taught.total.right, 4) << "the teacher says no to the wrong shelf";
+  EXPECT_GE(taught.total.questions, 1);
+  // By the note, which is word for word the summary: every object, the
+  // seen from the answer recorded by the note, the unseen from the one
+  // recorded by the summary (the same rule, so the same query).
+  const SettingResult& note = results->results[2];
+  EXPECT_EQ(note.scenarios[0].tally.right, 5);
+  EXPECT_EQ(note.scenarios[1].tally.right, 2);
+  EXPECT_EQ(note.scenarios[1].tally.wrong, 1) << "the coffee mug, on the bottom shelf";
 }
 
 TEST(TidyBotSettings, ASettingWithAnLlmNeedsOne) {

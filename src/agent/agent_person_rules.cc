@@ -1,0 +1,63 @@
+// A person's rules in the session: said at any question
+// (language/rule_reader.h), kept, read back.
+#include <algorithm>
+
+#include "agent/session.h"
+#include "language/generation.h"
+#include "language/narration.h"
+#include "util/log.h"
+#include "util/text.h"
+
+namespace apprentice {
+
+namespace {
+
+// Words that name things in general, not a class of them: "heavy items",
+// "everything plastic".
+bool is_general_word(std::string_view word) {
+  return is_one_of(word, {"item", "thing", "object", "stuff", "product", "good", "one", "article", "belonging"});
+}
+
+}  // namespace
+
+std::optional<language::RuleReading> TaskLearningAgent::Session::rule_in_reply(
+    const std::string& text, const language::Reply& reply, const language::ReplyContext& context) const {
+  auto rule = language::read_rule(world(), agent_.understanding_.lexicon(), text, context.object);
+  if (!rule || !rule->has_class_clause()) return std::nullopt;
+  // A class that is only the world's kinds named in the plural ("plates and
+  // forks go in the dishwasher") is the reply's ordinary reading; so is "an
+  // object" ("Repeat the following tasks while an object is on the table").
+  auto a_class_of_its_own = [&](const language::RuleClass& c) {
+    if (c.rest) return true;
+    if (c.phrase.empty() || (is_general_word(c.head) && c.modifiers.empty())) return false;
+    if (is_general_word(c.head)) return true;
+    return !agent_.understanding_.category(world(), c.phrase).has_value();
+  };
+  std::size_t class_clauses = 0;
+  bool rest = false;
+  for (const language::RuleClause& clause : rule->clauses) {
+    if (clause.thing) continue;
+    if (std::any_of(clause.classes.begin(), clause.classes.end(), a_class_of_its_own)) ++class_clauses;
+    rest = rest || std::any_of(clause.classes.begin(), clause.classes.end(), [](const auto& c) { return c.rest; });
+  }
+  if (class_clauses == 0) return std::nullopt;
+  // What the reply's own reading takes ("tools go in the top drawer": each
+  // tool's goal) is left to it, unless the rule says more than one clause or
+  // "other".
+  const bool understood = !std::holds_alternative<language::Unusable>(reply);
+  if (understood && class_clauses < 2 && !rest) return std::nullopt;
+  return rule;
+}
+
+void TaskLearningAgent::Session::hear_rule(const language::RuleReading& rule, const std::string& text) {
+  rules_said_.push_back(text);
+  say(language::read_back_rule(world(), rule));
+  if (!rule.not_understood.empty()) {
+    std::vector<std::string> parts;
+    for (const std::string& part : rule.not_understood) parts.push_back("\"" + part + "\"");
+    say("I did not follow " + language::list_phrase(parts) + "; I will ask about those things when I come to them.");
+  }
+  spdlog::info("a person's rule: {}", language::read_back_rule(world(), rule));
+}
+
+}  // namespace apprentice

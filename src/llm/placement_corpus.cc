@@ -1,0 +1,178 @@
+#include "llm/placement_corpus.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <nlohmann/json.hpp>
+
+#include "llm/preference_prompts.h"
+#include "util/file.h"
+#include "util/text.h"
+
+namespace apprentice::llm {
+
+namespace {
+
+using nlohmann::json;
+
+std::set<std::string> keys_of(const std::vector<std::string>& names, NameOf of) {
+  std::set<std::string> out;
+  for (const std::string& name : names) out.insert(name_key(name, of));
+  return out;
+}
+
+std::set<std::pair<std::string, std::string>> pair_keys(const std::vector<std::pair<std::string, std::string>>& pairs) {
+  std::set<std::pair<std::string, std::string>> out;
+  for (const auto& [thing, place] : pairs) out.emplace(name_key(thing), name_key(place, NameOf::kPlace));
+  return out;
+}
+
+// A rule compared as said: lower case, spaces collapsed, no final period.
+std::string rule_key(std::string_view rule) {
+  std::string text = to_lower(join(split_words(rule), " "));
+  while (!text.empty() && (text.back() == '.' || text.back() == ' ')) text.pop_back();
+  return text;
+}
+
+std::vector<std::string> strings(const json& value) {
+  std::vector<std::string> out;
+  for (const json& item : value) out.push_back(item.get<std::string>());
+  return out;
+}
+
+std::vector<std::pair<std::string, std::string>> pairs(const json& value) {
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const json& pair : value) {
+    if (!pair.is_array() || pair.size() != 2) throw std::runtime_error("expected [object, receptacle] pairs");
+    out.emplace_back(pair[0].get<std::string>(), pair[1].get<std::string>());
+  }
+  return out;
+}
+
+std::vector<TokenLogprob> word_tokens(std::string_view text) {
+  std::vector<TokenLogprob> tokens;
+  for (const std::string& word : split_words(text))
+    tokens.push_back(TokenLogprob{tokens.empty() ? word : " " + word, std::numeric_limits<double>::quiet_NaN()});
+  return tokens;
+}
+
+}  // namespace
+
+bool PlacementCorpusClient::recognizes(const std::filesystem::path& path) {
+  auto lines = read_input_lines(path);
+  if (!lines) return false;
+  for (const std::string& line : *lines) {
+    if (trim(line).empty()) continue;
+    json record = json::parse(line, nullptr, false);
+    return record.is_object() && record.contains("method") && record.contains("step");
+  }
+  return false;
+}
+
+Result<std::unique_ptr<PlacementCorpusClient>> PlacementCorpusClient::open(const std::filesystem::path& path) {
+  auto lines = read_input_lines(path);
+  if (!lines) return tl::unexpected(prefix_error(lines.error(), "the placement corpus"));
+  std::vector<Summary> summaries;
+  std::vector<Placements> placements;
+  std::size_t number = 0;
+  for (const std::string& line : *lines) {
+    ++number;
+    if (trim(line).empty()) continue;
+    try {
+      json record = json::parse(line);
+      if (!record.is_object()) throw std::runtime_error("not a JSON object");
+      const std::string method = record.at("method").get<std::string>();
+      const std::string step = record.at("step").get<std::string>();
+      const Keys receptacles = keys_of(strings(record.at("receptacles")), NameOf::kPlace);
+      if (step == "summary") {
+        summaries.push_back(Summary{receptacles, pair_keys(pairs(record.at("examples"))),
+                                    std::string(trim(record.at("summary").get<std::string>()))});
+        continue;
+      }
+      if (step != "placement") throw std::runtime_error("step is neither summary nor placement");
+      Placements entry;
+      entry.receptacles = receptacles;
+      if (method == "summarization" || method == "human-summary") {
+        entry.knowledge = Placements::Knowledge::kRule;
+        entry.rule = rule_key(record.at("summary").get<std::string>());
+      } else if (method == "examples-only") {
+        entry.knowledge = Placements::Knowledge::kExamples;
+        entry.examples = pair_keys(pairs(record.at("examples")));
+      } else if (method != "commonsense") {
+        throw std::runtime_error("unknown method " + apprentice::quoted(method));
+      }
+      entry.objects = keys_of(strings(record.at("objects")), NameOf::kThing);
+      for (const auto& [thing, place] : pairs(record.at("placements"))) {
+        const std::string key = name_key(thing);
+        auto placed = [&](const auto& p) { return p.first == key; };
+        if (std::none_of(entry.placed.begin(), entry.placed.end(), placed)) entry.placed.emplace_back(key, place);
+      }
+      placements.push_back(std::move(entry));
+    } catch (const std::exception& e) {
+      return make_error(ErrorCode::kDataLoss,
+                        path.string() + ":" + std::to_string(number) + ": not a placement corpus line: " + e.what());
+    }
+  }
+  return std::unique_ptr<PlacementCorpusClient>(
+      new PlacementCorpusClient(path, std::move(summaries), std::move(placements)));
+}
+
+std::string PlacementCorpusClient::describe() const {
+  return "corpus " + path_.string() + " (recorded summaries and placements)";
+}
+
+std::string PlacementCorpusClient::summary_for(const QueryAbout& about) const {
+  const Keys receptacles = keys_of(about.receptacles, NameOf::kPlace);
+  const PairKeys examples = pair_keys(about.examples);
+  for (const Summary& s : summaries_)
+    if (s.receptacles == receptacles && s.examples == examples) return s.summary;
+  return {};
+}
+
+std::string PlacementCorpusClient::placements_for(const QueryAbout& about) const {
+  const Keys receptacles = keys_of(about.receptacles, NameOf::kPlace);
+  const std::string rule = rule_key(about.summary);
+  const PairKeys examples = pair_keys(about.examples);
+  const Keys objects = keys_of(about.objects, NameOf::kThing);
+  std::vector<const Placements*> matching;
+  for (const Placements& p : placements_) {
+    if (p.receptacles != receptacles) continue;
+    const bool same = !rule.empty() ? p.knowledge == Placements::Knowledge::kRule && p.rule == rule
+                      : !examples.empty() ? p.knowledge == Placements::Knowledge::kExamples && p.examples == examples
+                                          : p.knowledge == Placements::Knowledge::kNone;
+    if (same) matching.push_back(&p);
+  }
+  auto overlap = [&](const Placements* p) {
+    return std::count_if(objects.begin(), objects.end(), [&](const std::string& o) { return p->objects.contains(o); });
+  };
+  std::stable_sort(matching.begin(), matching.end(),
+                   [&](const Placements* a, const Placements* b) { return overlap(a) > overlap(b); });
+  std::string out;
+  for (const std::string& object : about.objects) {
+    const std::string key = name_key(object);
+    for (const Placements* p : matching) {
+      auto found = std::find_if(p->placed.begin(), p->placed.end(), [&](const auto& e) { return e.first == key; });
+      if (found == p->placed.end()) continue;
+      out += (out.empty() ? "" : "\n") + object + " -> " + found->second;
+      break;
+    }
+  }
+  return out;
+}
+
+Result<Completion> PlacementCorpusClient::do_complete(const CompletionRequest& request) {
+  Completion completion;
+  completion.source = ResponseSource::kCorpus;
+  completion.finish_reason = "stop";
+  completion.prompt_tokens = static_cast<int64_t>(split_words(request.prompt).size());
+  const QueryAbout& about = request.about;
+  if (about.kind == QueryKind::kSummary) completion.text = summary_for(about);
+  else if (about.kind == QueryKind::kPlacement) completion.text = placements_for(about);
+  completion.answered = !completion.text.empty();
+  completion.tokens = word_tokens(completion.text);
+  completion.completion_tokens = static_cast<int64_t>(completion.tokens.size());
+  return completion;
+}
+
+}  // namespace apprentice::llm

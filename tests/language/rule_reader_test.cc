@@ -1,0 +1,183 @@
+// Reading a person's rule (language/rule_reader.h): every clause it
+// understood, by class and place, the rest by name, in a living room
+// written here.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "common/paths.h"
+#include "language/rule_reader.h"
+
+namespace apprentice::language {
+namespace {
+
+using ::testing::ElementsAre;
+using ::testing::IsEmpty;
+
+constexpr const char* kLivingRoom = R"(name: living-room
+domain: data/domains/kitchen.pddl
+location: living room
+places:
+  - {category: cart, kind: surface}
+  - {category: storage-box, kind: receptacle}
+  - {category: coffee-table, kind: surface}
+  - {category: shelf, kind: surface, properties: [left]}
+  - {category: shelf, kind: surface, properties: [right]}
+  - {category: sofa, kind: surface}
+  - {category: rack, kind: surface}
+  - {category: drawer, kind: receptacle, properties: [top]}
+  - {category: drawer, kind: receptacle, properties: [bottom]}
+objects:
+  - {category: sweater, at: cart1}
+  - {category: teddy-bear, at: cart1}
+  - {category: banana, at: cart1}
+)";
+
+class RuleReader : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    auto scenario = parse_scenario(kLivingRoom, apprentice::testing::source_path("living-room.yaml"));
+    ASSERT_TRUE(scenario) << scenario.error().describe();
+    scenario_ = std::move(*scenario);
+  }
+  const World& world() const { return scenario_.world; }
+  ObjectId id(std::string_view name) const { return *world().universe->find(name); }
+  std::optional<RuleReading> read(std::string_view text) const { return read_rule(world(), lexicon_, text); }
+  std::vector<std::string> heads(const RuleClause& clause) const {
+    std::vector<std::string> out;
+    for (const RuleClass& c : clause.classes) out.push_back(say_rule_class(c));
+    return out;
+  }
+
+  Scenario scenario_;
+  Lexicon lexicon_ = Lexicon::open_default();
+};
+
+TEST_F(RuleReader, TwoClassesTwoPlaces) {
+  auto rule = read("Put toys in the storage box and fruits on the coffee table");
+  ASSERT_TRUE(rule);
+  ASSERT_EQ(rule->clauses.size(), 2u);
+  EXPECT_THAT(heads(rule->clauses[0]), ElementsAre("toys"));
+  EXPECT_THAT(rule->clauses[0].places, ElementsAre(id("storage-box1")));
+  EXPECT_THAT(heads(rule->clauses[1]), ElementsAre("fruits"));
+  EXPECT_THAT(rule->clauses[1].places, ElementsAre(id("coffee-table1")));
+  EXPECT_THAT(rule->not_understood, IsEmpty());
+  EXPECT_TRUE(rule->has_class_clause());
+  if (lexicon_.has_wordnet()) {
+    EXPECT_EQ(rule->clauses[0].classes[0].head, "toy");
+    EXPECT_EQ(rule->clauses[1].classes[0].head, "fruit");
+  }
+  EXPECT_EQ(read_back_rule(world(), *rule), "So toys go in the storage box and fruits go on the coffee table.");
+}
+
+TEST_F(RuleReader, AnAttributeAndAPlaceSaidByItsPropertyAlone) {
+  auto rule = read("heavy items on the left shelf, light ones on the right");
+  ASSERT_TRUE(rule);
+  ASSERT_EQ(rule->clauses.size(), 2u);
+  const RuleClass& heavy = rule->clauses[0].classes.at(0);
+  EXPECT_THAT(heavy.modifiers, ElementsAre("heavy"));
+  EXPECT_THAT(rule->clauses[0].places, ElementsAre(id("shelf1")));
+  const RuleClass& light = rule->clauses[1].classes.at(0);
+  EXPECT_THAT(light.modifiers, ElementsAre("light"));
+  EXPECT_EQ(light.head, heavy.head) << "\"ones\" are the items of the clause before";
+  EXPECT_EQ(light.phrase, "light " + heavy.head);
+  EXPECT_THAT(rule->clauses[1].places, ElementsAre(id("shelf2")));
+}
+
+TEST_F(RuleReader, OtherIsWhatTheOtherClausesLeave) {
+  auto rule = read("books and magazines on the coffee table, stuffed animals on the sofa, and other toys in the "
+                   "storage box");
+  ASSERT_TRUE(rule);
+  ASSERT_EQ(rule->clauses.size(), 3u);
+  EXPECT_THAT(heads(rule->clauses[0]), ElementsAre("books", "magazines"));
+  const RuleClass& stuffed = rule->clauses[1].classes.at(0);
+  EXPECT_THAT(stuffed.modifiers, ElementsAre("stuffed"));
+  EXPECT_EQ(stuffed.phrase, "stuffed animals");
+  EXPECT_FALSE(stuffed.rest);
+  const RuleClass& toys = rule->clauses[2].classes.at(0);
+  EXPECT_TRUE(toys.rest);
+  EXPECT_EQ(toys.phrase, "toys");
+  EXPECT_EQ(say_rule_class(toys), "other toys");
+  EXPECT_THAT(rule->clauses[2].places, ElementsAre(id("storage-box1")));
+}
+
+TEST_F(RuleReader, SaidInPassingWithAVerbOfItsOwn) {
+  auto rule = read("by the way, shoes always go on the rack");
+  ASSERT_TRUE(rule);
+  ASSERT_EQ(rule->clauses.size(), 1u);
+  EXPECT_THAT(heads(rule->clauses[0]), ElementsAre("shoes"));
+  EXPECT_THAT(rule->clauses[0].places, ElementsAre(id("rack1")));
+  for (std::string_view text : {"Shoes belong on the rack.", "I keep shoes on the rack", "shoes should go on the rack!",
+                                "Always put the shoes on the rack."}) {
+    auto again = read(text);
+    ASSERT_TRUE(again) << text;
+    ASSERT_EQ(again->clauses.size(), 1u) << text;
+    EXPECT_EQ(again->clauses[0].classes.at(0).phrase, "shoes") << text;
+    EXPECT_THAT(again->clauses[0].places, ElementsAre(id("rack1"))) << text;
+  }
+}
+
+TEST_F(RuleReader, OneUnknownPhraseNeverSinksTheRest) {
+  auto rule = read("Put electronics in the attic, toys in the storage box and then stuff.");
+  ASSERT_TRUE(rule);
+  ASSERT_EQ(rule->clauses.size(), 1u);
+  EXPECT_THAT(heads(rule->clauses[0]), ElementsAre("toys"));
+  EXPECT_THAT(rule->not_understood, ElementsAre("electronics in the attic", "stuff"));
+}
+
+TEST_F(RuleReader, OtherClothingIsAClassNotTheThingAskedAbout) {
+  auto rule = read("Put other clothing on the sofa.");
+  ASSERT_TRUE(rule);
+  ASSERT_EQ(rule->clauses.size(), 1u);
+  EXPECT_FALSE(rule->clauses[0].thing);
+  EXPECT_TRUE(rule->clauses[0].classes.at(0).rest);
+  EXPECT_EQ(rule->clauses[0].classes.at(0).phrase, "clothing");
+  EXPECT_EQ(read_back_rule(world(), *rule), "So other clothing goes on the sofa.");
+}
+
+TEST_F(RuleReader, AParticularThingIsAGoalNotARule) {
+  auto rule = read("the sweater goes in the storage box");
+  ASSERT_TRUE(rule);
+  ASSERT_EQ(rule->clauses.size(), 1u);
+  EXPECT_EQ(rule->clauses[0].thing, id("sweater1"));
+  EXPECT_FALSE(rule->has_class_clause());
+  auto it = read_rule(world(), lexicon_, "put it on the sofa", id("banana1"));
+  ASSERT_TRUE(it);
+  EXPECT_EQ(it->clauses.at(0).thing, id("banana1"));
+  // A class beside it is a rule.
+  auto both = read("the sweater goes in the storage box and toys on the sofa");
+  ASSERT_TRUE(both);
+  EXPECT_TRUE(both->has_class_clause());
+}
+
+TEST_F(RuleReader, APlainAnswerStatesNoRule) {
+  for (std::string_view text : {"in the storage box", "yes", "", "You are done.", "the storage box", "stuff"})
+    EXPECT_FALSE(read(text)) << text;
+}
+
+TEST_F(RuleReader, PlacesByPropertyByPluralAndAModifierAfterTheHead) {
+  auto rule = read("Put plastic items in the top drawer and things made of metal in the bottom drawer. "
+                   "Clothes go in the drawers.");
+  ASSERT_TRUE(rule);
+  ASSERT_EQ(rule->clauses.size(), 3u);
+  EXPECT_THAT(rule->clauses[0].places, ElementsAre(id("drawer1")));
+  EXPECT_THAT(rule->clauses[0].classes.at(0).modifiers, ElementsAre("plastic"));
+  EXPECT_THAT(rule->clauses[1].places, ElementsAre(id("drawer2")));
+  EXPECT_THAT(rule->clauses[1].classes.at(0).modifiers, ElementsAre("metal"));
+  EXPECT_THAT(rule->clauses[2].places, ElementsAre(id("drawer1"), id("drawer2")));
+  EXPECT_THAT(read_back_rule(world(), *rule),
+              ::testing::HasSubstr("clothes go in the top drawer or the bottom drawer"));
+}
+
+TEST_F(RuleReader, AClassMayHoldAPrepositionOfItsOwn) {
+  auto rule = read("Throw away food in the storage box; everything else on the coffee table.");
+  ASSERT_TRUE(rule);
+  ASSERT_EQ(rule->clauses.size(), 2u);
+  EXPECT_EQ(rule->clauses[0].classes.at(0).phrase, "food");
+  const RuleClass& rest = rule->clauses[1].classes.at(0);
+  EXPECT_TRUE(rest.rest);
+  EXPECT_EQ(rest.phrase, "");
+  EXPECT_EQ(say_rule_class(rest), "everything else");
+}
+
+}  // namespace
+}  // namespace apprentice::language
