@@ -25,7 +25,8 @@ _apprentice() {
     if [[ ${COMP_WORDS[i]} != -* ]]; then
       case ${COMP_WORDS[i-1]} in
         --scenario|--knowledge|--goal|--out|--transcript|--knowledge-out|--knowledge-in|--conditions|--condition|\
-        --generalization|--llm|--llm-model|--llm-api-key|--llm-timeout-ms|--depth|--max-nodes|--task|--domain|\
+        --generalization|--llm|--llm-model|--llm-api-key|--llm-timeout-ms|--llm-connect-timeout-ms|--llm-seed|\
+        --depth|--max-nodes|--task|--domain|\
         --object|--subtask|--corpus|--plot|--scenarios|--settings|--only|--host|--port|--token|--log-dir|--max-sessions|\
         --idle-seconds) continue ;;
       esac
@@ -64,9 +65,10 @@ _apprentice() {
       if [[ $cur == *,* ]]; then done_part=${cur%,*},; last=${cur##*,}; fi
       COMPREPLY=($(compgen -P "$done_part" -W "$conditions" -- "$last")); compopt -o nospace 2>/dev/null; return ;;
     --llm)
-      COMPREPLY=($(compgen -W "openai:http:// llama:http:// replay: record: corpus:" -- "$cur")); compopt -o nospace 2>/dev/null
+      # The schemes of src/llm/factory.cc's list of backends.
+      COMPREPLY=($(compgen -W "openai:http:// openai-chat:http:// llama:http:// replay: record: corpus:" -- "$cur")); compopt -o nospace 2>/dev/null
       return ;;
-    --goal|--llm-model|--llm-api-key|--llm-timeout-ms|--depth|--max-nodes|--task|--object|--subtask|--host|--port|--token|--max-sessions|--idle-seconds)
+    --goal|--llm-model|--llm-api-key|--llm-timeout-ms|--llm-connect-timeout-ms|--llm-seed|--depth|--max-nodes|--task|--object|--subtask|--host|--port|--token|--max-sessions|--idle-seconds)
       return ;;
   esac
   local words

@@ -355,7 +355,7 @@ int run(int argc, char** argv) {
   serve_cmd->add_option("--max-sessions", serve_options.limits.max_sessions, "Sessions teaching at once")
       ->capture_default_str()
       ->check(whole_number_in(1, 256));
-  serve_cmd->add_option("--idle-seconds", idle_seconds, "End a session after this long without a request")
+  serve_cmd->add_option("--idle-seconds", idle_seconds, "End a session whose question has waited this long with no request from its page")
       ->capture_default_str()
       ->check(whole_number_in(1, 7 * 24 * 3600));
   on_run(serve_cmd, [&] {

@@ -52,6 +52,7 @@ std::uint64_t SessionEvents::append(nlohmann::json body) {
       last_world_ = events_.size();
     }
     events_.push_back(Event{seq, std::move(body)});
+    last_append_ = std::chrono::steady_clock::now();
   }
   changed_.notify_all();
   return seq;
@@ -84,6 +85,11 @@ std::string SessionEvents::log_text() const {
   std::string text;
   for (const std::string& line : log_lines_) text += line + "\n";
   return text;
+}
+
+std::chrono::steady_clock::time_point SessionEvents::last_append() const {
+  std::lock_guard lock(mutex_);
+  return last_append_;
 }
 
 std::chrono::milliseconds SessionEvents::elapsed() const {

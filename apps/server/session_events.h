@@ -50,6 +50,8 @@ class SessionEvents {
   std::string log_text() const;
   // The time since the first event.
   std::chrono::milliseconds elapsed() const;
+  // When the last event was appended (the session's start before any).
+  std::chrono::steady_clock::time_point last_append() const;
 
  private:
   explicit SessionEvents(std::optional<std::filesystem::path> log_path) : log_path_(std::move(log_path)) {}
@@ -63,6 +65,7 @@ class SessionEvents {
   std::optional<std::filesystem::path> log_path_;
   std::ofstream log_file_;
   const std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  std::chrono::steady_clock::time_point last_append_ = start_;
 };
 
 }  // namespace apprentice::serve

@@ -5,6 +5,7 @@
 // and follow its locking rules (knowledge/store.h).
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <filesystem>
@@ -52,10 +53,14 @@ class TeachingSession {
   void end(const std::string& why = "");
   bool ended() const { return ended_; }
 
-  // The last time the page asked for or sent anything.
+  // The page asked for or sent something.
   void touch() { last_active_ = std::chrono::steady_clock::now().time_since_epoch().count(); }
+  // The last time the page asked for or sent anything, or the agent said
+  // anything: a session is idle only while its question waits unanswered,
+  // never while the agent works.
   std::chrono::steady_clock::time_point last_active() const {
-    return std::chrono::steady_clock::time_point(std::chrono::steady_clock::duration(last_active_.load()));
+    auto page = std::chrono::steady_clock::time_point(std::chrono::steady_clock::duration(last_active_.load()));
+    return std::max(page, events_->last_append());
   }
   // {"id", "world", "store", "ended"}
   nlohmann::json description() const;

@@ -53,6 +53,18 @@ def test_completes_values_of_known_form(tmp_path):
     assert complete("apprentice run --scenario kitchen.yaml --knowledge ", cwd=tmp_path) == ["store.sqlite"]
 
 
+def test_completes_every_llm_backend_the_program_knows():
+    # Issue 25: a second, stale list of backends drifts. The schemes Tab
+    # offers are those --help lists (the llm module's one list).
+    helped = subprocess.run([str(BINARY), "experiment", "--help"], capture_output=True, text=True, check=True).stdout
+    line = " ".join(helped.split())
+    listed = line[line.index("LLM backend: ") + len("LLM backend: "):line.index("(default: $APPRENTICE_LLM)")]
+    schemes = {form.strip().split(":")[0] for form in listed.split(", ") if form.strip()}
+    offered = {word.split(":")[0] for word in complete("apprentice experiment --llm ")}
+    assert schemes == offered
+    assert "openai-chat" in offered
+
+
 def test_the_man_page_has_every_command_and_flag():
     page = MANPAGE.read_text()
     assert page.startswith(".TH APPRENTICE 1")

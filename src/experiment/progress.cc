@@ -9,6 +9,7 @@ class ObservedLlmClient final : public llm::LlmClient {
       : inner_(std::move(inner)), observer_(observer) {}
 
   std::string describe() const override { return inner_->describe(); }
+  bool pools_sources() const override { return inner_->pools_sources(); }
 
  protected:
   Result<llm::Completion> do_complete(const llm::CompletionRequest& request) override {

@@ -81,11 +81,21 @@ Result<ExperimentResults> run_experiment(const Scenario& scenario, const Experim
     options.llm_disabled = !*reachable;
   }
   const int count = static_cast<int>(conditions.size());
+  bool llm_suspect = false;  // the breaker tripped in the last LLM condition
   for (int i = 0; i < count; ++i) {
     const Condition& condition = conditions[i];
     if (request.llm_spec) {
       std::string spec = count > 1 ? per_condition_llm_spec(*request.llm_spec, condition.name) : *request.llm_spec;
       options.llm = make_factory(spec, request.llm_options, request.observer);
+    }
+    if (condition.llm && llm_suspect && !options.llm_disabled) {
+      // The breaker tripped in an earlier condition: ask the server once
+      // more before this one depends on it, so that a server that died or
+      // hung costs this condition one timeout rather than the breaker's three.
+      auto answers = check_llm_before_run(*request.llm_spec, request.llm_options, true);
+      if (!answers) return tl::unexpected(answers.error());
+      options.llm_disabled = !*answers;
+      llm_suspect = false;
     }
     if (request.observer) request.observer->condition_started(condition.name, i, count);
     spdlog::info("running condition {}", condition.name);
@@ -95,6 +105,7 @@ Result<ExperimentResults> run_experiment(const Scenario& scenario, const Experim
     if (request.on_result) {
       if (auto status = request.on_result(*result); !status) return tl::unexpected(status.error());
     }
+    if (result->llm_stopped_after_calls) llm_suspect = true;
     out.results.push_back(std::move(*result));
   }
   return out;

@@ -284,7 +284,8 @@ void FakeLlmServer::handle(Dialect dialect, const httplib::Request& request, htt
       return;
     }
   }
-  switch (n <= healthy_for_ ? ServerMode::kModel : mode_) {
+  const bool healthy = n <= healthy_for_ || (broken_until_ > 0 && n > broken_until_);
+  switch (healthy ? ServerMode::kModel : mode_) {
     case ServerMode::kStatus500:
       response.status = 500;
       response.set_content(R"({"error": {"message": "the model is overloaded"}})", "application/json");

@@ -86,6 +86,8 @@ class FakeLlmServer {
 
   // Set before the first request.
   void healthy_for(int requests) { healthy_for_ = requests; }
+  // Fails (in its mode) only up to request `last`, then answers again.
+  void broken_until(int last) { broken_until_ = last; }
   void require_key(std::string key) { required_key_ = std::move(key); }
   void serve_only(std::string model) { served_model_ = std::move(model); }
   void llama_server_shape() { llama_quirks_.on = true; }
@@ -121,6 +123,7 @@ class FakeLlmServer {
   std::vector<std::string> goal_prompts_;  // guarded by mutex_
   std::vector<std::string> bodies_;        // guarded by mutex_
   int healthy_for_ = 0;
+  int broken_until_ = 0;  // 0: for ever
   std::string required_key_;
   std::string served_model_;
   LlamaQuirks llama_quirks_;

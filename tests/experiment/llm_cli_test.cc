@@ -180,19 +180,36 @@ TEST_F(LlmSpecs, AHungServerFailsTheCheckInOneTimeout) {
 }
 
 // A server that hangs after the check: each query waits out the timeout
-// and is not retried; after 3 the breaker stops asking, in each condition.
-TEST_F(LlmSpecs, AServerThatHangsDuringTheRunCostsThreeTimeoutsPerCondition) {
+// and is not retried; after 3 the breaker stops asking. Before the next
+// LLM condition the server is asked once more; still silent, that
+// condition goes without it: one timeout, not three.
+TEST_F(LlmSpecs, AServerThatHangsDuringTheRunCostsThreeTimeoutsThenOne) {
   FakeLlmServer server(ServerMode::kSlow);
   server.healthy_for(1);
-  auto args = experiment("inst+llm,inst+search4+llm", "openai:" + server.url());
+  auto args = experiment("inst+llm,instruction,inst+search4+llm", "openai:" + server.url());
   args.insert(args.end(), {"--llm-timeout-ms", "300"});
   nlohmann::json out = rows(args, 4);
+  ASSERT_EQ(out.size(), 3u);
+  EXPECT_EQ(out[0]["llm_failures"], kBreaker);
+  EXPECT_EQ(out[0]["llm_calls"], kBreaker);
+  EXPECT_EQ(out[0]["degraded_why"], "the LLM failed 3 queries and was not asked again after query 3");
+  EXPECT_EQ(out[1]["degraded"], false);
+  EXPECT_EQ(out[2]["llm_calls"], 0);
+  EXPECT_EQ(out[2]["degraded_why"], "the LLM could not be reached and was not asked");
+  EXPECT_EQ(server.requests(), 1 + kBreaker + 1);
+}
+
+// A server that recovers between conditions is used again.
+TEST_F(LlmSpecs, AServerThatRecoversIsAskedAgainInTheNextCondition) {
+  FakeLlmServer server(ServerMode::kMalformedJson, kitchen_goals());
+  server.healthy_for(1);
+  // Requests 2-4 fail (the breaker), then from 5 on it answers.
+  server.broken_until(4);
+  nlohmann::json out = rows(experiment("inst+llm,inst+search4+llm", "openai:" + server.url()), 4);
   ASSERT_EQ(out.size(), 2u);
-  for (const auto& row : out) {
-    EXPECT_EQ(row["llm_failures"], kBreaker) << row.dump();
-    EXPECT_EQ(row["llm_calls"], kBreaker) << row.dump();
-  }
-  EXPECT_EQ(server.requests(), 1 + 2 * kBreaker);
+  EXPECT_EQ(out[0]["llm_failures"], kBreaker);
+  EXPECT_EQ(out[1]["degraded"], false);
+  EXPECT_GT(out[1]["llm_calls"].get<int>(), 0);
 }
 
 // Issue 25, item 3: an --llm-optional run without a server gave
