@@ -7,6 +7,7 @@
 #include "benchmark/tidybot_benchmark.h"
 #include "experiment/runner.h"
 #include "llm/factory.h"
+#include "llm/placement_corpus.h"
 #include "util/text.h"
 
 namespace apprentice::cli {
@@ -62,6 +63,12 @@ CommandResult run_benchmark(const BenchmarkCommandOptions& options, std::ostream
   if (auto spec = llm::resolve_llm_spec(options.llm.spec)) {
     auto reachable = check_llm_before_run(*spec, llm_options(options.llm), options.llm.optional);
     if (!reachable) return tl::unexpected(reachable.error());
+    // TidyBot's own recorded answers, when they are the LLM: their scores beside ours.
+    if (spec->starts_with("corpus:") && llm::PlacementCorpusClient::recognizes(spec->substr(7))) {
+      auto answers = llm::read_recorded_answers(spec->substr(7));
+      if (!answers) return tl::unexpected(answers.error());
+      run.recorded_answers = std::move(*answers);
+    }
     if (*reachable) {
       const llm::LlmOptions client_options = llm_options(options.llm);
       run.llm = [spec = *spec, client_options] { return llm::make_llm_client(spec, client_options); };

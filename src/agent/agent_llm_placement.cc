@@ -2,6 +2,7 @@
 // acted on alone, confirmed by the instructor where there is one.
 #include <algorithm>
 
+#include "agent/person_rule.h"
 #include "agent/session.h"
 #include "language/generation.h"
 #include "language/narration.h"
@@ -20,25 +21,45 @@ Goal placement(const World& world, ObjectId thing, ObjectId place) {
 
 }  // namespace
 
+void TaskLearningAgent::Session::consult_llm(ObjectId object) {
+  if (agent_.llm_ == nullptr || !agent_.options_.condition.llm || llm_preferences_.consulted()) return;
+  LlmAdvisor& llm = *agent_.llm_;
+  if (!llm.knows_preference_prompts() || !llm.asking()) return;
+  const World& w = world();
+  std::vector<ObjectId> things;
+  for (ObjectId o : w.universe->of_kind(ObjectKind::kItem))
+    if (o == object || still_to_come(o)) things.push_back(o);
+  std::vector<GoalKnowledge> taught;
+  for (const GoalKnowledge& g : agent_.knowledge_.goals.all())
+    if (g.key.task == progress_.task.name) taught.push_back(g);
+  std::map<std::string, std::string> learned_as;
+  for (const CategoryMatch& m : transfer_.matches()) learned_as[m.world] = m.learned;
+  llm_preferences_.consult(llm, w, taught, learned_as, things, current().places, join(rules_said_, " "),
+                           agent_.understanding_.lexicon());
+  if (const auto& summary = llm_preferences_.summary_rule()) {
+    spdlog::info("the LLM sums up what was taught: {}", llm_preferences_.summary());
+    for (ClassRule& rule : class_rules_of(w, *summary, RuleSource::kLlm, llm_preferences_.summary(), said_scope(),
+                                          kLlmRuleConfidence))
+      said_rules_.add(std::move(rule));
+  }
+}
+
+std::optional<DestinationProposal> TaskLearningAgent::Session::llm_placement_proposal(ObjectId object) const {
+  auto place = llm_preferences_.place_for(object);
+  if (!place) return std::nullopt;
+  DestinationProposal proposal;
+  proposal.destination = destination_at(world(), *place);
+  proposal.confidence = kLlmPlacementConfidence;
+  proposal.source = ProposalSource::kLlmPlacement;
+  const std::string& by = llm_preferences_.placed_by();
+  proposal.reason = "the language model placed it" + (by.empty() ? std::string() : " by " + apprentice::quoted(by));
+  return proposal;
+}
+
 TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session::goal_from_llm_placement(
     ObjectId object, ObjectReport& report) {
-  LlmAdvisor& llm = *agent_.llm_;
-  if (!llm.knows_preference_prompts() || !llm.asking()) return std::optional<Goal>();
+  consult_llm(object);
   const World& w = world();
-  if (!llm_preferences_.consulted()) {
-    std::vector<ObjectId> things;
-    for (ObjectId o : w.universe->of_kind(ObjectKind::kItem))
-      if (o == object || still_to_come(o)) things.push_back(o);
-    std::vector<GoalKnowledge> taught;
-    for (const GoalKnowledge& g : agent_.knowledge_.goals.all())
-      if (g.key.task == progress_.task.name) taught.push_back(g);
-    std::map<std::string, std::string> learned_as;
-    for (const CategoryMatch& m : transfer_.matches()) learned_as[m.world] = m.learned;
-    llm_preferences_.consult(llm, w, taught, learned_as, things, current().places, join(rules_said_, " "),
-                             agent_.understanding_.lexicon());
-    if (!llm_preferences_.summary().empty())
-      spdlog::info("the LLM sums up what was taught: {}", llm_preferences_.summary());
-  }
   auto place = llm_preferences_.place_for(object);
   if (!place) return std::optional<Goal>();
   Goal goal = placement(w, object, *place);

@@ -2,6 +2,7 @@
 // (language/rule_reader.h), kept, read back.
 #include <algorithm>
 
+#include "agent/person_rule.h"
 #include "agent/session.h"
 #include "language/generation.h"
 #include "language/narration.h"
@@ -11,12 +12,6 @@
 namespace apprentice {
 
 namespace {
-
-// Words that name things in general, not a class of them: "heavy items",
-// "everything plastic".
-bool is_general_word(std::string_view word) {
-  return is_one_of(word, {"item", "thing", "object", "stuff", "product", "good", "one", "article", "belonging"});
-}
 
 }  // namespace
 
@@ -29,8 +24,8 @@ std::optional<language::RuleReading> TaskLearningAgent::Session::rule_in_reply(
   // object" ("Repeat the following tasks while an object is on the table").
   auto a_class_of_its_own = [&](const language::RuleClass& c) {
     if (c.rest) return true;
-    if (c.phrase.empty() || (is_general_word(c.head) && c.modifiers.empty())) return false;
-    if (is_general_word(c.head)) return true;
+    if (c.phrase.empty() || (is_general_head(c.head) && c.modifiers.empty())) return false;
+    if (is_general_head(c.head)) return true;
     return !agent_.understanding_.category(world(), c.phrase).has_value();
   };
   std::size_t class_clauses = 0;
@@ -49,8 +44,20 @@ std::optional<language::RuleReading> TaskLearningAgent::Session::rule_in_reply(
   return rule;
 }
 
+GoalScope TaskLearningAgent::Session::said_scope() const {
+  GoalScope scope;
+  scope.task = progress_.task.name;
+  if (progress_.current) {
+    scope.subtask = current().verb;
+    scope.place = world().universe->info(current().places.front()).category;
+  }
+  return scope;
+}
+
 void TaskLearningAgent::Session::hear_rule(const language::RuleReading& rule, const std::string& text) {
   rules_said_.push_back(text);
+  for (ClassRule& said : class_rules_of(world(), rule, RuleSource::kPerson, text, said_scope(), kPersonRuleConfidence))
+    said_rules_.add(std::move(said));
   say(language::read_back_rule(world(), rule));
   if (!rule.not_understood.empty()) {
     std::vector<std::string> parts;

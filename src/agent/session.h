@@ -16,6 +16,8 @@
 
 #include "agent/agent.h"
 #include "agent/llm_preferences.h"
+#include "knowledge/decision.h"
+#include "knowledge/preferences.h"
 #include "agent/transfer.h"
 #include "language/reply.h"
 
@@ -182,6 +184,18 @@ class TaskLearningAgent::Session {
   // instructor where there is one; nullopt when it placed it nowhere, the
   // instructor says no, or there is no LLM.
   Flow<std::optional<Goal>> goal_from_llm_placement(ObjectId object, ObjectReport& report);
+  // Asks the LLM, the first time a thing needs it this session, for the
+  // summary of what was taught and where each thing to place goes; the
+  // summary's rules join rules_said_ (RuleSource::kLlm). Nothing without an
+  // LLM that has the preference prompts.
+  void consult_llm(ObjectId object);
+  // The LLM's placement of `object` as a proposal for the decision
+  // (ProposalSource::kLlmPlacement, kLlmPlacementConfidence, with the rule
+  // it placed by as its reason); nullopt when it did not place it.
+  std::optional<DestinationProposal> llm_placement_proposal(ObjectId object) const;
+  // Where rules said in this session apply: the task and the subtask under
+  // way, and the kind of place cleared; empty fields before the task.
+  GoalScope said_scope() const;
   // A person's rules (agent_person_rules.cc). A reply that states one ("toys
   // go in the storage box and fruits on the coffee table",
   // language/rule_reader.h) rather than an answer `reply` can use: its
@@ -256,9 +270,12 @@ class TaskLearningAgent::Session {
   // What the agent knew, in this world's words, and the analogies it offers.
   // Constructed last: it renames the agent's knowledge when the session starts.
   KnowledgeTransfer transfer_;
-  // The person's rules said this session, as said, and what the LLM says of
-  // the person's preferences (asked once, when a thing first needs it).
+  // The person's rules said this session, as said; those rules, and the
+  // LLM's summary's, as class rules (agent/person_rule.h); and what the LLM
+  // says of the person's preferences (asked once, when a thing first needs
+  // it).
   std::vector<std::string> rules_said_;
+  ClassRules said_rules_;
   LlmPreferences llm_preferences_;
 };
 

@@ -1,6 +1,7 @@
 #include "benchmark/tidybot_benchmark.h"
 
 #include <algorithm>
+#include <set>
 
 #include "agent/agent.h"
 #include "benchmark/tidybot_teacher.h"
@@ -92,7 +93,8 @@ Result<Session> run_session(const BenchmarkWorld& world, Knowledge knowledge, co
 }
 
 // Where each object ended, against where the person wants it.
-std::vector<ObjectOutcome> outcomes(const BenchmarkWorld& world, const State& end, Tally& tally) {
+std::vector<ObjectOutcome> outcomes(const BenchmarkWorld& world, const TidyBotScenario& scenario, const State& end,
+                                    Tally& tally, Tally& unseen) {
   World now = world.scenario.world;
   now.state = end;
   std::vector<ObjectOutcome> out;
@@ -104,9 +106,14 @@ std::vector<ObjectOutcome> outcomes(const BenchmarkWorld& world, const State& en
       outcome.wanted = world.receptacle_name(entry->place);
     auto place = language::place_of(now, id);
     if (place && *place != world.cart) outcome.placed = world.receptacle_name(*place);
-    if (outcome.placed.empty()) ++tally.left;
-    else if (outcome.placed == outcome.wanted) ++tally.right;
-    else ++tally.wrong;
+    outcome.unseen = std::find(scenario.unseen_objects.begin(), scenario.unseen_objects.end(), name) !=
+                     scenario.unseen_objects.end();
+    for (Tally* counted : {&tally, outcome.unseen ? &unseen : nullptr}) {
+      if (counted == nullptr) continue;
+      if (outcome.placed.empty()) ++counted->left;
+      else if (outcome.placed == outcome.wanted) ++counted->right;
+      else ++counted->wrong;
+    }
     out.push_back(std::move(outcome));
   }
   return out;
@@ -153,7 +160,7 @@ Result<ScenarioOutcome> run_scenario(Bench& bench, const TidyBotScenario& scenar
   outcome.index = scenario.index;
   outcome.tags = scenario.tags;
   outcome.tally = session->tally;
-  outcome.objects = outcomes(*world, session->end, outcome.tally);
+  outcome.objects = outcomes(*world, scenario, session->end, outcome.tally, outcome.unseen);
   if (bench.options.keep_transcripts) outcome.transcript = std::move(session->transcript);
   return outcome;
 }
@@ -184,17 +191,22 @@ Result<SettingResult> run_setting(Bench& bench, const std::vector<TidyBotScenari
   }
   SettingResult result;
   result.setting = setting;
-  double percent_sum = 0;
+  double percent_sum = 0, unseen_sum = 0;
   for (const TidyBotScenario& scenario : scenarios) {
     auto outcome = run_scenario(bench, scenario, setting, advisor.get());
     if (!outcome)
       return tl::unexpected(prefix_error(outcome.error(), "TidyBot scenario " + std::to_string(scenario.index)));
     result.total += outcome->tally;
     for (const std::string& tag : scenario.tags) result.by_tag[tag] += outcome->tally;
+    result.unseen += outcome->unseen;
     if (outcome->tally.objects() > 0) percent_sum += 100.0 * outcome->tally.right / outcome->tally.objects();
+    if (outcome->unseen.objects() > 0) unseen_sum += 100.0 * outcome->unseen.right / outcome->unseen.objects();
     result.scenarios.push_back(std::move(*outcome));
   }
-  if (!scenarios.empty()) result.mean_scenario_percent = percent_sum / static_cast<double>(scenarios.size());
+  if (!scenarios.empty()) {
+    result.mean_scenario_percent = percent_sum / static_cast<double>(scenarios.size());
+    result.mean_unseen_percent = unseen_sum / static_cast<double>(scenarios.size());
+  }
   if (advisor) {
     LlmTotals totals = advisor->totals();
     result.llm_calls = totals.calls;
@@ -206,9 +218,47 @@ Result<SettingResult> run_setting(Bench& bench, const std::vector<TidyBotScenari
 
 }  // namespace
 
+std::vector<RecordedScore> score_recorded_answers(const std::vector<TidyBotScenario>& scenarios,
+                                                  const std::vector<llm::RecordedAnswer>& answers) {
+  std::vector<RecordedScore> scores;
+  for (const char* method : {"summarization", "human-summary", "examples-only", "commonsense"}) {
+    RecordedScore score;
+    score.method = method;
+    double sum = 0;
+    std::map<std::string, std::pair<double, int>> tags;  // sum, count
+    for (const TidyBotScenario& scenario : scenarios) {
+      const std::set<std::string> unseen(scenario.unseen_objects.begin(), scenario.unseen_objects.end());
+      auto answer = std::find_if(answers.begin(), answers.end(), [&](const llm::RecordedAnswer& a) {
+        return a.scenario == scenario.index && a.method == score.method && a.step == "placement" &&
+               std::set<std::string>(a.objects.begin(), a.objects.end()) == unseen;
+      });
+      if (answer == answers.end() || unseen.empty()) continue;
+      int right = 0;
+      for (const std::string& object : scenario.unseen_objects) {
+        auto placed = std::find_if(answer->placements.begin(), answer->placements.end(),
+                                   [&](const auto& p) { return p.first == object; });
+        if (placed != answer->placements.end() && placed->second == scenario.destination(object)) ++right;
+      }
+      const double percent = 100.0 * right / static_cast<double>(unseen.size());
+      sum += percent;
+      ++score.scenarios;
+      for (const std::string& tag : scenario.tags) {
+        tags[tag].first += percent;
+        ++tags[tag].second;
+      }
+    }
+    if (score.scenarios == 0) continue;
+    score.mean_percent = sum / score.scenarios;
+    for (const auto& [tag, total] : tags) score.by_tag[tag] = total.first / total.second;
+    scores.push_back(std::move(score));
+  }
+  return scores;
+}
+
 Result<BenchmarkResults> run_tidybot(const std::vector<TidyBotScenario>& scenarios, const BenchmarkOptions& options) {
   Bench bench{options, language::Lexicon::open_default(), {}};
   BenchmarkResults results;
+  results.recorded = score_recorded_answers(scenarios, options.recorded_answers);
   std::vector<Setting> settings = options.settings;
   if (settings.empty()) {
     for (const Setting& setting : all_settings()) {

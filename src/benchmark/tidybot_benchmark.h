@@ -31,6 +31,7 @@
 
 #include "benchmark/tidybot_scenarios.h"
 #include "llm/llm_client.h"
+#include "llm/placement_corpus.h"
 #include "util/result.h"
 
 namespace apprentice::benchmark {
@@ -63,12 +64,14 @@ struct ObjectOutcome {
   std::string object;  // the benchmark's name
   std::string wanted;  // the receptacle the person wants
   std::string placed;  // where it ended; empty when still on the cart
+  bool unseen = false;  // one of the scenario's unseen objects
 };
 
 struct ScenarioOutcome {
   int index = 0;
   std::vector<std::string> tags;
   Tally tally;
+  Tally unseen;  // of the unseen objects only (protocol A: all of them)
   std::vector<ObjectOutcome> objects;
   std::string transcript;  // the measured session's dialogue
 };
@@ -79,8 +82,11 @@ struct SettingResult {
   std::map<std::string, Tally> by_tag;  // a scenario counts under each of its tags
   std::vector<ScenarioOutcome> scenarios;
   // The mean over scenarios of each one's share right: how TidyBot reports
-  // accuracy (the pooled share is total.right / total.objects()).
+  // accuracy (the pooled share is total.right / total.objects()); and the
+  // same of the unseen objects alone, what TidyBot's figures are about.
   double mean_scenario_percent = 0;
+  Tally unseen;
+  double mean_unseen_percent = 0;
   int llm_calls = 0;
   int llm_failures = 0;
   double wall_ms = 0;
@@ -95,11 +101,28 @@ struct BenchmarkOptions {
   std::filesystem::path prompts_dir;  // data/prompts
   std::filesystem::path domain;       // data/domains/kitchen.pddl
   bool keep_transcripts = false;
+  // TidyBot's own recorded answers (llm-dev.jsonl), to set their scores
+  // beside ours, per tag (score_recorded_answers); none: not shown.
+  std::vector<llm::RecordedAnswer> recorded_answers;
 };
+
+// TidyBot's recorded answers on these scenarios, scored as TidyBot scores
+// them: for each method, each scenario's share of its unseen objects
+// placed right by that method's answer for them, the mean over the
+// scenarios that have one, overall and per tag.
+struct RecordedScore {
+  std::string method;  // summarization, human-summary, examples-only, commonsense
+  int scenarios = 0;
+  double mean_percent = 0;
+  std::map<std::string, double> by_tag;
+};
+std::vector<RecordedScore> score_recorded_answers(const std::vector<TidyBotScenario>& scenarios,
+                                                  const std::vector<llm::RecordedAnswer>& answers);
 
 struct BenchmarkResults {
   std::vector<SettingResult> results;  // in the order of the settings
   std::vector<std::string> skipped;    // settings left out for want of an LLM
+  std::vector<RecordedScore> recorded;  // with BenchmarkOptions::recorded_answers
 };
 
 // Errors: kInvalidInput for a setting with an LLM but no `llm`; a world

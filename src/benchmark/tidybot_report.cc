@@ -20,9 +20,9 @@ std::string row_text(const char* format, auto... args) {
 double percent(int part, int whole) { return whole == 0 ? 0.0 : 100.0 * part / whole; }
 
 std::string describe(const Setting& setting) {
-  std::string out = setting.protocol == Protocol::kExamples ? "A: examples, then new objects" : "B: the person's note";
-  out += setting.teacher ? ", with the teacher" : ", alone";
-  if (setting.llm) out += ", with the LLM";
+  std::string out = setting.protocol == Protocol::kExamples ? "A" : "B";
+  out += setting.teacher ? ", teacher" : ", alone";
+  if (setting.llm) out += ", LLM";
   return out;
 }
 
@@ -37,19 +37,20 @@ std::string format_tidybot_table(const BenchmarkResults& results) {
   std::string out;
   if (results.results.empty()) return "No setting ran.\n";
   const std::size_t scenarios = results.results.front().scenarios.size();
-  out += "TidyBot benchmark: " + std::to_string(scenarios) + " scenarios. Protocol A places the unseen objects, protocol B "
-         "every object.\n";
-  out += row_text("%-14s %-46s %7s %6s %6s %6s %10s %9s %9s %9s\n", "Setting", "", "Objects", "Right%", "Wrong%",
-                  "Left%", "Questions", "Mean%", "LLM calls", "Wall ms");
+  out += "TidyBot benchmark: " + std::to_string(scenarios) + " scenarios.\n";
+  out += row_text("%-14s %-16s %7s %6s %6s %6s %10s %7s %8s %9s %9s\n", "Setting", "", "Objects", "Right%", "Wrong%",
+                  "Left%", "Questions", "Mean%", "Unseen%", "LLM calls", "Wall ms");
   for (const SettingResult& r : results.results) {
     const Tally& t = r.total;
     const double per_scenario = r.scenarios.empty() ? 0.0 : static_cast<double>(t.questions) / r.scenarios.size();
-    out += row_text("%-14s %-46s %7d %6.1f %6.1f %6.1f %10.2f %9.1f %9d %9.0f\n", r.setting.name.c_str(),
+    out += row_text("%-14s %-16s %7d %6.1f %6.1f %6.1f %10.2f %7.1f %8.1f %9d %9.0f\n", r.setting.name.c_str(),
                     describe(r.setting).c_str(), t.objects(), percent(t.right, t.objects()),
                     percent(t.wrong, t.objects()), percent(t.left, t.objects()), per_scenario, r.mean_scenario_percent,
-                    r.llm_calls, r.wall_ms);
+                    r.mean_unseen_percent, r.llm_calls, r.wall_ms);
   }
-  out += "Questions: per scenario, about where things go. Mean%: right, the mean over scenarios (as TidyBot reports).\n";
+  out += "A: the seen placements taught, then the unseen objects; B: the person's note, then every object.\n";
+  out += "Questions: per scenario, about where things go. Mean%: right, the mean over scenarios (as TidyBot reports);\n"
+         "Unseen%: the same of the unseen objects alone, what TidyBot's figures are about.\n";
   out += "TidyBot published (all 96 scenarios, unseen objects, mean over scenarios):";
   bool first = true;
   for (const PublishedFigure& figure : tidybot_published()) {
@@ -73,6 +74,23 @@ std::string format_tidybot_table(const BenchmarkResults& results) {
     }
     out += "\n";
   }
+  if (!results.recorded.empty()) {
+    out += "\nTidyBot's recorded answers on these scenarios (unseen objects, mean over scenarios), by tag\n";
+    out += row_text("%-20s", "Tag");
+    for (const RecordedScore& r : results.recorded) out += row_text(" %13s", r.method.c_str());
+    out += "\n";
+    out += row_text("%-20s", "all");
+    for (const RecordedScore& r : results.recorded) out += row_text(" %13.1f", r.mean_percent);
+    out += "\n";
+    for (const std::string& tag : tags) {
+      out += row_text("%-20s", tag.c_str());
+      for (const RecordedScore& r : results.recorded) {
+        auto it = r.by_tag.find(tag);
+        out += it == r.by_tag.end() ? row_text(" %13s", "--") : row_text(" %13.1f", it->second);
+      }
+      out += "\n";
+    }
+  }
   if (!results.skipped.empty()) {
     std::string names;
     for (const std::string& name : results.skipped) names += (names.empty() ? "" : ", ") + name;
@@ -90,7 +108,7 @@ std::string tidybot_json(const BenchmarkResults& results) {
     for (const ScenarioOutcome& s : r.scenarios) {
       nlohmann::json objects = nlohmann::json::array();
       for (const ObjectOutcome& o : s.objects)
-        objects.push_back({{"object", o.object}, {"wanted", o.wanted}, {"placed", o.placed}});
+        objects.push_back({{"object", o.object}, {"wanted", o.wanted}, {"placed", o.placed}, {"unseen", o.unseen}});
       nlohmann::json entry = tally_json(s.tally);
       entry["index"] = s.index;
       entry["tags"] = s.tags;
@@ -104,6 +122,8 @@ std::string tidybot_json(const BenchmarkResults& results) {
     entry["teacher"] = r.setting.teacher;
     entry["llm"] = r.setting.llm;
     entry["mean_scenario_percent"] = r.mean_scenario_percent;
+    entry["unseen"] = tally_json(r.unseen);
+    entry["mean_unseen_percent"] = r.mean_unseen_percent;
     entry["llm_calls"] = r.llm_calls;
     entry["llm_failures"] = r.llm_failures;
     entry["wall_ms"] = r.wall_ms;
@@ -114,7 +134,15 @@ std::string tidybot_json(const BenchmarkResults& results) {
   nlohmann::json published = nlohmann::json::array();
   for (const PublishedFigure& figure : tidybot_published())
     published.push_back({{"method", figure.method}, {"percent", figure.percent}});
-  return dump_json(nlohmann::json{{"settings", settings}, {"skipped", results.skipped}, {"tidybot_published", published}}, 2);
+  nlohmann::json recorded = nlohmann::json::array();
+  for (const RecordedScore& r : results.recorded)
+    recorded.push_back({{"method", r.method}, {"scenarios", r.scenarios}, {"mean_percent", r.mean_percent},
+                        {"by_tag", r.by_tag}});
+  return dump_json(nlohmann::json{{"settings", settings},
+                                  {"skipped", results.skipped},
+                                  {"tidybot_published", published},
+                                  {"tidybot_recorded", recorded}},
+                   2);
 }
 
 }  // namespace apprentice::benchmark

@@ -70,11 +70,10 @@ bool PlacementCorpusClient::recognizes(const std::filesystem::path& path) {
   return false;
 }
 
-Result<std::unique_ptr<PlacementCorpusClient>> PlacementCorpusClient::open(const std::filesystem::path& path) {
+Result<std::vector<RecordedAnswer>> read_recorded_answers(const std::filesystem::path& path) {
   auto lines = read_input_lines(path);
   if (!lines) return tl::unexpected(prefix_error(lines.error(), "the placement corpus"));
-  std::vector<Summary> summaries;
-  std::vector<Placements> placements;
+  std::vector<RecordedAnswer> answers;
   std::size_t number = 0;
   for (const std::string& line : *lines) {
     ++number;
@@ -82,37 +81,60 @@ Result<std::unique_ptr<PlacementCorpusClient>> PlacementCorpusClient::open(const
     try {
       json record = json::parse(line);
       if (!record.is_object()) throw std::runtime_error("not a JSON object");
-      const std::string method = record.at("method").get<std::string>();
-      const std::string step = record.at("step").get<std::string>();
-      const Keys receptacles = keys_of(strings(record.at("receptacles")), NameOf::kPlace);
-      if (step == "summary") {
-        summaries.push_back(Summary{receptacles, pair_keys(pairs(record.at("examples"))),
-                                    std::string(trim(record.at("summary").get<std::string>()))});
-        continue;
+      RecordedAnswer answer;
+      if (auto scenario = record.find("scenario"); scenario != record.end() && scenario->is_number_integer())
+        answer.scenario = scenario->get<int>();
+      answer.method = record.at("method").get<std::string>();
+      answer.step = record.at("step").get<std::string>();
+      answer.receptacles = strings(record.at("receptacles"));
+      if (answer.step != "summary" && answer.step != "placement")
+        throw std::runtime_error("step is neither summary nor placement");
+      if (answer.method != "summarization" && answer.method != "human-summary" && answer.method != "examples-only" &&
+          answer.method != "commonsense")
+        throw std::runtime_error("unknown method " + apprentice::quoted(answer.method));
+      const bool by_rule = answer.method == "summarization" || answer.method == "human-summary";
+      if (answer.step == "summary" || answer.method == "examples-only") answer.examples = pairs(record.at("examples"));
+      if (answer.step == "summary" || by_rule) answer.summary = std::string(trim(record.at("summary").get<std::string>()));
+      if (answer.step == "placement") {
+        answer.objects = strings(record.at("objects"));
+        answer.placements = pairs(record.at("placements"));
       }
-      if (step != "placement") throw std::runtime_error("step is neither summary nor placement");
-      Placements entry;
-      entry.receptacles = receptacles;
-      if (method == "summarization" || method == "human-summary") {
-        entry.knowledge = Placements::Knowledge::kRule;
-        entry.rule = rule_key(record.at("summary").get<std::string>());
-      } else if (method == "examples-only") {
-        entry.knowledge = Placements::Knowledge::kExamples;
-        entry.examples = pair_keys(pairs(record.at("examples")));
-      } else if (method != "commonsense") {
-        throw std::runtime_error("unknown method " + apprentice::quoted(method));
-      }
-      entry.objects = keys_of(strings(record.at("objects")), NameOf::kThing);
-      for (const auto& [thing, place] : pairs(record.at("placements"))) {
-        const std::string key = name_key(thing);
-        auto placed = [&](const auto& p) { return p.first == key; };
-        if (std::none_of(entry.placed.begin(), entry.placed.end(), placed)) entry.placed.emplace_back(key, place);
-      }
-      placements.push_back(std::move(entry));
+      answers.push_back(std::move(answer));
     } catch (const std::exception& e) {
       return make_error(ErrorCode::kDataLoss,
                         path.string() + ":" + std::to_string(number) + ": not a placement corpus line: " + e.what());
     }
+  }
+  return answers;
+}
+
+Result<std::unique_ptr<PlacementCorpusClient>> PlacementCorpusClient::open(const std::filesystem::path& path) {
+  auto answers = read_recorded_answers(path);
+  if (!answers) return tl::unexpected(answers.error());
+  std::vector<Summary> summaries;
+  std::vector<Placements> placements;
+  for (const RecordedAnswer& answer : *answers) {
+    const Keys receptacles = keys_of(answer.receptacles, NameOf::kPlace);
+    if (answer.step == "summary") {
+      summaries.push_back(Summary{receptacles, pair_keys(answer.examples), answer.summary});
+      continue;
+    }
+    Placements entry;
+    entry.receptacles = receptacles;
+    if (answer.method == "summarization" || answer.method == "human-summary") {
+      entry.knowledge = Placements::Knowledge::kRule;
+      entry.rule = rule_key(answer.summary);
+    } else if (answer.method == "examples-only") {
+      entry.knowledge = Placements::Knowledge::kExamples;
+      entry.examples = pair_keys(answer.examples);
+    }
+    entry.objects = keys_of(answer.objects, NameOf::kThing);
+    for (const auto& [thing, place] : answer.placements) {
+      const std::string key = name_key(thing);
+      auto placed = [&](const auto& p) { return p.first == key; };
+      if (std::none_of(entry.placed.begin(), entry.placed.end(), placed)) entry.placed.emplace_back(key, place);
+    }
+    placements.push_back(std::move(entry));
   }
   return std::unique_ptr<PlacementCorpusClient>(
       new PlacementCorpusClient(path, std::move(summaries), std::move(placements)));

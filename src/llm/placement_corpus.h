@@ -36,6 +36,23 @@
 
 namespace apprentice::llm {
 
+// One recorded answer as the file holds it (the README of the TidyBot
+// corpus gives the keys); for scoring the recorded answers themselves.
+struct RecordedAnswer {
+  int scenario = 0;    // the benchmark's index, for reference
+  std::string method;  // summarization, human-summary, examples-only, commonsense
+  std::string step;    // summary, placement
+  std::vector<std::string> receptacles;
+  std::vector<std::pair<std::string, std::string>> examples;  // summary; examples-only placement
+  std::string summary;                                        // summary step; rule-based placements
+  std::vector<std::string> objects;                           // placement
+  std::vector<std::pair<std::string, std::string>> placements;  // placement, as parsed by the benchmark
+};
+
+// Every record of such a file. Errors: kNotFound, kIo, kDataLoss (a line
+// that is not such a record, naming the line).
+Result<std::vector<RecordedAnswer>> read_recorded_answers(const std::filesystem::path& path);
+
 class PlacementCorpusClient : public LlmClient {
  public:
   // Whether the file's first line is such a record (keys method and step),

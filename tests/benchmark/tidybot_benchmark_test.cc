@@ -159,6 +159,46 @@ TEST(TidyBotWithAnLlm, TheLlmsPlacementsAreActedOnAloneAndConfirmedWithTheTeache
   EXPECT_EQ(note.scenarios[1].tally.wrong, 1) << "the coffee mug, on the bottom shelf";
 }
 
+TEST(TidyBotRecorded, TidyBotsOwnAnswersAreScoredAsItScoresThem) {
+  apprentice::testing::ScratchDir scratch;
+  const auto corpus = scratch / "answers.jsonl";
+  std::ofstream(corpus) << testing::kTwoScenariosAnswers;
+  auto answers = llm::read_recorded_answers(corpus);
+  ASSERT_TRUE(answers) << answers.error().describe();
+  auto scenarios = parse_tidybot_scenarios(testing::kTwoScenarios, "two.yml");
+  ASSERT_TRUE(scenarios);
+  std::vector<RecordedScore> scores = score_recorded_answers(*scenarios, *answers);
+  // Only the summarization has answers for the unseen objects: all three
+  // of the first scenario right, the coffee mug of the second wrong.
+  ASSERT_EQ(scores.size(), 1u);
+  EXPECT_EQ(scores[0].method, "summarization");
+  EXPECT_EQ(scores[0].scenarios, 2);
+  EXPECT_DOUBLE_EQ(scores[0].mean_percent, 50.0);
+  EXPECT_DOUBLE_EQ(scores[0].by_tag.at("category"), 50.0);
+  EXPECT_DOUBLE_EQ(scores[0].by_tag.at("attribute"), 0.0);
+}
+
+// On the development half, the figures its README gives for the recorded
+// answers.
+TEST(TidyBotRecorded, TheDevelopmentHalfScoresAsItsReadmeSays) {
+  const auto scenarios_path = apprentice::testing::shared_path("data/tidybot-benchmark/scenarios-dev.yml");
+  const auto corpus_path = apprentice::testing::shared_path("data/tidybot-benchmark/llm-dev.jsonl");
+  APPRENTICE_REQUIRE_SHARED(scenarios_path);
+  APPRENTICE_REQUIRE_SHARED(corpus_path);
+  auto scenarios = load_tidybot_scenarios(scenarios_path);
+  auto answers = llm::read_recorded_answers(corpus_path);
+  ASSERT_TRUE(scenarios && answers);
+  std::map<std::string, double> mean;
+  for (const RecordedScore& score : score_recorded_answers(*scenarios, *answers)) {
+    EXPECT_EQ(score.scenarios, 48) << score.method;
+    mean[score.method] = score.mean_percent;
+  }
+  EXPECT_NEAR(mean["summarization"], 90.0, 0.05);
+  EXPECT_NEAR(mean["human-summary"], 96.8, 0.05);
+  EXPECT_NEAR(mean["examples-only"], 74.8, 0.05);
+  EXPECT_NEAR(mean["commonsense"], 45.4, 0.05);
+}
+
 TEST(TidyBotSettings, ASettingWithAnLlmNeedsOne) {
   auto scenarios = parse_tidybot_scenarios(testing::kTwoScenarios, "two.yml");
   ASSERT_TRUE(scenarios);
