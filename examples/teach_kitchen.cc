@@ -10,13 +10,7 @@
 #include <cstdio>
 #include <string>
 
-#include <apprentice/agent/agent.h>
-#include <apprentice/experiment/experiment.h>
-#include <apprentice/instructor/dialogue.h>
-#include <apprentice/instructor/instructor.h>
-#include <apprentice/language/generation.h>
-#include <apprentice/world/scenario.h>
-#include <apprentice/world/simulator.h>
+#include <apprentice/face/apprentice.h>
 
 namespace {
 
@@ -32,20 +26,20 @@ class KitchenTeacher final : public Instructor {
   Result<std::string> answer(const Question& question, const World& world) override {
     switch (question.kind) {
       case QuestionKind::kTaskName:
-        return language::say_task_name(scenario_.task.name);
+        return words::task_name(scenario_.task.name);
       case QuestionKind::kTaskStep:
         return next_task_step(world);
       case QuestionKind::kSubtaskStep: {
         // About an object: its goal. About the subtask alone: it is done.
-        if (!question.object) return language::say_done();
+        if (!question.object) return words::done();
         auto goal = scenario_.intended_goal(question.subtask, *question.object);
-        if (!goal || goal->satisfied_by(world.state)) return language::say_done();
-        return language::describe_goal_instruction(world, *question.object, *goal);
+        if (!goal || goal->satisfied_by(world.state)) return words::done();
+        return words::goal(world, *question.object, *goal);
       }
       default:
         // With search (inst+search4) the agent finds the actions itself and
         // asks nothing else; a fuller teacher would answer here too.
-        return language::say_answer(false);
+        return words::answer(false);
     }
   }
 
@@ -56,15 +50,15 @@ class KitchenTeacher final : public Instructor {
   // an object that is on the table.", then "Repeat." after the first
   // object; then the next subtask; and "You are done." at the end.
   std::string next_task_step(const World& world) {
-    if (subtask_ >= scenario_.task.subtasks.size()) return language::say_done();
+    if (subtask_ >= scenario_.task.subtasks.size()) return words::done();
     const Subtask& subtask = scenario_.task.subtasks[subtask_];
     switch (step_++) {
-      case 0: return language::say_repeat_while(world, subtask.places);
-      case 1: return language::say_subtask(subtask.verb, world, subtask.places);
+      case 0: return words::repeat_while(world, subtask.places);
+      case 1: return words::subtask(subtask.verb, world, subtask.places);
       default:
         ++subtask_;
         step_ = 0;
-        return language::say_repeat();
+        return words::repeat();
     }
   }
 
@@ -84,34 +78,35 @@ int main(int argc, char** argv) {
   }
 
   // inst+search4: the teacher gives the task and the goals; search finds
-  // the actions. No knowledge store (nullptr): nothing is kept on disk. No
-  // LLM (nullptr): the condition does not use one.
-  AgentOptions options;
-  options.condition = *parse_condition("inst+search4");
-  TaskLearningAgent agent(options, Knowledge{}, Understanding(), nullptr, nullptr);
+  // the actions. No knowledge store: nothing is kept on disk. The condition
+  // uses no LLM.
+  AgentSpec spec = default_agent_spec();
+  spec.condition = "inst+search4";
+  Result<std::unique_ptr<AgentSession>> agent = make_agent_session(spec, *scenario);
+  if (!agent) {
+    std::fprintf(stderr, "teach_kitchen: %s\n", agent.error().describe().c_str());
+    return 2;
+  }
 
-  Simulator simulator(scenario->world);
   KitchenTeacher teacher(*scenario);
-  Dialogue dialogue(teacher);
-  Result<AgentReport> learned = agent.learn(simulator, dialogue);
+  Result<SessionReport> learned = (*agent)->learn(teacher);
   if (!learned) {
     std::fprintf(stderr, "teach_kitchen: %s\n", learned.error().describe().c_str());
     return 1;
   }
-  std::printf("Learned %s: %d of %zu goal assertions hold; %d instructions, %d words; %d goals and %d rules learned.\n",
-              scenario->task.name.c_str(), count_achieved_assertions(*scenario, simulator.state()),
-              scenario->goal_assertions().size(), dialogue.counts().instructions, dialogue.counts().words,
-              learned->goals_learned, learned->rules_learned);
+  std::printf("Learned %s: %d of %d goal assertions hold; %d instructions, %d words; %d goals and %d rules learned.\n",
+              scenario->task.name.c_str(), learned->assertions_achieved, learned->assertions_total,
+              learned->counts.instructions, learned->counts.words, learned->agent.goals_learned,
+              learned->agent.rules_learned);
 
   // Again, from the start, with learned knowledge alone.
-  Simulator again(scenario->world);
-  Result<AgentReport> performed = agent.perform(again, scenario->task.name);
+  Result<SessionReport> performed = (*agent)->perform(scenario->task.name);
   if (!performed) {
     std::fprintf(stderr, "teach_kitchen: %s\n", performed.error().describe().c_str());
     return 1;
   }
-  std::printf("Performed alone: %d of %zu goal assertions hold; %zu points needed help.\n",
-              count_achieved_assertions(*scenario, again.state()), scenario->goal_assertions().size(),
-              performed->help_needed.size());
-  return performed->help_needed.empty() ? 0 : 1;
+  std::printf("Performed alone: %d of %d goal assertions hold; %zu points needed help.\n",
+              performed->assertions_achieved, performed->assertions_total, performed->agent.help_needed.size());
+  std::printf("As JSON: %s\n", to_json(*performed).c_str());
+  return performed->agent.help_needed.empty() ? 0 : 1;
 }

@@ -11,8 +11,11 @@
 #include "agent/explanation.h"
 #include "experiment/experiment.h"
 #include "experiment/runner.h"
+#include "face/apprentice.h"
+#include "face/llm_setup.h"
 #include "instructor/terminal_instructor.h"
 #include "language/narration.h"
+#include "language/narration_summary.h"
 #include "llm/factory.h"
 #include "plot.h"
 #include "progress.h"
@@ -21,46 +24,23 @@
 #include "util/text.h"
 #include "world/pddl.h"
 
-#ifndef APPRENTICE_DATA_DIR
-#define APPRENTICE_DATA_DIR "data"
-#endif
-
 namespace apprentice::cli {
 
-// The shipped data: next to the binary's build directory when run from a
-// checkout (build/apprentice -> data/), else where the build was configured.
-std::filesystem::path data_dir() {
-  std::error_code ec;
-  std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-  if (!ec) {
-    for (std::filesystem::path dir = exe.parent_path(); !dir.empty() && dir != dir.root_path(); dir = dir.parent_path()) {
-      if (std::filesystem::exists(dir / "data" / "prompts" / "goal.txt", ec)) return dir / "data";
-    }
-  }
-  return APPRENTICE_DATA_DIR;
+LlmSpec llm_spec(const LlmFlags& flags) {
+  LlmSpec spec;
+  spec.backend = flags.spec;
+  spec.model = flags.model;
+  spec.api_key = flags.api_key;
+  spec.seed = flags.seed;
+  if (flags.timeout_ms) spec.timeout = std::chrono::milliseconds(*flags.timeout_ms);
+  if (flags.connect_timeout_ms) spec.connect_timeout = std::chrono::milliseconds(*flags.connect_timeout_ms);
+  spec.optional = flags.optional;
+  spec.goal_responses = flags.goal_responses;
+  return spec;
 }
 
-llm::LlmOptions llm_options(const LlmFlags& flags) {
-  llm::LlmOptions options;
-  options.model = flags.model;
-  options.api_key = flags.api_key;
-  options.seed = flags.seed;
-  if (flags.timeout_ms) options.transport.request_timeout = std::chrono::milliseconds(*flags.timeout_ms);
-  if (flags.connect_timeout_ms) options.transport.connect_timeout = std::chrono::milliseconds(*flags.connect_timeout_ms);
-  return options;
-}
+llm::LlmOptions llm_options(const LlmFlags& flags) { return llm_client_options(llm_spec(flags)); }
 
-namespace {
-
-Status write_file(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream file(path, std::ios::binary);
-  file << text;
-  file.close();
-  if (!file) return make_error(ErrorCode::kIo, path.string() + ": write failed");
-  return {};
-}
-
-}  // namespace
 
 // Printed under the table: what its columns mean where that is not plain.
 const char* const kTableLegend =
@@ -133,14 +113,8 @@ CommandResult run_experiment(const ExperimentOptions& options, const std::string
   request.options.use_rules = !options.no_rules;
   request.options.prompts_dir = data_dir() / "prompts";
   if (!options.knowledge_out.empty()) request.options.knowledge_out = options.knowledge_out;
-  if (!options.transcript_dir.empty()) {
-    request.on_result = [&](const ConditionResult& result) -> Status {
-      std::error_code ec;
-      std::filesystem::create_directories(options.transcript_dir, ec);
-      if (ec) return make_error(ErrorCode::kIo, options.transcript_dir + ": " + ec.message());
-      return write_file(std::filesystem::path(options.transcript_dir) / (result.condition + ".txt"), result.transcript);
-    };
-  }
+  if (!options.transcript_dir.empty())
+    request.on_result = [&](const ConditionResult& result) { return write_transcript(options.transcript_dir, result); };
   Result<ExperimentResults> run;
   {
     TerminalProgress progress(stderr, !options.json && !options.quiet, TerminalProgress::Mode::kWholeRun);
@@ -179,195 +153,66 @@ CommandResult run_experiment(const ExperimentOptions& options, const std::string
   return Outcome::kSuccess;
 }
 
-namespace {
-
-// Each goal assertion that does not hold in `now`, in English, once, with
-// how many times it occurs: look-alikes are named by where they were at the
-// start ("the glass tumbler from the dish rack should be in the cupboard").
-std::vector<std::pair<std::string, int>> unmet_assertions(const Scenario& scenario, const World& now) {
-  const Universe& u = *now.universe;
-  std::vector<std::pair<std::string, int>> unmet;
-  for (const Literal& l : scenario.goal_assertions()) {
-    if (now.state.satisfies(l)) continue;
-    std::string sentence = language::expected_fact(now, l);
-    if (l.fact.arity > 0 && u.info(l.fact.args[0]).kind == ObjectKind::kItem) {
-      ObjectId item = l.fact.args[0];
-      std::string name = language::spoken_name(now, item);
-      std::string from = language::spoken_location(scenario.world, item);
-      std::size_t space = from.find(' ');
-      std::vector<ObjectId> alike = u.with_category(u.info(item).category);
-      bool elsewhere = std::any_of(alike.begin(), alike.end(), [&](ObjectId other) {
-        return language::spoken_location(scenario.world, other) != from;
-      });
-      if (elsewhere && space != std::string::npos && sentence.rfind(name, 0) == 0)
-        sentence.insert(name.size(), " from" + from.substr(space));
-    }
-    auto same = std::find_if(unmet.begin(), unmet.end(), [&](const auto& entry) { return entry.first == sentence; });
-    if (same == unmet.end()) unmet.emplace_back(sentence, 1);
-    else ++same->second;
-  }
-  return unmet;
-}
-
-// The end of a teaching session, in English: how much of the scenario's
-// intent holds (where it has one), which assertions do not, and where the
-// knowledge is, or that nothing was kept.
-void print_teach_summary(const Scenario& scenario, const State& state, bool finished, int instructions,
-                         const KnowledgeStore* store, std::ostream& out) {
-  std::vector<Literal> assertions = scenario.goal_assertions();
-  int achieved = count_achieved_assertions(scenario, state);
-  std::string instructions_phrase = language::count_phrase(instructions, "instruction");
-  out << (finished ? "The task is learned" : "Stopped");
-  if (assertions.empty()) out << ", after " << instructions_phrase << ".\n";
-  else
-    out << ": " << achieved << " of " << language::count_phrase(static_cast<long long>(assertions.size()), "goal assertion")
-        << (achieved == 1 ? " holds" : " hold") << ", after " << instructions_phrase << ".\n";
-  World now = scenario.world;
-  now.state = state;
-  for (const auto& [sentence, times] : unmet_assertions(scenario, now))
-    out << "Not done: " << sentence << (times > 1 ? " (" + std::to_string(times) + " of them)" : std::string()) << ".\n";
-  if (store) out << "What you taught me is kept in " << store->path().string() << ".\n";
-  else
-    out << "Nothing was saved. To keep what you teach, give a knowledge store: apprentice teach --scenario " << scenario.source.string()
-        << " --knowledge FILE (for example kitchen.sqlite).\n";
-}
-
-}  // namespace
-
 CommandResult run_teach(const TeachOptions& options, const std::string& program, std::FILE* in, std::ostream& out) {
   (void)program;
   auto scenario = load_scenario(options.scenario);
   if (!scenario) return tl::unexpected(scenario.error());
-  auto condition = parse_condition(options.condition);
-  if (!condition) return tl::unexpected(condition.error());
-  condition->instruction = true;
-  auto generalization = parse_generalization(options.generalization);
-  if (!generalization) return tl::unexpected(generalization.error());
-  std::optional<KnowledgeStore> store;
-  Knowledge knowledge;
-  if (!options.knowledge.empty()) {
-    auto opened = KnowledgeStore::open(options.knowledge);
-    if (!opened) return tl::unexpected(opened.error());
-    auto loaded = opened->load(*scenario->world.domain);
-    if (!loaded) return tl::unexpected(loaded.error());
-    knowledge = std::move(*loaded);
-    store.emplace(std::move(*opened));
-  }
+  AgentSpec spec = default_agent_spec();
+  spec.condition = options.condition;
+  spec.instructed_always = true;  // a person is teaching
+  spec.generalization = options.generalization;
+  spec.knowledge = options.knowledge;
+  spec.goal_repair = options.llm.goal_repair;
+  spec.offer_ungrounded = options.llm.offer_ungrounded;
+  spec.llm = llm_spec(options.llm);
   // While the LLM is asked, a progress line on a terminal's stderr.
   TerminalProgress progress(stderr, !options.quiet, TerminalProgress::Mode::kLlmQueries);
-  std::unique_ptr<LlmAdvisor> advisor;
-  if (condition->llm) {
-    auto spec = llm::resolve_llm_spec(options.llm.spec);
-    if (!spec) return make_error(ErrorCode::kInvalidInput, "condition " + condition->name + " needs --llm SPEC");
-    auto client = llm::make_llm_client(*spec, llm_options(options.llm));
-    if (!client) return tl::unexpected(client.error());
-    auto templates = llm::PromptTemplates::load(data_dir() / "prompts");
-    if (!templates) return tl::unexpected(templates.error());
-    auto reachable = check_llm_before_run(*spec, llm_options(options.llm), options.llm.optional);
-    if (!reachable) return tl::unexpected(reachable.error());
-    LlmAdvisorOptions advice;
-    advice.disabled = !*reachable;
-    advice.goal_responses = options.llm.goal_responses;
-    std::unique_ptr<llm::LlmClient> observed = std::move(*client);
-    if (progress.active()) observed = observe_llm(std::move(observed), progress);
-    advisor = std::make_unique<LlmAdvisor>(std::move(observed), std::move(*templates), advice);
-  }
-  auto repair = parse_goal_repair(options.llm.goal_repair);
-  if (!repair) return tl::unexpected(repair.error());
-  AgentOptions agent_options;
-  agent_options.condition = *condition;
-  agent_options.generalization = *generalization;
-  agent_options.goal_repair = *repair;
-  agent_options.offer_ungrounded = options.llm.offer_ungrounded;
-  TaskLearningAgent agent(agent_options, std::move(knowledge), Understanding(), store ? &*store : nullptr,
-                          advisor.get());
-  Simulator simulator(scenario->world);
+  if (progress.active())
+    spec.llm.wrap = [&progress](std::unique_ptr<llm::LlmClient> client) { return observe_llm(std::move(client), progress); };
+  auto session = make_agent_session(spec, *scenario);
+  if (!session) return tl::unexpected(session.error());
   TerminalInstructor instructor(in, out, TerminalOptions{options.quiet, true});
-  Dialogue dialogue(instructor);
   if (!options.quiet)
-    out << "Teaching in " << scenario->name << " (" << condition->name
+    out << "Teaching in " << scenario->name << " (" << spec.condition
         << "). Answer in your own words; type help at any question. Ctrl-D or quit stops and keeps what you "
            "taught.\n";
-  auto report = agent.learn(simulator, dialogue);
-  if (!report && report.error().code != ErrorCode::kCancelled) return tl::unexpected(report.error());
+  auto report = (*session)->learn(instructor);
+  if (!report) return tl::unexpected(report.error());
+  const std::optional<std::filesystem::path> store = (*session)->store_path();
   if (instructor.interrupted()) {
     out << "Interrupted. "
-        << (store ? "What you taught me is kept in " + store->path().string() + "."
+        << (store ? "What you taught me is kept in " + store->string() + "."
                   : std::string("Nothing was saved (no --knowledge)."))
         << "\n";
     out.flush();
     return Outcome::kInterrupted;
   }
-  print_teach_summary(*scenario, simulator.state(), report.has_value(), dialogue.counts().instructions,
-                      store ? &*store : nullptr, out);
-  int achieved = count_achieved_assertions(*scenario, simulator.state());
-  int total = static_cast<int>(scenario->goal_assertions().size());
-  if (!scenario->has_intent || total == 0) return report ? Outcome::kSuccess : Outcome::kGoalNotReached;
-  return achieved == total ? Outcome::kSuccess : Outcome::kGoalNotReached;
+  language::TeachingEnd end;
+  end.finished = !report->stopped;
+  end.instructions = report->counts.instructions;
+  if (store) end.store = store->string();
+  end.how_to_keep = "apprentice teach --scenario " + scenario->source.string() + " --knowledge FILE (for example kitchen.sqlite)";
+  out << language::teaching_summary(*scenario, report->end, end);
+  if (!scenario->has_intent || report->assertions_total == 0)
+    return report->stopped ? Outcome::kGoalNotReached : Outcome::kSuccess;
+  return report->assertions_achieved == report->assertions_total ? Outcome::kSuccess : Outcome::kGoalNotReached;
 }
-
-namespace {
-
-// Why `run --task NAME` has nothing to perform, naming the store and what it
-// holds; nothing when there is a task to perform.
-std::optional<Error> unknown_task(const Knowledge& knowledge, const std::string& name, const std::string& store) {
-  if (knowledge.tasks.empty())
-    return Error{ErrorCode::kNotFound, store + " holds no learned task yet; teach one with 'apprentice teach'"};
-  if (knowledge.find_task(name) != nullptr || (name.empty() && knowledge.tasks.size() == 1)) return std::nullopt;
-  std::vector<std::string> names;
-  for (const TaskKnowledge& task : knowledge.tasks) names.push_back(apprentice::quoted(task.name));
-  const std::string holds = " holds " + language::count_phrase(static_cast<long long>(names.size()), "task") + ": " +
-                            join(names, ", ");
-  if (name.empty()) return Error{ErrorCode::kInvalidInput, "name the task with --task: " + store + holds};
-  return Error{ErrorCode::kNotFound, "no task " + apprentice::quoted(name) + " has been learned; " + store + holds};
-}
-
-}  // namespace
 
 CommandResult run_run(const RunOptions& options, std::ostream& out) {
   auto scenario = load_scenario(options.scenario);
   if (!scenario) return tl::unexpected(scenario.error());
-  auto store = KnowledgeStore::open(options.knowledge, StoreAccess::kReadOnly);
-  if (!store) return tl::unexpected(store.error());
-  auto knowledge = store->load(*scenario->world.domain);
-  if (!knowledge) return tl::unexpected(knowledge.error());
-  if (auto missing = unknown_task(*knowledge, options.task, options.knowledge)) return tl::unexpected(*missing);
-  AgentOptions agent_options;
-  agent_options.condition = Condition{"knowledge-only", false, 0, false};
-  TaskLearningAgent agent(agent_options, std::move(*knowledge), Understanding(), nullptr, nullptr);
-  Simulator simulator(scenario->world);
-  auto report = agent.perform(simulator, options.task);
+  AgentSpec spec = default_agent_spec();
+  spec.condition = "knowledge-only";
+  spec.knowledge = options.knowledge;
+  spec.store_access = StoreAccess::kReadOnly;
+  auto session = make_agent_session(spec, *scenario);
+  if (!session) return tl::unexpected(session.error());
+  auto report = (*session)->perform(options.task);
   if (!report) return tl::unexpected(report.error());
-  int achieved = count_achieved_assertions(*scenario, simulator.state());
-  int total = static_cast<int>(scenario->goal_assertions().size());
-  double completion = completion_percent(achieved, total);
-  // Without an intent nothing says what the task should achieve: no completion.
-  const bool measured = scenario->has_intent;
-  if (options.json) {
-    nlohmann::json j{{"instructions", 0}, {"search_nodes", report->search_nodes}, {"llm_calls", 0},
-                     {"actions", report->actions_executed}, {"help_needed", report->help_needed},
-                     {"renamed", report->renamed}, {"analogies", report->analogies}};
-    if (measured) {
-      j["completion_rate"] = completion;
-      j["assertions_achieved"] = achieved;
-      j["assertions_total"] = total;
-      j["objects_done"] = count_objects_done(*scenario, simulator.state());
-      j["objects_total"] = scenario->objects_to_tidy().size();
-    }
-    out << dump_json(j, 2) << "\n";
-  } else {
-    out << "Performed with learned knowledge alone: ";
-    if (measured)
-      out << achieved << " of " << language::count_phrase(total, "goal assertion") << " ("
-          << fmt::format("{:.1f}", completion) << "%), ";
-    out << language::count_phrase(report->actions_executed, "action") << ", 0 instructions, "
-        << language::count_phrase(static_cast<long long>(report->search_nodes), "search node") << ", 0 LLM calls.\n";
-    for (const std::string& note : report->renamed) out << "From another world: I " << note << ".\n";
-    for (const std::string& note : report->analogies) out << "By analogy: I " << note << ".\n";
-    if (report->help_needed.empty()) out << "No help was needed.\n";
-    for (const std::string& help : report->help_needed) out << "Would need help: " << help << "\n";
-  }
-  return (!measured || achieved == total) && report->help_needed.empty() ? Outcome::kSuccess : Outcome::kGoalNotReached;
+  if (options.json) out << to_json(*report) << "\n";
+  else out << report->summary;
+  const bool reached = !report->measured || report->assertions_achieved == report->assertions_total;
+  return reached && report->agent.help_needed.empty() ? Outcome::kSuccess : Outcome::kGoalNotReached;
 }
 
 CommandResult run_knowledge(const KnowledgeOptions& options, const std::string& program, std::ostream& out) {

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "face/apprentice.h"
 #include "llm/factory.h"
 #include "outcome.h"
 
@@ -28,9 +29,8 @@ struct LlmFlags {
   int goal_responses = 5;           // --llm-goal-responses
 };
 
-// The shipped data (data/: domains, scenarios, prompts, the page): next to the binary's build directory when run
-// from a checkout, else where the build was configured.
-std::filesystem::path data_dir();
+// The face's LLM spec from the flags (face/apprentice.h).
+LlmSpec llm_spec(const LlmFlags& flags);
 // The LLM client's options from the flags.
 llm::LlmOptions llm_options(const LlmFlags& flags);
 

@@ -1,6 +1,5 @@
 #include "teaching_session.h"
 
-#include "agent/agent.h"
 #include "agent/explanation.h"
 #include "experiment/experiment.h"
 #include "language/narration.h"
@@ -56,30 +55,26 @@ std::string summary(const Scenario& scenario, const State& state, bool finished,
 }  // namespace
 
 Result<std::unique_ptr<TeachingSession>> TeachingSession::start(SessionSetup setup) {
-  std::optional<KnowledgeStore> store;
-  Knowledge knowledge;
-  if (setup.store_path) {
-    auto opened = KnowledgeStore::open(*setup.store_path);
-    if (!opened) return tl::unexpected(opened.error());
-    auto loaded = opened->load(*setup.scenario.world.domain);
-    if (!loaded) return tl::unexpected(loaded.error());
-    knowledge = std::move(*loaded);
-    store.emplace(std::move(*opened));
-  }
+  // As `teach` wires it: inst+search4, the store, no LLM.
+  AgentSpec spec = default_agent_spec();
+  spec.condition = "inst+search4";
+  if (setup.store_path) spec.knowledge = setup.store_path->string();
+  auto agent = make_agent_session(spec, setup.scenario);
+  if (!agent) return tl::unexpected(agent.error());
   auto events = SessionEvents::open(setup.log_path);
   if (!events) return tl::unexpected(events.error());
   std::unique_ptr<TeachingSession> session(
-      new TeachingSession(std::move(setup), std::move(*events), std::move(store), std::move(knowledge)));
+      new TeachingSession(std::move(setup), std::move(*events), std::move(*agent)));
   session->thread_ = std::thread([s = session.get()] { s->run(); });
   return session;
 }
 
 TeachingSession::TeachingSession(SessionSetup setup, std::unique_ptr<SessionEvents> events,
-                                 std::optional<KnowledgeStore> store, Knowledge knowledge)
-    : setup_(std::move(setup)), events_(std::move(events)), store_(std::move(store)), knowledge_(std::move(knowledge)) {
+                                 std::unique_ptr<AgentSession> agent)
+    : setup_(std::move(setup)), events_(std::move(events)), agent_(std::move(agent)) {
   // The views are called on the agent's thread, while the agent waits for
   // a reply: reading its knowledge then is safe.
-  PageViews views{[this] { return agent_ ? describe(agent_->knowledge(), *setup_.scenario.world.domain) : nlohmann::json::array(); },
+  PageViews views{[this] { return describe(agent_->knowledge(), *setup_.scenario.world.domain); },
                   [this](const World& world) { return progress(setup_.scenario, world); }};
   instructor_ = std::make_unique<PageInstructor>(*events_, std::move(views));
   touch();
@@ -100,32 +95,25 @@ nlohmann::json TeachingSession::description() const {
 }
 
 // The agent's thread.
-// TODO(face, issue 24): build the agent through the public face once it is
-// on main; until then it is wired as `teach` wires it (inst+search4, the
-// store, no LLM).
 void TeachingSession::run() {
   const Scenario& scenario = setup_.scenario;
   events_->append({{"type", "start"}, {"world", setup_.world_name}, {"scenario", scenario.name},
                    {"store", setup_.store_name}, {"condition", "inst+search4"}});
-  auto condition = parse_condition("inst+search4");
-  AgentOptions options;
-  options.condition = *condition;
-  TaskLearningAgent agent(options, std::move(knowledge_), Understanding(), store_ ? &*store_ : nullptr, nullptr);
-  agent_ = &agent;
-  Simulator simulator(scenario.world);
-  Dialogue dialogue(*instructor_);
-  auto report = agent.learn(simulator, dialogue);
+  auto report = agent_->learn(*instructor_);
+  const bool finished = report && !report->stopped;
+  const State end_state = report ? report->end : scenario.world.state;
+  const DialogueCounts counts = report ? report->counts : DialogueCounts{};
+  World now = scenario.world;
+  now.state = end_state;
   nlohmann::json end{{"type", "end"},
-                     {"text", summary(scenario, simulator.state(), report.has_value(), dialogue.counts().instructions,
-                                      setup_.store_name)},
-                     {"finished", report.has_value()},
-                     {"instructions", dialogue.counts().instructions},
-                     {"words", dialogue.counts().words},
-                     {"world", world_view(simulator.world())},
-                     {"progress", progress(scenario, simulator.world())}};
-  if (!report && report.error().code != ErrorCode::kCancelled) end["error"] = report.error().describe();
+                     {"text", summary(scenario, end_state, finished, counts.instructions, setup_.store_name)},
+                     {"finished", finished},
+                     {"instructions", counts.instructions},
+                     {"words", counts.words},
+                     {"world", world_view(now)},
+                     {"progress", progress(scenario, now)}};
+  if (!report) end["error"] = report.error().describe();
   events_->append(std::move(end));
-  agent_ = nullptr;
   ended_ = true;
   events_->close();
 }

@@ -14,8 +14,7 @@
 #include <string>
 #include <thread>
 
-#include "agent/agent.h"
-#include "knowledge/store.h"
+#include "face/apprentice.h"
 #include "page_instructor.h"
 #include "session_events.h"
 #include "world/scenario.h"
@@ -66,16 +65,15 @@ class TeachingSession {
   nlohmann::json description() const;
 
  private:
-  TeachingSession(SessionSetup setup, std::unique_ptr<SessionEvents> events, std::optional<KnowledgeStore> store,
-                  Knowledge knowledge);
+  TeachingSession(SessionSetup setup, std::unique_ptr<SessionEvents> events, std::unique_ptr<AgentSession> agent);
   void run();
 
   SessionSetup setup_;
   std::unique_ptr<SessionEvents> events_;
-  std::optional<KnowledgeStore> store_;  // used on the agent's thread only
-  Knowledge knowledge_;                  // what the store held at the start
+  // The agent, its store and all it uses; taught on the agent's thread, and
+  // read there only (the page's views run while it waits for a reply).
+  std::unique_ptr<AgentSession> agent_;
   std::unique_ptr<PageInstructor> instructor_;
-  const TaskLearningAgent* agent_ = nullptr;  // while run() teaches it; read on the agent's thread only
   std::atomic<bool> ended_{false};
   std::atomic<std::chrono::steady_clock::rep> last_active_{0};
   std::thread thread_;

@@ -68,7 +68,8 @@ class Question(str):
         return self.kind in ("confirm-goal", "confirm-action")
 
 
-def experiment(scenario_path, conditions=None, llm=None, generalization="full", knowledge_in=None, use_rules=True):
+def experiment(scenario_path, conditions=None, llm=None, generalization="full", knowledge_in=None, use_rules=True,
+               knowledge_out=None, transcript_dir=None, **options):
     """Runs the paper's experiment: each condition from empty knowledge, with
     the simulated instructor, on a fresh copy of the scenario.
 
@@ -78,6 +79,14 @@ def experiment(scenario_path, conditions=None, llm=None, generalization="full", 
     llm: an LLM backend spec ("openai:http://127.0.0.1:8080/v1",
         "replay:FILE", "corpus:FILE", ...); None uses $APPRENTICE_LLM.
     generalization: "full" (ours) or "paper" (the paper's chunks).
+    knowledge_in: a knowledge store every condition starts from (a copy).
+    knowledge_out: a folder to keep each condition's knowledge in
+        (<condition>.sqlite); transcript_dir: a folder for each condition's
+        dialogue (<condition>.txt).
+    options: as the CLI's flags of the same names: max_reprompts,
+        goal_repair, offer_ungrounded, llm_model, llm_api_key,
+        llm_timeout_ms, llm_connect_timeout_ms, llm_seed, llm_optional,
+        llm_goal_responses.
 
     Returns a list with one dict per condition, with the keys that
     `apprentice experiment --json` prints (condition, completion_rate,
@@ -87,5 +96,10 @@ def experiment(scenario_path, conditions=None, llm=None, generalization="full", 
         conditions = [conditions]
     if knowledge_in is not None:
         knowledge_in = _os.fspath(knowledge_in)
-    text = _experiment_json(scenario_path, list(conditions or []), llm, generalization, knowledge_in, use_rules)
+    if knowledge_out is not None:
+        knowledge_out = _os.fspath(knowledge_out)
+    if transcript_dir is not None:
+        transcript_dir = _os.fspath(transcript_dir)
+    text = _experiment_json(scenario_path, list(conditions or []), llm, generalization, knowledge_in, knowledge_out,
+                            transcript_dir, use_rules=use_rules, **options)
     return _json.loads(text)

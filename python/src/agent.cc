@@ -1,10 +1,9 @@
 // apprentice.Agent: the task-learning agent, taught by any Python callable.
 #include <atomic>
 
-#include "agent/agent.h"
 #include "bindings.h"
-#include "experiment/experiment.h"
-#include "llm/factory.h"
+#include "face/apprentice.h"
+#include "knowledge/learning.h"
 #include "world/action.h"
 #include "world/goal.h"
 
@@ -95,105 +94,68 @@ class PythonInstructor final : public Instructor {
   std::optional<py::error_already_set> pending_;
 };
 
-py::list object_reports(const std::vector<ObjectReport>& objects) {
-  py::list out;
-  for (const ObjectReport& o : objects)
-    out.append(py::dict(py::arg("object") = o.object, py::arg("subtask") = o.subtask,
-                        py::arg("goal_source") = o.goal_source, py::arg("goal") = o.goal,
-                        py::arg("achieved") = o.achieved, py::arg("note") = o.note));
-  return out;
-}
-
-// What a run did, as a dict: the report, and completion against the
-// scenario's intent.
-py::dict report_dict(const Scenario& scenario, const Simulator& simulator, const AgentReport& report) {
-  int achieved = count_achieved_assertions(scenario, simulator.state());
-  int total = static_cast<int>(scenario.goal_assertions().size());
-  py::dict out;
-  out["task_finished"] = report.task_finished;
-  out["completion_rate"] = completion_percent(achieved, total);
-  out["assertions_achieved"] = achieved;
-  out["assertions_total"] = total;
-  out["objects"] = object_reports(report.objects);
-  out["actions_executed"] = report.actions_executed;
-  out["rule_actions"] = report.rule_actions;
-  out["search_nodes"] = report.search_nodes;
-  out["goals_learned"] = report.goals_learned;
-  out["rules_learned"] = report.rules_learned;
-  out["help_needed"] = report.help_needed;
-  out["facts"] = facts_of(simulator.world());
+// What a run did, as a dict: the face's JSON report (to_json), with the
+// world's facts at the end, and, after learning, the transcript.
+py::dict report_dict(const SessionReport& report, const World& start) {
+  py::dict out = py::module_::import("json").attr("loads")(to_json(report));
+  // Without an intent there is nothing to measure against: 100%, as before.
+  out["completion_rate"] = report.completion_rate;
+  out["assertions_achieved"] = report.assertions_achieved;
+  out["assertions_total"] = report.assertions_total;
+  World end = start;
+  end.state = report.end;
+  out["facts"] = facts_of(end);
+  out["summary"] = report.summary;
   return out;
 }
 
 class AgentHandle {
  public:
-  AgentHandle(const py::object& scenario, const py::object& knowledge, const std::string& condition_name,
-              const std::optional<std::string>& llm_spec, const std::string& generalization)
+  AgentHandle(const py::object& scenario, const py::object& knowledge, const std::string& condition,
+              const std::optional<std::string>& llm, const std::string& generalization, const AgentSpec& more)
       : scenario_(scenario_from(scenario)) {
-    Condition condition = unwrap(parse_condition(condition_name));
-    AgentOptions options;
-    options.condition = condition;
-    options.generalization = unwrap(parse_generalization(generalization));
-    Knowledge known;
-    if (!knowledge.is_none()) {
-      std::filesystem::path path = py::str(py::module_::import("os").attr("fspath")(knowledge)).cast<std::string>();
-      store_.emplace(unwrap(KnowledgeStore::open(path)));
-      known = unwrap(store_->load(*scenario_.scenario->world.domain));
+    AgentSpec spec = more;
+    spec.condition = condition;
+    spec.generalization = generalization;
+    spec.llm.backend = llm.value_or("");
+    if (!knowledge.is_none())
+      spec.knowledge = py::str(py::module_::import("os").attr("fspath")(knowledge)).cast<std::string>();
+    Result<std::unique_ptr<AgentSession>> made;
+    {
+      py::gil_scoped_release release;  // checking the LLM server may take seconds
+      made = make_agent_session(spec, *scenario_.scenario);
     }
-    if (condition.llm) {
-      auto spec = llm::resolve_llm_spec(llm_spec.value_or(""));
-      if (!spec)
-        raise_error(Error{ErrorCode::kInvalidInput, "condition " + condition.name +
-                                                         " needs an LLM: pass llm='openai:http://HOST:PORT/v1' "
-                                                         "(or another backend spec), or set APPRENTICE_LLM"});
-      auto client = unwrap(llm::make_llm_client(*spec, llm::LlmOptions{}));
-      auto templates = unwrap(llm::PromptTemplates::load(data_dir() / "prompts"));
-      advisor_ = std::make_unique<LlmAdvisor>(std::move(client), std::move(templates));
-    }
-    agent_ = std::make_unique<TaskLearningAgent>(options, std::move(known), Understanding(),
-                                                 store_ ? &*store_ : nullptr, advisor_.get());
+    session_ = unwrap(std::move(made));
   }
 
   py::dict learn(py::object instructor) {
     if (!PyCallable_Check(instructor.ptr())) throw py::type_error("the instructor must be a callable (question: str) -> str");
     Busy busy(*this);
     PythonInstructor adapter(std::move(instructor));
-    Simulator simulator(scenario_.scenario->world);
-    Dialogue dialogue(adapter);
-    Result<AgentReport> report;
+    Result<SessionReport> report;
     {
       py::gil_scoped_release release;
-      report = agent_->learn(simulator, dialogue);
+      report = session_->learn(adapter);
     }
     adapter.rethrow_pending();
-    bool stopped = !report && report.error().code == ErrorCode::kCancelled;
-    if (!report && !stopped) raise_error(report.error());
-    py::dict out = report_dict(*scenario_.scenario, simulator, report ? *report : AgentReport{});
-    if (stopped) out["stopped"] = report.error().message;
-    const DialogueCounts& counts = dialogue.counts();
-    out["instructions"] = counts.instructions;
-    out["words"] = counts.words;
-    out["yes_no"] = counts.yes_no;
-    out["yes"] = counts.yes;
-    if (advisor_) out["llm_calls"] = advisor_->totals().calls;
-    else out["llm_calls"] = 0;
-    out["transcript"] = dialogue.transcript_text();
+    SessionReport done = unwrap(std::move(report));
+    py::dict out = report_dict(done, scenario_.scenario->world);
+    out["transcript"] = done.transcript;
     return out;
   }
 
   py::dict perform(const py::object& scenario, const std::string& task) {
     Busy busy(*this);
     ScenarioHandle where = scenario.is_none() ? scenario_ : scenario_from(scenario);
-    Simulator simulator(where.scenario->world);
-    Result<AgentReport> report;
+    Result<SessionReport> report;
     {
       py::gil_scoped_release release;
-      report = agent_->perform(simulator, task);
+      report = session_->perform(task, where.scenario.get());
     }
-    return report_dict(*where.scenario, simulator, unwrap(std::move(report)));
+    return report_dict(unwrap(std::move(report)), where.scenario->world);
   }
 
-  KnowledgeView knowledge() const { return view_of(agent_->knowledge(), *scenario_.scenario->world.domain); }
+  KnowledgeView knowledge() const { return view_of(session_->knowledge(), *scenario_.scenario->world.domain); }
   const ScenarioHandle& scenario() const { return scenario_; }
 
  private:
@@ -211,9 +173,7 @@ class AgentHandle {
   };
 
   ScenarioHandle scenario_;
-  std::optional<KnowledgeStore> store_;
-  std::unique_ptr<LlmAdvisor> advisor_;
-  std::unique_ptr<TaskLearningAgent> agent_;
+  std::unique_ptr<AgentSession> session_;
   std::atomic<bool> busy_ = false;
 };
 
@@ -227,9 +187,17 @@ void bind_agent(py::module_& m) {
       "condition: the knowledge sources besides the instructor, e.g. 'inst+search4', 'instruction', 'inst+llm'.\n"
       "llm: an LLM backend spec ('openai:http://127.0.0.1:8080/v1', 'replay:FILE', 'corpus:FILE', ...) for the\n"
       "LLM conditions; None uses $APPRENTICE_LLM.\n"
-      "generalization: 'full' (ours) or 'paper' (the paper's chunks).")
-      .def(py::init<const py::object&, const py::object&, const std::string&, const std::optional<std::string>&,
-                    const std::string&>(),
+      "generalization: 'full' (ours) or 'paper' (the paper's chunks).\n"
+      "Keyword options, as the CLI's flags of the same names: use_rules, max_reprompts, goal_repair,\n"
+      "offer_ungrounded, llm_model, llm_api_key, llm_timeout_ms, llm_connect_timeout_ms, llm_seed, llm_optional,\n"
+      "llm_goal_responses.")
+      .def(py::init([](const py::object& scenario, const py::object& knowledge, const std::string& condition,
+                       const std::optional<std::string>& llm, const std::string& generalization,
+                       const py::kwargs& options) {
+             AgentSpec spec = default_agent_spec();
+             apply_agent_options(options, spec);
+             return std::make_unique<AgentHandle>(scenario, knowledge, condition, llm, generalization, spec);
+           }),
            py::arg("scenario"), py::arg("knowledge") = py::none(), py::arg("condition") = "inst+search4",
            py::arg("llm") = py::none(), py::arg("generalization") = "full")
       .def("learn", &AgentHandle::learn, py::arg("instructor"),

@@ -12,6 +12,7 @@
 #include <memory>
 #include <string>
 
+#include "face/apprentice.h"
 #include "knowledge/store.h"
 #include "util/result.h"
 #include "world/scenario.h"
@@ -30,10 +31,13 @@ T unwrap(Result<T> result) {
   return std::move(*result);
 }
 
-// The shipped data (domains, scenarios, prompt templates): $APPRENTICE_DATA
-// when set, else the source tree's data/ this module was built from, else
-// the installed share/apprentice.
-std::filesystem::path data_dir();
+// The keyword options the Agent and experiment() take besides their named
+// arguments, as the CLI's flags of the same names (--no-rules is
+// use_rules=False): use_rules, max_reprompts, goal_repair, offer_ungrounded,
+// llm_model, llm_api_key, llm_timeout_ms, llm_connect_timeout_ms, llm_seed,
+// llm_optional, llm_goal_responses. An unknown one or a bad value raises
+// apprentice.Error ("invalid input"), as the CLI refuses the flag.
+void apply_agent_options(const py::kwargs& options, AgentSpec& spec);
 
 // A loaded scenario, shared by the Python Scenario object and the agents
 // made from it.

@@ -3,26 +3,44 @@
 #include "bindings.h"
 #include "experiment/runner.h"
 #include "knowledge/store.h"
+#include "face/llm_setup.h"
 
 namespace apprentice::python {
 
 namespace {
 
 // The results as the JSON text `experiment --json` prints; the package's
-// experiment() turns it into a list of dicts.
+// experiment() turns it into a list of dicts. The keyword options are the
+// Agent's (apply_agent_options), as the CLI's flags of the same names.
 std::string experiment_json(const py::object& scenario_path, const std::vector<std::string>& conditions,
                             const std::optional<std::string>& llm, const std::string& generalization,
-                            const py::object& knowledge_in, bool use_rules) {
+                            const py::object& knowledge_in, const py::object& knowledge_out,
+                            const py::object& transcript_dir, const py::kwargs& options) {
   ScenarioHandle scenario = scenario_from(scenario_path);
+  AgentSpec spec = default_agent_spec();
+  apply_agent_options(options, spec);
   ExperimentRequest request;
   if (!knowledge_in.is_none())
     request.options.knowledge_in =
         unwrap(load_knowledge_read_only(py::cast<std::string>(knowledge_in), *scenario.scenario->world.domain));
+  if (!knowledge_out.is_none()) request.options.knowledge_out = py::cast<std::string>(knowledge_out);
   request.conditions = conditions;
   request.llm_spec = llm::resolve_llm_spec(llm.value_or(""));
+  request.llm_options = llm_client_options(spec.llm);
+  request.llm_optional = spec.llm.optional;
   request.options.generalization = unwrap(parse_generalization(generalization));
-  request.options.use_rules = use_rules;
+  request.options.use_rules = spec.use_rules;
+  request.options.goal_repair = unwrap(parse_goal_repair(spec.goal_repair));
+  request.options.max_reprompts = spec.max_reprompts;
+  request.options.offer_ungrounded = spec.offer_ungrounded;
+  request.options.goal_responses = spec.llm.goal_responses;
   request.options.prompts_dir = data_dir() / "prompts";
+  std::optional<std::filesystem::path> transcripts;
+  if (!transcript_dir.is_none()) transcripts = py::cast<std::string>(transcript_dir);
+  if (transcripts)
+    request.on_result = [&](const ConditionResult& result) -> Status {
+      return write_transcript(*transcripts, result);
+    };
   Result<ExperimentResults> run;
   {
     py::gil_scoped_release release;
@@ -35,7 +53,7 @@ std::string experiment_json(const py::object& scenario_path, const std::vector<s
 
 void bind_experiment(py::module_& m) {
   m.def("_experiment_json", &experiment_json, py::arg("scenario_path"), py::arg("conditions"), py::arg("llm"),
-        py::arg("generalization"), py::arg("knowledge_in"), py::arg("use_rules"));
+        py::arg("generalization"), py::arg("knowledge_in"), py::arg("knowledge_out"), py::arg("transcript_dir"));
   m.def("condition_names", &paper_condition_names, "The paper's six conditions, in Table 3's order.");
   m.def(
       "paper_row",

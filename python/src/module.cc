@@ -1,13 +1,12 @@
 // The extension module apprentice._apprentice; the package apprentice
 // (python/apprentice/__init__.py) re-exports it.
+#include <chrono>
 #include <cstdlib>
+#include <limits>
 
 #include "bindings.h"
 #include "util/log.h"
 
-#ifndef APPRENTICE_DATA_DIR
-#define APPRENTICE_DATA_DIR "data"
-#endif
 #ifndef APPRENTICE_VERSION
 #define APPRENTICE_VERSION "0"
 #endif
@@ -29,18 +28,55 @@ void raise_error(const Error& error) {
   throw py::error_already_set();
 }
 
-std::filesystem::path data_dir() {
-  if (const char* chosen = std::getenv("APPRENTICE_DATA"); chosen && *chosen) return chosen;
-  std::error_code ec;
-  std::filesystem::path built = APPRENTICE_DATA_DIR;
-  if (std::filesystem::exists(built / "prompts" / "goal.txt", ec)) return built;
-  // Installed: <prefix>/lib/python3/dist-packages/apprentice/ -> <prefix>/share/apprentice.
-  py::object file = py::module_::import("apprentice._apprentice").attr("__file__");
-  std::filesystem::path here = std::filesystem::path(file.cast<std::string>()).parent_path();
-  for (std::filesystem::path dir = here; !dir.empty() && dir != dir.root_path(); dir = dir.parent_path())
-    if (std::filesystem::exists(dir / "share" / "apprentice" / "prompts" / "goal.txt", ec))
-      return dir / "share" / "apprentice";
-  return built;
+namespace {
+
+int whole_number(const py::handle& value, const char* name, long low, long high) {
+  if (!py::isinstance<py::int_>(value) || py::isinstance<py::bool_>(value))
+    raise_error(Error{ErrorCode::kInvalidInput, std::string(name) + ": " + std::string(py::repr(value)) + " is not a whole number"});
+  long number = value.cast<long>();
+  if (number < low || number > high)
+    raise_error(Error{ErrorCode::kInvalidInput, std::string(name) + ": " + std::to_string(number) + " is out of range (" +
+                                                    std::to_string(low) + " to " + std::to_string(high) + ")"});
+  return static_cast<int>(number);
+}
+
+bool flag(const py::handle& value, const char* name) {
+  if (!py::isinstance<py::bool_>(value))
+    raise_error(Error{ErrorCode::kInvalidInput, std::string(name) + ": " + std::string(py::repr(value)) + " is not True or False"});
+  return value.cast<bool>();
+}
+
+std::string text(const py::handle& value, const char* name) {
+  if (!py::isinstance<py::str>(value))
+    raise_error(Error{ErrorCode::kInvalidInput, std::string(name) + ": " + std::string(py::repr(value)) + " is not a str"});
+  return value.cast<std::string>();
+}
+
+}  // namespace
+
+void apply_agent_options(const py::kwargs& options, AgentSpec& spec) {
+  constexpr long kMost = std::numeric_limits<int>::max();
+  for (const auto& [key, value] : options) {
+    const std::string name = key.cast<std::string>();
+    if (value.is_none()) continue;  // the default
+    if (name == "use_rules") spec.use_rules = flag(value, "use_rules");
+    else if (name == "max_reprompts") spec.max_reprompts = whole_number(value, "max_reprompts", 0, 16);
+    else if (name == "goal_repair") spec.goal_repair = text(value, "goal_repair");
+    else if (name == "offer_ungrounded") spec.offer_ungrounded = flag(value, "offer_ungrounded");
+    else if (name == "llm_model") spec.llm.model = text(value, "llm_model");
+    else if (name == "llm_api_key") spec.llm.api_key = text(value, "llm_api_key");
+    else if (name == "llm_timeout_ms") spec.llm.timeout = std::chrono::milliseconds(whole_number(value, "llm_timeout_ms", 1, kMost));
+    else if (name == "llm_connect_timeout_ms")
+      spec.llm.connect_timeout = std::chrono::milliseconds(whole_number(value, "llm_connect_timeout_ms", 1, kMost));
+    else if (name == "llm_seed") spec.llm.seed = whole_number(value, "llm_seed", 0, kMost);
+    else if (name == "llm_optional") spec.llm.optional = flag(value, "llm_optional");
+    else if (name == "llm_goal_responses") spec.llm.goal_responses = whole_number(value, "llm_goal_responses", 1, 10);
+    else
+      raise_error(Error{ErrorCode::kInvalidInput,
+                        "unknown option " + name + " (options: use_rules, max_reprompts, goal_repair, offer_ungrounded, "
+                        "llm_model, llm_api_key, llm_timeout_ms, llm_connect_timeout_ms, llm_seed, llm_optional, "
+                        "llm_goal_responses)"});
+  }
 }
 
 void bind_errors(py::module_& m) {

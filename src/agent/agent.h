@@ -22,6 +22,7 @@
 #include "agent/condition.h"
 #include "agent/goal_repair.h"
 #include "agent/llm_advisor.h"
+#include "agent/report.h"
 #include "agent/understanding.h"
 #include "instructor/dialogue.h"
 #include "knowledge/learning.h"
@@ -54,34 +55,6 @@ struct AgentOptions {
   // only usable ones are offered, and without an instructor the best usable
   // one is taken.
   bool offer_ungrounded = false;
-};
-
-// How one object went.
-struct ObjectReport {
-  std::string object;
-  std::string subtask;
-  std::string goal_source;  // "memory", "instructor", "llm", or "" if none
-  std::string goal;         // as PDDL, if any
-  bool achieved = false;
-  std::string note;         // why not, if not
-};
-
-struct AgentReport {
-  std::vector<ObjectReport> objects;
-  std::uint64_t search_nodes = 0;
-  int searches = 0;
-  int actions_executed = 0;
-  int rule_actions = 0;     // actions chosen by learned rules
-  int goals_learned = 0;
-  int rules_learned = 0;
-  // Where the agent would have needed help it could not get (for `run`).
-  std::vector<std::string> help_needed;
-  // What the agent carried over from other worlds (transfer.h), one line
-  // each: the categories it took for learned ones, and the goals it
-  // adopted by analogy.
-  std::vector<std::string> renamed;
-  std::vector<std::string> analogies;
-  bool task_finished = false;  // the instructor said the task was done
 };
 
 // Ownership: the agent owns its options, knowledge and understanding (by

@@ -4,6 +4,7 @@
 #include <set>
 
 #include "agent/agent.h"
+#include "face/apprentice.h"
 #include "benchmark/tidybot_teacher.h"
 #include "benchmark/tidybot_world.h"
 #include "language/generation.h"
@@ -78,17 +79,20 @@ struct Session {
 // benchmark's teacher.
 Result<Session> run_session(const BenchmarkWorld& world, Knowledge knowledge, const Condition& condition,
                             const TeacherOptions& teaching, LlmAdvisor* advisor) {
-  AgentOptions agent_options;
-  agent_options.condition = condition;
-  TaskLearningAgent agent(agent_options, std::move(knowledge), Understanding(), nullptr, advisor);
-  Simulator simulator(world.scenario.world);
+  AgentSpec spec = default_agent_spec();
+  spec.condition = condition.name;
+  spec.condition_parts = condition;
+  spec.start_from = std::make_shared<const Knowledge>(std::move(knowledge));
+  spec.lent_advisor = advisor;  // one advisor for the whole run: its counts and its breaker
+  auto agent = make_agent_session(spec, world.scenario);
+  if (!agent) return tl::unexpected(agent.error());
   BenchmarkTeacher teacher(world.scenario, teaching);
-  Dialogue dialogue(teacher);
-  auto report = agent.learn(simulator, dialogue);
+  auto report = (*agent)->learn(teacher);
   if (!report) return tl::unexpected(report.error());
-  Session session{agent.knowledge(), simulator.state(), {}, dialogue.transcript_text()};
+  if (report->stopped) return make_error(ErrorCode::kCancelled, report->stop_reason);
+  Session session{(*agent)->knowledge(), report->end, {}, report->transcript};
   session.tally.questions = teacher.questions_about_things();
-  session.tally.instructions = dialogue.counts().instructions;
+  session.tally.instructions = report->counts.instructions;
   return session;
 }
 

@@ -9,24 +9,6 @@
 
 namespace apprentice {
 
-double completion_percent(int achieved, int total) { return total == 0 ? 100.0 : 100.0 * achieved / total; }
-
-int count_achieved_assertions(const Scenario& scenario, const State& state) {
-  int achieved = 0;
-  for (const Literal& l : scenario.goal_assertions())
-    if (state.satisfies(l)) ++achieved;
-  return achieved;
-}
-
-int count_objects_done(const Scenario& scenario, const State& state) {
-  int done = 0;
-  for (ObjectId o : scenario.objects_to_tidy()) {
-    auto goal = scenario.intended_goal(scenario.subtask_of(o)->verb, o);
-    if (goal && goal->satisfied_by(state)) ++done;
-  }
-  return done;
-}
-
 Status check_runnable(const Scenario& scenario) {
   if (!scenario.has_intent || scenario.task.subtasks.empty())
     return make_error(ErrorCode::kInvalidInput,
@@ -69,18 +51,6 @@ DialogueCounts instruction_floor(const Scenario& scenario) {
 
 namespace {
 
-// Copies knowledge into a store, so that a condition's store holds what it
-// started from as well as what it learns.
-Status save_knowledge(KnowledgeStore& store, const Domain& domain, const Knowledge& knowledge) {
-  for (const TaskKnowledge& task : knowledge.tasks)
-    if (auto s = store.save_task(task); !s) return s;
-  for (const GoalKnowledge& goal : knowledge.goals.all())
-    if (auto s = store.save_goal(goal); !s) return s;
-  for (const Rule& rule : knowledge.rules.rules())
-    if (auto s = store.save_rule(domain, rule); !s) return s;
-  return {};
-}
-
 // Without an instructor nobody answers yes or no, so relevance is the share
 // of adopted LLM goals the instructor would have accepted: those that are
 // the intended goal. Unset when no LLM goal was adopted.
@@ -104,74 +74,62 @@ Result<ConditionResult> run_condition(const Scenario& scenario, const Condition&
                                       const ExperimentOptions& options) {
   if (auto s = check_runnable(scenario); !s) return tl::unexpected(s.error());
   auto started = std::chrono::steady_clock::now();
-  Knowledge knowledge = options.knowledge_in.value_or(Knowledge{});
-  std::optional<KnowledgeStore> store;
+  AgentSpec spec = default_agent_spec();
+  spec.condition = condition.name;
+  spec.condition_parts = condition;
+  spec.generalization = std::string(to_string(options.generalization));
+  spec.use_rules = options.use_rules;
+  spec.goal_repair = format_goal_repair(options.goal_repair);
+  spec.max_reprompts = options.max_reprompts;
+  spec.offer_ungrounded = options.offer_ungrounded;
+  if (options.knowledge_in) spec.start_from = std::make_shared<const Knowledge>(*options.knowledge_in);
   if (options.knowledge_out) {
     std::error_code ec;
     std::filesystem::create_directories(*options.knowledge_out, ec);
     if (ec) return make_error(ErrorCode::kIo, options.knowledge_out->string() + ": " + ec.message());
     // Started over in place, never deleted: refused while another process
     // has it open (KnowledgeStore, StoreAccess::kFresh).
-    std::filesystem::path path = *options.knowledge_out / (condition.name + ".sqlite");
-    auto opened = KnowledgeStore::open(path, StoreAccess::kFresh);
-    if (!opened) return tl::unexpected(opened.error());
-    store.emplace(std::move(*opened));
-    if (auto s = save_knowledge(*store, *scenario.world.domain, knowledge); !s) return tl::unexpected(s.error());
+    spec.knowledge = (*options.knowledge_out / (condition.name + ".sqlite")).string();
+    spec.store_access = StoreAccess::kFresh;
+    if (!spec.start_from) spec.start_from = std::make_shared<const Knowledge>();
   }
-  std::unique_ptr<LlmAdvisor> advisor;
-  if (condition.llm) {
-    if (!options.llm)
-      return make_error(ErrorCode::kInvalidInput, "condition " + condition.name + " needs an LLM: pass --llm SPEC");
-    auto client = options.llm();
-    if (!client) return tl::unexpected(client.error());
-    auto templates = llm::PromptTemplates::load(options.prompts_dir);
-    if (!templates) return tl::unexpected(templates.error());
-    LlmAdvisorOptions advice;
-    advice.instructed = condition.instruction;
-    advice.disabled = options.llm_disabled;
-    advice.goal_responses = options.goal_responses;
-    advisor = std::make_unique<LlmAdvisor>(std::move(*client), std::move(*templates), advice);
-  }
-  AgentOptions agent_options;
-  agent_options.condition = condition;
-  agent_options.generalization = options.generalization;
-  agent_options.use_rules = options.use_rules;
-  agent_options.goal_repair = options.goal_repair;
-  agent_options.max_reprompts = options.max_reprompts;
-  agent_options.offer_ungrounded = options.offer_ungrounded;
-  TaskLearningAgent agent(agent_options, std::move(knowledge), Understanding(), store ? &*store : nullptr, advisor.get());
-  Simulator simulator(scenario.world);
+  if (!options.prompts_dir.empty()) spec.data = options.prompts_dir.parent_path();
+  if (condition.llm && !options.llm)
+    return make_error(ErrorCode::kInvalidInput, "condition " + condition.name + " needs an LLM: pass --llm SPEC");
+  spec.llm.make_client = options.llm;
+  spec.llm.check_first = false;  // run_experiment checked the server once for all conditions
+  spec.llm.off = options.llm_disabled;
+  spec.llm.goal_responses = options.goal_responses;
+  auto session = make_agent_session(spec, scenario);
+  if (!session) return tl::unexpected(session.error());
   SimulatedInstructor instructor(scenario);
-  Dialogue dialogue(instructor);
-  auto report = agent.learn(simulator, dialogue);
+  auto report = (*session)->learn(instructor);
   if (!report) return tl::unexpected(report.error());
+  if (report->stopped) return make_error(ErrorCode::kCancelled, report->stop_reason);
 
   ConditionResult result;
   result.condition = condition.name;
-  result.assertions_total = static_cast<int>(scenario.goal_assertions().size());
-  result.assertions_achieved = count_achieved_assertions(scenario, simulator.state());
-  result.completion_rate = completion_percent(result.assertions_achieved, result.assertions_total);
-  result.objects_total = static_cast<int>(scenario.objects_to_tidy().size());
-  result.objects_done = count_objects_done(scenario, simulator.state());
-  result.counts = dialogue.counts();
+  result.assertions_total = report->assertions_total;
+  result.assertions_achieved = report->assertions_achieved;
+  result.completion_rate = report->completion_rate;
+  result.objects_total = report->objects_total;
+  result.objects_done = report->objects_done;
+  result.counts = report->counts;
   if (condition.llm && condition.instruction && result.counts.yes_no > 0)
     result.relevance = 100.0 * result.counts.yes / result.counts.yes_no;
-  if (condition.llm && !condition.instruction) result.relevance = silent_relevance(scenario, report->objects);
+  if (condition.llm && !condition.instruction) result.relevance = silent_relevance(scenario, report->agent.objects);
   result.uses_llm = condition.llm;
-  if (advisor) {
-    LlmTotals totals = advisor->totals();
-    result.llm_calls = totals.calls;
-    result.llm_tokens = totals.tokens;
-    result.llm_failures = totals.failures;
-    result.llm_stopped = totals.stopped;
-    result.llm_stopped_after_calls = totals.stopped_after_calls;
-    if (totals.stop_error) result.llm_stop_error = totals.stop_error->describe();
-    result.llm_ensemble = advisor->pools_sources();
-    result.llm_description = advisor->describe();
-  }
-  result.search_nodes = report->search_nodes;
-  result.report = std::move(*report);
-  result.transcript = dialogue.transcript_text();
+  result.llm_calls = report->llm_calls;
+  result.llm_tokens = report->llm_tokens;
+  result.llm_failures = report->llm_failures;
+  result.llm_stopped = report->llm_stopped;
+  result.llm_stopped_after_calls = report->llm_stopped_after_calls;
+  result.llm_stop_error = report->llm_stop_error;
+  result.llm_ensemble = report->llm_ensemble;
+  result.llm_description = report->llm_description;
+  result.search_nodes = report->agent.search_nodes;
+  result.report = std::move(report->agent);
+  result.transcript = std::move(report->transcript);
   result.wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
   return result;
 }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "agent/agent.h"
+#include "face/apprentice.h"
 #include "instructor/dialogue.h"
 #include "llm/llm_client.h"
 #include "llm/prompts.h"
@@ -101,13 +102,8 @@ Status check_runnable(const Scenario& scenario);
 Result<ConditionResult> run_condition(const Scenario& scenario, const Condition& condition,
                                       const ExperimentOptions& options);
 
-// The goal assertions of the scenario's intent that hold in `state`.
-int count_achieved_assertions(const Scenario& scenario, const State& state);
-// The paper's completion rate in percent: `achieved` of `total` goal
-// assertions; 100 when there are none.
-double completion_percent(int achieved, int total);
-// The objects to tidy whose whole intended goal holds in `state`.
-int count_objects_done(const Scenario& scenario, const State& state);
+// count_achieved_assertions, completion_percent and count_objects_done
+// are the face's (face/apprentice.h).
 
 // The least any condition with an instructor can hear on this scenario:
 // the task structure, and one goal description per goal type (subtask and

@@ -1,6 +1,7 @@
 #include "experiment/runner.h"
 
 #include <algorithm>
+#include <fstream>
 
 #include <nlohmann/json.hpp>
 
@@ -12,36 +13,6 @@ namespace apprentice {
 
 std::string per_condition_llm_spec(const std::string& spec, const std::string& condition) {
   return llm::spec_for_condition(spec, condition);
-}
-
-Result<bool> check_llm_before_run(const std::string& spec, const llm::LlmOptions& options, bool optional) {
-  auto checked = llm::check_llm_server(spec, options);
-  if (checked) {
-    const llm::LogprobsArrived logprobs = checked->logprobs;
-    if (checked->asked)
-      spdlog::info("the LLM server answered a one-token request in {} ms, {} ({})", checked->took.count(),
-                   logprobs == llm::LogprobsArrived::kYes  ? "with log-probabilities"
-                   : logprobs == llm::LogprobsArrived::kNo ? "without log-probabilities"
-                                                           : "with no text",
-                   checked->server);
-    if (checked->asked && logprobs == llm::LogprobsArrived::kNo)
-      spdlog::warn("the LLM server at {} gives no log-probabilities: its candidates keep the order they came in",
-                   checked->server);
-    return true;
-  }
-  // A server that is down or too slow may be done without; a configuration
-  // it refuses (a wrong URL, key or model) is the user's to fix, whatever
-  // --llm-optional says.
-  const ErrorCode code = checked.error().code;
-  const bool unreachable = code == ErrorCode::kUnavailable || code == ErrorCode::kDeadlineExceeded;
-  if (!unreachable) return tl::unexpected(checked.error());
-  if (!optional) {
-    Error error = checked.error();
-    error.message += " (--llm-optional goes on without it)";
-    return tl::unexpected(std::move(error));
-  }
-  spdlog::warn("{}; going on without the LLM (--llm-optional)", checked.error().message);
-  return false;
 }
 
 namespace {
@@ -109,6 +80,18 @@ Result<ExperimentResults> run_experiment(const Scenario& scenario, const Experim
     out.results.push_back(std::move(*result));
   }
   return out;
+}
+
+Status write_transcript(const std::filesystem::path& dir, const ConditionResult& result) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) return make_error(ErrorCode::kIo, dir.string() + ": " + ec.message());
+  const std::filesystem::path path = dir / (result.condition + ".txt");
+  std::ofstream file(path, std::ios::binary);
+  file << result.transcript;
+  file.close();
+  if (!file) return make_error(ErrorCode::kIo, path.string() + ": write failed");
+  return {};
 }
 
 std::string results_json(const std::vector<ConditionResult>& results) {

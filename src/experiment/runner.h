@@ -3,6 +3,7 @@
 // results as the JSON both print.
 #pragma once
 
+#include <filesystem>
 #include <functional>
 #include <optional>
 #include <string>
@@ -10,6 +11,7 @@
 
 #include "experiment/experiment.h"
 #include "experiment/progress.h"
+#include "face/llm_setup.h"
 #include "llm/factory.h"
 
 namespace apprentice {
@@ -56,11 +58,11 @@ Result<ExperimentResults> run_experiment(const Scenario& scenario, const Experim
 // spec unchanged (llm::spec_for_condition).
 std::string per_condition_llm_spec(const std::string& spec, const std::string& condition);
 
-// Whether to go on with the LLM, checked once before a run that needs it, so
-// that a dead server costs seconds rather than a run's worth of timeouts:
-// true when `spec`'s server answers; false when it does not and `optional`
-// (with one warning); kUnavailable naming the server when it does not.
-Result<bool> check_llm_before_run(const std::string& spec, const llm::LlmOptions& options, bool optional);
+// Writes the condition's dialogue to DIR/<condition>.txt, making DIR if
+// needed (experiment --transcript DIR). kIo when it cannot.
+Status write_transcript(const std::filesystem::path& dir, const ConditionResult& result);
+
+// check_llm_before_run is the face's (face/llm_setup.h).
 
 // The results as `experiment --json` prints them: a JSON array with one
 // object per condition (keys in docs/experiment.md), pretty-printed.

@@ -7,9 +7,6 @@
 #include "util/file.h"
 #include "util/text.h"
 
-#ifndef APPRENTICE_DATA_DIR
-#define APPRENTICE_DATA_DIR "data"
-#endif
 
 namespace apprentice::llm {
 namespace {
@@ -129,10 +126,6 @@ Result<PromptTemplates> PromptTemplates::load(const std::filesystem::path& dir) 
   // Fill in the examples now; the remaining placeholders are per query.
   const Values with_examples{{"examples", *examples}};
   return PromptTemplates(fill(*goal, with_examples), fill(*action, with_examples));
-}
-
-std::filesystem::path PromptTemplates::default_dir() {
-  return std::filesystem::path(APPRENTICE_DATA_DIR) / "prompts";
 }
 
 std::string PromptTemplates::goal_prompt(const TaskContext& context) const {

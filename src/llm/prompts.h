@@ -38,10 +38,6 @@ class PromptTemplates {
   // an unknown {placeholder} or without the ones it needs.
   static Result<PromptTemplates> load(const std::filesystem::path& dir);
 
-  // The directory the build was configured with (<source>/data/prompts).
-  // The CLI should prefer <exe dir>/../data/prompts when that exists.
-  static std::filesystem::path default_dir();
-
   // The goal prompt; it ends with "(RESULT)" so the model writes the goal.
   // With rejected statements in the context, one line "Not: <statement>."
   // per statement goes just before that last line (the statement without

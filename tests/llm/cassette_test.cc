@@ -1,3 +1,4 @@
+#include "common/paths.h"
 #include "llm/cassette.h"
 
 #include <gtest/gtest.h>
@@ -96,7 +97,7 @@ void serve_model(testing::TestHttpServer& server, std::atomic<int>& calls) {
 
 // The agent's LLM part of one object: goals, then the first step.
 std::pair<Retrieval, Retrieval> run_once(LlmClient& client) {
-  auto templates = PromptTemplates::load(PromptTemplates::default_dir());
+  auto templates = PromptTemplates::load(apprentice::testing::source_path("data/prompts"));
   EXPECT_TRUE(templates.has_value());
   TaskContext plate{"tidy kitchen", "clear", "kitchen", "ceramic-plate", "on table"};
   Retrieval goals = retrieve_goals(client, *templates, plate);

@@ -173,7 +173,7 @@ TEST(CorpusClientTest, AnswersNothingOutsideTheCorpus) {
 TEST(CorpusClientTest, ServesRetrieveGoals) {
   auto corpus = make_llm_client("corpus:" + kFixture + ",pool=all", LlmOptions{});
   ASSERT_TRUE(corpus.has_value()) << corpus.error().describe();
-  auto templates = PromptTemplates::load(PromptTemplates::default_dir());
+  auto templates = PromptTemplates::load(apprentice::testing::source_path("data/prompts"));
   ASSERT_TRUE(templates.has_value());
   TaskContext context{"tidy kitchen", "store", "kitchen", "mug", "on counter"};
   Retrieval goals = retrieve_goals(**corpus, *templates, context);
@@ -235,7 +235,7 @@ TEST(CorpusClientTest, RealStarsCorpus) {
   ASSERT_EQ(bottle.size(), 3u);  // TBP retrieved three unique responses per object
   EXPECT_EQ(bottle[0].text,
             "the goal is that the plastic-bottle is in the recycle-bin and the recycle-bin is closed");
-  auto templates = PromptTemplates::load(PromptTemplates::default_dir());
+  auto templates = PromptTemplates::load(apprentice::testing::source_path("data/prompts"));
   ASSERT_TRUE(templates.has_value());
   TaskContext context{"tidy kitchen", "clear", "kitchen", "plastic-bottle", "on table"};
   Retrieval goals = retrieve_goals(*tbp, *templates, context);

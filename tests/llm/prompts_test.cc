@@ -210,7 +210,7 @@ TEST_F(BadTemplatesTest, MissingPlaceholderIsInvalid) {
 }
 
 TEST(PromptsTest, DefaultDirHasTheTemplates) {
-  EXPECT_TRUE(PromptTemplates::load(PromptTemplates::default_dir()).has_value());
+  EXPECT_TRUE(PromptTemplates::load(apprentice::testing::source_path("data/prompts")).has_value());
 }
 
 }  // namespace

@@ -1,3 +1,4 @@
+#include "common/paths.h"
 #include "llm/retrieval.h"
 
 #include <gmock/gmock.h>
@@ -22,7 +23,7 @@ const char* const kGoal =
     "the dishwasher is closed";
 
 PromptTemplates templates() {
-  auto loaded = PromptTemplates::load(PromptTemplates::default_dir());
+  auto loaded = PromptTemplates::load(apprentice::testing::source_path("data/prompts"));
   EXPECT_TRUE(loaded.has_value());
   return std::move(*loaded);
 }

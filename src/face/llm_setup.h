@@ -1,0 +1,23 @@
+// The face's own: making and checking the LLM a session uses. Not
+// installed; front ends set AgentSpec::llm instead.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "face/apprentice.h"
+#include "llm/factory.h"
+#include "llm/llm_client.h"
+
+namespace apprentice {
+
+// The client's options from the spec: model, key, seed and timeouts.
+llm::LlmOptions llm_client_options(const LlmSpec& spec);
+
+// Whether to go on with the LLM, checked once before a run that needs it, so
+// that a dead server costs seconds rather than a run's worth of timeouts:
+// true when `spec`'s server answers; false when it does not and `optional`
+// (with one warning); kUnavailable naming the server when it does not.
+Result<bool> check_llm_before_run(const std::string& spec, const llm::LlmOptions& options, bool optional);
+
+}  // namespace apprentice

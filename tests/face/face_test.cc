@@ -1,0 +1,152 @@
+// The public face (face/apprentice.h): a spec and a world make a session
+// that learns and performs, as every front end builds it.
+#include "face/apprentice.h"
+
+#include <cstdlib>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "common/paths.h"
+#include "common/scenarios.h"
+#include "common/scratch.h"
+#include "instructor/simulated_instructor.h"
+#include "knowledge/learning.h"
+
+namespace apprentice {
+namespace {
+
+using ::testing::HasSubstr;
+using testing::ScratchTest;
+
+TEST(Face, TheDefaultSpecIsTheCliDefault) {
+  AgentSpec spec = default_agent_spec();
+  EXPECT_EQ(spec.condition, "inst+search4");
+  EXPECT_EQ(spec.generalization, "full");
+  EXPECT_EQ(spec.goal_repair, "all");
+  EXPECT_TRUE(spec.use_rules);
+  EXPECT_EQ(spec.max_reprompts, 1);
+  EXPECT_TRUE(spec.knowledge.empty());
+  EXPECT_EQ(spec.llm.goal_responses, 5);
+}
+
+TEST(Face, BadTextInTheSpecIsRefusedBeforeAnythingIsBuilt) {
+  Scenario kitchen = testing::shipped_scenario("tidy-kitchen");
+  AgentSpec spec = default_agent_spec();
+  spec.condition = "inst+serch4";
+  auto made = make_agent_session(spec, kitchen);
+  ASSERT_FALSE(made);
+  EXPECT_EQ(made.error().code, ErrorCode::kInvalidInput);
+  spec = default_agent_spec();
+  spec.generalization = "partial";
+  EXPECT_FALSE(make_agent_session(spec, kitchen));
+  spec = default_agent_spec();
+  spec.goal_repair = "mend";
+  EXPECT_FALSE(make_agent_session(spec, kitchen));
+}
+
+TEST(Face, AnLlmConditionWithoutAnLlmSaysHowToGiveOne) {
+  ::unsetenv("APPRENTICE_LLM");
+  AgentSpec spec = default_agent_spec();
+  spec.condition = "inst+llm";
+  auto made = make_agent_session(spec, testing::shipped_scenario("tidy-kitchen"));
+  ASSERT_FALSE(made);
+  EXPECT_EQ(made.error().code, ErrorCode::kInvalidInput);
+  EXPECT_THAT(made.error().message, HasSubstr("needs an LLM"));
+  EXPECT_THAT(made.error().message, HasSubstr("--llm SPEC"));
+}
+
+// Table 3's inst+search4 row, through the face: 40 instructions, 603 words.
+TEST(Face, LearningWithTheSimulatedInstructorGivesTableThree) {
+  Scenario kitchen = testing::shipped_scenario("tidy-kitchen");
+  auto session = make_agent_session(default_agent_spec(), kitchen);
+  ASSERT_TRUE(session) << session.error().describe();
+  SimulatedInstructor teacher(kitchen);
+  auto report = (*session)->learn(teacher);
+  ASSERT_TRUE(report) << report.error().describe();
+  EXPECT_FALSE(report->stopped);
+  EXPECT_EQ(report->counts.instructions, 40);
+  EXPECT_EQ(report->counts.words, 603);
+  EXPECT_EQ(report->assertions_achieved, report->assertions_total);
+  EXPECT_EQ(report->objects_done, 30);
+  EXPECT_THAT(report->summary, HasSubstr("The task is learned: 35 of 35 goal assertions hold, after 40 instructions."));
+  EXPECT_THAT(report->summary, HasSubstr("Nothing was saved."));
+
+  // Then alone, with what it learned.
+  auto alone = (*session)->perform("");
+  ASSERT_TRUE(alone) << alone.error().describe();
+  EXPECT_EQ(alone->assertions_achieved, alone->assertions_total);
+  EXPECT_TRUE(alone->agent.help_needed.empty());
+  EXPECT_THAT(alone->summary, HasSubstr("Performed with learned knowledge alone: 35 of 35 goal assertions (100.0%)"));
+  nlohmann::json j = nlohmann::json::parse(to_json(*alone));
+  EXPECT_EQ(j["instructions"], 0);
+  EXPECT_EQ(j["assertions_achieved"], 35);
+  EXPECT_EQ(j["actions"], alone->agent.actions_executed);
+  EXPECT_TRUE(j["help_needed"].empty());
+}
+
+TEST(Face, PerformingWithNothingLearnedNamesWhatIsMissing) {
+  auto session = make_agent_session(default_agent_spec(), testing::shipped_scenario("tidy-kitchen"));
+  ASSERT_TRUE(session);
+  auto alone = (*session)->perform("tidy kitchen");
+  ASSERT_FALSE(alone);
+  EXPECT_EQ(alone.error().code, ErrorCode::kNotFound);
+  EXPECT_THAT(alone.error().message, HasSubstr("the agent holds no learned task yet"));
+}
+
+class FaceStore : public ScratchTest {};
+
+// What one session keeps in its store, the next one starts from.
+TEST_F(FaceStore, TheStoreIsOwnedAndKeptAcrossSessions) {
+  Scenario kitchen = testing::shipped_scenario("tidy-kitchen");
+  AgentSpec spec = default_agent_spec();
+  spec.knowledge = (dir_ / "kitchen.sqlite").string();
+  {
+    auto session = make_agent_session(spec, kitchen);
+    ASSERT_TRUE(session) << session.error().describe();
+    ASSERT_EQ((*session)->store_path(), dir_ / "kitchen.sqlite");
+    SimulatedInstructor teacher(kitchen);
+    auto report = (*session)->learn(teacher);
+    ASSERT_TRUE(report);
+    EXPECT_THAT(report->summary, HasSubstr("What you taught me is kept in " + spec.knowledge + "."));
+  }
+  spec.condition = "knowledge-only";
+  spec.store_access = StoreAccess::kReadOnly;
+  auto again = make_agent_session(spec, kitchen);
+  ASSERT_TRUE(again) << again.error().describe();
+  EXPECT_EQ((*again)->knowledge().tasks.size(), 1u);
+  auto alone = (*again)->perform("tidy kitchen");
+  ASSERT_TRUE(alone) << alone.error().describe();
+  EXPECT_EQ(alone->assertions_achieved, alone->assertions_total);
+}
+
+TEST_F(FaceStore, AStoreThatIsNotOneIsRefused) {
+  AgentSpec spec = default_agent_spec();
+  spec.knowledge = write("not-a-store.sqlite", "this is not SQLite\n").string();
+  auto made = make_agent_session(spec, testing::shipped_scenario("tidy-kitchen"));
+  ASSERT_FALSE(made);
+  EXPECT_NE(made.error().code, ErrorCode::kInvalidInput);
+}
+
+// One way to find data/: from the test binary inside the build tree, the
+// checkout's; $APPRENTICE_DATA wins when set.
+TEST(Face, DataDirIsFoundFromTheCodeAndCanBeChosen) {
+  ::unsetenv("APPRENTICE_DATA");
+  EXPECT_EQ(std::filesystem::weakly_canonical(data_dir()), std::filesystem::weakly_canonical(testing::source_path("data")));
+  ::setenv("APPRENTICE_DATA", "/somewhere/else", 1);
+  EXPECT_EQ(data_dir(), std::filesystem::path("/somewhere/else"));
+  ::unsetenv("APPRENTICE_DATA");
+}
+
+TEST(Face, TheWordsForATeacherAreTheScriptsWords) {
+  Scenario kitchen = testing::shipped_scenario("tidy-kitchen");
+  EXPECT_EQ(words::task_name("tidy kitchen"), "Tidy kitchen.");
+  EXPECT_EQ(words::repeat(), "Repeat.");
+  EXPECT_EQ(words::done(), "You are done.");
+  const Subtask& first = kitchen.task.subtasks.front();
+  EXPECT_THAT(words::repeat_while(kitchen.world, first.places), HasSubstr("Repeat the following tasks while an object is "));
+}
+
+}  // namespace
+}  // namespace apprentice
