@@ -1,7 +1,7 @@
 # What `cmake --install build --prefix P` puts under P:
 #   bin/apprentice                         the CLI
 #   lib/libapprentice_*.a                  one static library per module
-#   include/apprentice/<module>/*.h        the headers (docs/install.md)
+#   include/apprentice/face/apprentice.h   the public face, and the headers it includes (docs/install.md)
 #   lib/cmake/apprentice/                  the CMake package: find_package(apprentice)
 #   share/apprentice/                      domains, scenarios, prompt templates
 #   share/bash-completion/completions/apprentice, share/man/man1/apprentice.1
@@ -20,9 +20,28 @@ add_library(apprentice::apprentice ALIAS apprentice_all)
 install(TARGETS apprentice_all EXPORT apprenticeTargets)
 
 install(TARGETS apprentice RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-# session.h is the agent's own; every other header may be included.
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/apprentice
-        FILES_MATCHING PATTERN "*.h" PATTERN "session.h" EXCLUDE)
+# The public face (src/face/apprentice.h) and the headers it includes, and
+# theirs: the types it names, and no other. Found by following the
+# #include "module/file.h" lines, so that the list cannot drift from the code.
+set(apprentice_public_headers "")
+set(apprentice_header_queue face/apprentice.h)
+while(apprentice_header_queue)
+  list(POP_FRONT apprentice_header_queue header)
+  if(header IN_LIST apprentice_public_headers)
+    continue()
+  endif()
+  list(APPEND apprentice_public_headers ${header})
+  file(STRINGS ${PROJECT_SOURCE_DIR}/src/${header} includes REGEX "^#include \"[a-z_]+/[a-z_0-9]+\\.h\"")
+  foreach(line IN LISTS includes)
+    string(REGEX REPLACE "^#include \"([^\"]+)\".*" "\\1" included "${line}")
+    list(APPEND apprentice_header_queue ${included})
+  endforeach()
+endwhile()
+foreach(header IN LISTS apprentice_public_headers)
+  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/${header})
+  get_filename_component(folder ${header} DIRECTORY)
+  install(FILES ${PROJECT_SOURCE_DIR}/src/${header} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/apprentice/${folder})
+endforeach()
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/data/ DESTINATION ${APPRENTICE_INSTALL_DATADIR})
 
 install(EXPORT apprenticeTargets NAMESPACE apprentice:: DESTINATION ${APPRENTICE_INSTALL_CMAKEDIR})

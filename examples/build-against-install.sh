@@ -21,11 +21,15 @@ cmake -S "$here" -B "$work/example" -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PA
   ${CMAKE_CXX_COMPILER_LAUNCHER:+-DCMAKE_CXX_COMPILER_LAUNCHER=$CMAKE_CXX_COMPILER_LAUNCHER} >/dev/null
 cmake --build "$work/example" 2>&1
 "$work/example/teach_kitchen"
+# Only the face and what it includes: no internal header (the agent's own).
+for file in include/apprentice/agent/agent.h include/apprentice/agent/session.h include/apprentice/llm/factory.h; do
+  [[ ! -e "$work/prefix/$file" ]] || { echo "build-against-install: the internal header $file was installed" >&2; exit 1; }
+done
 # The rest of the installation: the program with its man page and bash
 # completion, and the Python module when it was built.
 prefix="$work/prefix"
 for file in bin/apprentice share/man/man1/apprentice.1 share/bash-completion/completions/apprentice \
-            share/apprentice/scenarios/tidy-kitchen.yaml include/apprentice/agent/agent.h; do
+            share/apprentice/scenarios/tidy-kitchen.yaml include/apprentice/face/apprentice.h; do
   [[ -f "$prefix/$file" ]] || { echo "build-against-install: $file was not installed" >&2; exit 1; }
 done
 if [[ -d "$prefix/lib/python3/dist-packages/apprentice" ]]; then

@@ -15,6 +15,10 @@ class _Handler(http.server.BaseHTTPRequestHandler):
     def do_POST(self):  # noqa: N802 (http.server's name)
         length = int(self.headers.get("Content-Length", 0))
         self.rfile.read(length)
+        self.answer()
+
+    def answer(self):
+        """The one goal statement, with log-probabilities, after the delay."""
         time.sleep(self.delay)
         tokens = [" " + word for word in STATEMENT.split()]
         body = json.dumps({
@@ -50,3 +54,24 @@ class SlowLlmServer:
     def __exit__(self, *exc):
         self.server.shutdown()
         self.server.server_close()
+
+
+class RecordingLlmServer(SlowLlmServer):
+    """The same server, quick, keeping each request as it came: its JSON
+    body and its Authorization header, so that a test can see what the
+    options sent."""
+
+    def __init__(self, delay=0.0):
+        requests = self.requests = []
+
+        class Handler(_Handler):
+            def do_POST(self):  # noqa: N802 (http.server's name)
+                length = int(self.headers.get("Content-Length", 0))
+                body = self.rfile.read(length)
+                requests.append({"body": json.loads(body or b"{}"),
+                                 "authorization": self.headers.get("Authorization")})
+                self.answer()
+
+        Handler.delay = delay
+        self.server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), Handler)
+        self.thread = threading.Thread(target=self.server.serve_forever, daemon=True)

@@ -30,7 +30,7 @@
 #include "agent/report.h"
 #include "instructor/dialogue.h"
 #include "instructor/instructor.h"
-#include "knowledge/store_engine.h"
+#include "knowledge/store_access.h"
 #include "util/result.h"
 #include "world/scenario.h"
 

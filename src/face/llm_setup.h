@@ -1,15 +1,16 @@
-// The face's own: making and checking the LLM a session uses. Not
-// installed; front ends set AgentSpec::llm instead.
+// The face's own (defined in apprentice_llm.cc): making and checking the
+// LLM a session uses. Not installed; front ends set AgentSpec::llm instead.
 #pragma once
 
 #include <memory>
 #include <string>
 
-#include "face/apprentice.h"
 #include "llm/factory.h"
 #include "llm/llm_client.h"
 
 namespace apprentice {
+
+struct LlmSpec;  // face/apprentice.h
 
 // The client's options from the spec: model, key, seed and timeouts.
 llm::LlmOptions llm_client_options(const LlmSpec& spec);

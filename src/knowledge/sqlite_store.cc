@@ -12,7 +12,7 @@
 
 #include <SQLiteCpp/SQLiteCpp.h>
 
-#include "knowledge/store.h"
+#include "knowledge/store_engine.h"
 #include "knowledge/store_codec.h"
 #include "knowledge/store_creation.h"
 #include "util/file.h"

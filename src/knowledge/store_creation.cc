@@ -15,7 +15,7 @@
 #include <fmt/format.h>
 #include <SQLiteCpp/SQLiteCpp.h>
 
-#include "knowledge/store.h"
+#include "knowledge/store_engine.h"
 #include "util/file.h"
 
 namespace apprentice {

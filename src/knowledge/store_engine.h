@@ -21,26 +21,13 @@
 
 #include "knowledge/goal_memory.h"
 #include "knowledge/matcher.h"
+#include "knowledge/store_access.h"
 #include "knowledge/rule.h"
 #include "knowledge/task_knowledge.h"
 #include "util/result.h"
 #include "world/domain.h"
 
 namespace apprentice {
-
-// How a command uses a store.
-enum class StoreAccess {
-  // Read and write (teach): a missing or empty store becomes a new one.
-  kReadWrite,
-  // Read only (knowledge, run): the store must already exist; nothing is
-  // written to it, except that SQLite completes the rollback of a
-  // transaction a killed writer left unfinished.
-  kReadOnly,
-  // Start over (experiment --knowledge-out): a missing store becomes a new
-  // one, an existing store is emptied; refused ("in use") while another
-  // process has the store open, and held exclusively until closed.
-  kFresh,
-};
 
 // Everything the agent knows, in memory.
 struct Knowledge {

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "language/narration.h"
 #include "util/text.h"
 #include "world/state_lookup.h"
 
@@ -58,6 +57,17 @@ std::string for_object(const World& world, ObjectId object) {
 }
 
 }  // namespace
+
+std::string spoken_category(std::string_view category) {
+  std::string out(category);
+  std::replace(out.begin(), out.end(), '-', ' ');
+  return out;
+}
+
+std::string capitalize(std::string text) {
+  if (!text.empty() && text[0] >= 'a' && text[0] <= 'z') text[0] = static_cast<char>(text[0] - 'a' + 'A');
+  return text;
+}
 
 std::string_view article_for(std::string_view word) {
   if (word.empty()) return "a";

@@ -17,6 +17,10 @@
 
 namespace apprentice::language {
 
+// "glass-tumbler" -> "glass tumbler".
+std::string spoken_category(std::string_view category);
+// "Tidy the kitchen" from "tidy the kitchen".
+std::string capitalize(std::string text);
 // "an" before a vowel, else "a": "an apple-juice", "a ketchup".
 std::string_view article_for(std::string_view word);
 // "the ketchup", "the recycling bin"; an object with properties is named

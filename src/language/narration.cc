@@ -285,12 +285,6 @@ std::string kind_goes(std::string_view category) {
   return "the " + spoken_category(category) + (is_plural_category(category) ? " go" : " goes");
 }
 
-std::string spoken_category(std::string_view category) {
-  std::string out(category);
-  std::replace(out.begin(), out.end(), '-', ' ');
-  return out;
-}
-
 std::string plural_noun(std::string_view noun) {
   std::string out(noun);
   if (out.empty()) return out;
@@ -416,11 +410,6 @@ std::string list_phrase(const std::vector<std::string>& items) {
   std::string out;
   for (std::size_t i = 0; i + 1 < items.size(); ++i) out += items[i] + ", ";
   return out + "and " + items.back();
-}
-
-std::string capitalize(std::string text) {
-  if (!text.empty() && text[0] >= 'a' && text[0] <= 'z') text[0] = static_cast<char>(text[0] - 'a' + 'A');
-  return text;
 }
 
 // --- Questions ---------------------------------------------------------------

@@ -17,6 +17,7 @@
 #include <string_view>
 #include <vector>
 
+#include "language/generation.h"  // capitalize, spoken_category
 #include "world/action.h"
 #include "world/goal.h"
 #include "world/scenario.h"
@@ -26,8 +27,6 @@ namespace apprentice::language {
 
 // --- Words -----------------------------------------------------------------
 
-// "glass-tumbler" -> "glass tumbler".
-std::string spoken_category(std::string_view category);
 // Whether a kind is named in the plural ("crackers", "granola-bars"), for
 // verb agreement: the last word ends in "s" but not in "ss", "us" or "is".
 bool is_plural_category(std::string_view category);
@@ -66,8 +65,6 @@ std::string task_phrase(std::string_view task_name);
 std::string count_phrase(long long n, std::string_view singular, std::string_view plural = "");
 // "a", "a and b", "a, b, and c".
 std::string list_phrase(const std::vector<std::string>& items);
-// "Tidy the kitchen" from "tidy the kitchen".
-std::string capitalize(std::string text);
 
 // --- Questions (one line, ending in "?") -----------------------------------
 

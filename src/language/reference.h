@@ -22,7 +22,7 @@
 #include <variant>
 #include <vector>
 
-#include "language/grounding.h"
+#include "language/grounding_types.h"
 #include "language/lexicon.h"
 #include "language/logical_form.h"
 #include "world/scenario.h"

@@ -12,7 +12,7 @@
 #include "common/scenarios.h"
 #include "common/scratch.h"
 #include "instructor/simulated_instructor.h"
-#include "knowledge/learning.h"
+#include "knowledge/store_engine.h"
 
 namespace apprentice {
 namespace {

@@ -1,3 +1,4 @@
+#include "face/apprentice.h"
 #include "face/llm_setup.h"
 
 #include "util/log.h"
