@@ -1,7 +1,7 @@
 #include "teaching_session.h"
 
 #include "agent/explanation.h"
-#include "experiment/experiment.h"
+#include "knowledge/store_engine.h"
 #include "language/narration.h"
 #include "world_view.h"
 
