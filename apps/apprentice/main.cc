@@ -130,19 +130,59 @@ int help(const CLI::App& app, int argc, char** argv) {
   return not_a_command(app, word);
 }
 
+// The options of `command` (and of the program) a user may type, long and
+// short: "--scenario", "-q".
+std::vector<std::string> option_names(const CLI::App& app, const CLI::App* command) {
+  std::vector<std::string> names;
+  for (const CLI::App* owner : {command, &app}) {
+    if (owner == nullptr) continue;
+    for (const CLI::Option* option : owner->get_options()) {
+      for (const std::string& name : option->get_lnames()) names.push_back("--" + name);
+      for (const std::string& name : option->get_snames()) names.push_back("-" + name);
+    }
+  }
+  return names;
+}
+
+// The first word of the command line that looks like an option and is none
+// of `command`'s: "--scenrio" (from "--scenrio=FILE" too), or nothing.
+std::optional<std::string> unknown_option(const std::vector<std::string>& known, int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    std::string_view arg = argv[i];
+    if (arg == "--") break;
+    if (!arg.starts_with("-") || arg == "-") continue;
+    std::string name(arg.substr(0, arg.find('=')));
+    if (std::find(known.begin(), known.end(), name) == known.end()) return name;
+  }
+  return std::nullopt;
+}
+
 // A CLI11 error as the rest of our errors read: "apprentice: " first, the
-// subcommand named, and where to look for help.
-int parse_failure(const CLI::App& app, const CLI::ParseError& e) {
+// subcommand named, and where to look for help. An option that is none of
+// the command's is named alone, with the nearest one when it is a slip:
+// "--scenrio: did you mean --scenario?".
+int parse_failure(const CLI::App& app, const CLI::ParseError& e, int argc, char** argv) {
   std::string command;
-  for (const CLI::App* sub : app.get_subcommands()) command = sub->get_name();
+  const CLI::App* parsed = nullptr;
+  for (const CLI::App* sub : app.get_subcommands()) {
+    command = sub->get_name();
+    parsed = sub;
+  }
   std::string message = e.what();
   if (dynamic_cast<const CLI::ExtrasError*>(&e) != nullptr) {
-    // "The following argument was not expected: --frob"
-    const auto colon = message.find(": ");
-    const std::string what = colon == std::string::npos ? message : message.substr(colon + 2);
-    message = (what.starts_with("-") ? "unknown option " : "unexpected argument ") + apprentice::quoted(what);
+    const std::vector<std::string> known = option_names(app, parsed);
+    if (auto unknown = unknown_option(known, argc, argv)) {
+      message = "unknown option " + apprentice::quoted(*unknown);
+      if (auto near = closest_match(*unknown, known)) message = *unknown + ": did you mean " + *near + "?";
+    } else {
+      // "The following argument was not expected: FILE"
+      const auto colon = message.find(": ");
+      const std::string what = colon == std::string::npos ? message : message.substr(colon + 2);
+      message = (what.starts_with("-") ? "unknown option " : "unexpected argument ") + apprentice::quoted(what);
+    }
   }
-  std::cerr << "apprentice: " << (command.empty() ? "" : command + ": ") << message << ". See 'apprentice help"
+  const char* stop = message.ends_with("?") ? " " : ". ";
+  std::cerr << "apprentice: " << (command.empty() ? "" : command + ": ") << message << stop << "See 'apprentice help"
             << (command.empty() ? "" : " " + command) << "'.\n";
   return 2;
 }
@@ -401,7 +441,7 @@ int run(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
-    return parse_failure(app, e);
+    return parse_failure(app, e, argc, argv);
   }
   return finish(result);
 }

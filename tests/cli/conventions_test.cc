@@ -64,6 +64,19 @@ TEST_F(Conventions, AnUnknownFlagIsReportedBeforeAMissingOne) {
   EXPECT_EQ(missing.err, "apprentice: teach: --scenario is required. See 'apprentice help teach'.\n");
 }
 
+TEST_F(Conventions, AMistypedFlagGetsTheNearestOne) {
+  Invocation r = run({"world", "--scenrio", kitchen()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "apprentice: world: --scenrio: did you mean --scenario? See 'apprentice help world'.\n");
+  Invocation equals = run({"experiment", "--scenario", kitchen(), "--conditons=instruction"});
+  EXPECT_EQ(equals.exit_code, 2);
+  EXPECT_THAT(equals.err, HasSubstr("--conditons: did you mean --conditions?"));
+  // A word that is not a flag is still an unexpected argument.
+  Invocation extra = run({"world", "--scenario", kitchen(), "extra"});
+  EXPECT_EQ(extra.exit_code, 2);
+  EXPECT_THAT(extra.err, HasSubstr("unexpected argument \"extra\""));
+}
+
 TEST_F(Conventions, ANumberThatIsNotANumberSaysSo) {
   Invocation r = run({"plan", "--scenario", kitchen(), "--goal", "(closed fridge1)", "--depth", "abc"});
   EXPECT_EQ(r.exit_code, 2);
