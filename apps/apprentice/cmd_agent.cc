@@ -89,7 +89,7 @@ void print_transfer(const std::vector<ConditionResult>& results, std::ostream& o
 
 CommandResult run_experiment(const ExperimentOptions& options, const std::string& program, std::ostream& out) {
   (void)program;
-  auto scenario = load_scenario(options.scenario);
+  auto scenario = load_world(options.scenario);
   if (!scenario) return tl::unexpected(scenario.error());
   if (auto s = check_runnable(*scenario); !s) return tl::unexpected(s.error());
   auto generalization = parse_generalization(options.generalization);
@@ -155,7 +155,7 @@ CommandResult run_experiment(const ExperimentOptions& options, const std::string
 
 CommandResult run_teach(const TeachOptions& options, const std::string& program, std::FILE* in, std::ostream& out) {
   (void)program;
-  auto scenario = load_scenario(options.scenario);
+  auto scenario = load_world(options.scenario);
   if (!scenario) return tl::unexpected(scenario.error());
   AgentSpec spec = default_agent_spec();
   spec.condition = options.condition;
@@ -199,7 +199,7 @@ CommandResult run_teach(const TeachOptions& options, const std::string& program,
 }
 
 CommandResult run_run(const RunOptions& options, std::ostream& out) {
-  auto scenario = load_scenario(options.scenario);
+  auto scenario = load_world(options.scenario);
   if (!scenario) return tl::unexpected(scenario.error());
   AgentSpec spec = default_agent_spec();
   spec.condition = "knowledge-only";

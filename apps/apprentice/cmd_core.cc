@@ -6,10 +6,12 @@
 #include <iostream>
 #include <map>
 #include <ostream>
+#include <set>
 
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
 
+#include "face/apprentice.h"
 #include "language/narration.h"
 #include "search/greedy_best_first.h"
 #include "search/iterative_deepening.h"
@@ -47,10 +49,18 @@ Result<Goal> goal_of(const Scenario& scenario, const std::string& text) {
   return parse_goal(*scenario.world.domain, *scenario.world.universe, text);
 }
 
+// The other objects of `id`'s category, in id order.
+std::vector<std::string> look_alikes(const Universe& u, ObjectId id) {
+  std::vector<std::string> out;
+  for (ObjectId other : u.with_category(u.info(id).category))
+    if (other != id) out.push_back(u.name(other));
+  return out;
+}
+
 }  // namespace
 
 CommandResult run_world(const WorldOptions& options, std::ostream& out) {
-  auto scenario = load_scenario(options.scenario);
+  auto scenario = load_world(options.scenario);
   if (!scenario) return tl::unexpected(scenario.error());
   const World& world = scenario->world;
   const Universe& u = *world.universe;
@@ -59,7 +69,8 @@ CommandResult run_world(const WorldOptions& options, std::ostream& out) {
     nlohmann::json places = nlohmann::json::array(), items = nlohmann::json::array();
     for (const ObjectInfo& o : u.objects()) {
       ObjectId id = *u.find(o.id);
-      nlohmann::json j{{"id", o.id}, {"category", o.category}, {"kind", std::string(to_string(o.kind))}};
+      nlohmann::json j{{"id", o.id}, {"category", o.category}, {"kind", std::string(to_string(o.kind))},
+                       {"properties", o.properties}, {"look_alikes", look_alikes(u, id)}};
       if (o.kind == ObjectKind::kItem) {
         j["location"] = location_of(world, id);
         items.push_back(j);
@@ -76,20 +87,39 @@ CommandResult run_world(const WorldOptions& options, std::ostream& out) {
   }
   out << "Scenario " << scenario->name << ": the robot is in the " << world.location << ".\n";
   out << "Places:\n";
-  for (ObjectId p : u.of_kind(ObjectKind::kSurface)) out << "  " << u.name(p) << " (surface)\n";
+  auto properties = [&](ObjectId id) {
+    std::string text;
+    for (const std::string& p : u.info(id).properties) text += ", " + p;
+    return text;
+  };
+  for (ObjectId p : u.of_kind(ObjectKind::kSurface)) out << "  " << u.name(p) << " (surface" << properties(p) << ")\n";
   for (ObjectId p : u.of_kind(ObjectKind::kReceptacle)) {
     out << "  " << u.name(p) << " (receptacle";
     if (world.state.holds(Fact(v.openable, {p})))
       out << ", door " << (world.state.holds(Fact(v.closed, {p})) ? "closed" : "open");
-    out << ")\n";
+    out << properties(p) << ")\n";
   }
   out << "Objects:\n";
-  for (ObjectId o : u.of_kind(ObjectKind::kItem)) out << "  " << u.name(o) << " " << location_of(world, o) << "\n";
+  for (ObjectId o : u.of_kind(ObjectKind::kItem)) {
+    const std::string own = properties(o);
+    out << "  " << u.name(o) << " " << location_of(world, o) << (own.empty() ? "" : " (" + own.substr(2) + ")") << "\n";
+  }
+  // Things of one kind, which a teacher tells apart by where they are or by
+  // their properties ("the top drawer").
+  std::vector<std::string> groups;
+  std::set<std::string> seen;
+  for (const ObjectInfo& o : u.objects()) {
+    std::vector<std::string> alike = look_alikes(u, *u.find(o.id));
+    if (alike.empty() || !seen.insert(o.category).second) continue;
+    alike.insert(alike.begin(), o.id);
+    groups.push_back(join(alike, ", "));
+  }
+  if (!groups.empty()) out << "Look-alikes (one kind of thing each): " << join(groups, "; ") << ".\n";
   return Outcome::kSuccess;
 }
 
 CommandResult run_plan(const PlanOptions& options, std::ostream& out, std::ostream& progress_out) {
-  auto scenario = load_scenario(options.scenario);
+  auto scenario = load_world(options.scenario);
   if (!scenario) return tl::unexpected(scenario.error());
   const World& world = scenario->world;
   auto goal = goal_of(*scenario, options.goal);
@@ -171,7 +201,7 @@ CommandResult run_plan(const PlanOptions& options, std::ostream& out, std::ostre
 }
 
 CommandResult run_export_pddl(const ExportPddlOptions& options, std::ostream& out) {
-  auto scenario = load_scenario(options.scenario);
+  auto scenario = load_world(options.scenario);
   if (!scenario) return tl::unexpected(scenario.error());
   const World& world = scenario->world;
   auto goal = goal_of(*scenario, options.goal);

@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "face/apprentice.h"
 #include "language/corpus.h"
 #include "language/generation.h"
 #include "language/grounding.h"
@@ -143,7 +144,7 @@ CommandResult run_corpus(const Scenario& scenario, const language::Grounder& gro
 CommandResult run_interpret(const InterpretOptions& options, std::ostream& out) {
   if (options.sentence.has_value() == options.corpus.has_value())
     return make_error(ErrorCode::kInvalidInput, "interpret takes either a sentence or --corpus FILE");
-  auto scenario = load_scenario(options.scenario);
+  auto scenario = load_world(options.scenario);
   if (!scenario) return tl::unexpected(scenario.error());
   language::Grounder grounder(language::Lexicon::open_default());
   if (options.corpus) return run_corpus(*scenario, grounder, options, out);

@@ -4,6 +4,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "face/apprentice.h"
 #include "util/file.h"
 #include "util/text.h"
 
@@ -51,7 +52,7 @@ Result<Catalogue> Catalogue::make(const std::filesystem::path& data_dir, const s
   std::sort(c.worlds_.begin(), c.worlds_.end(), [](const Named& a, const Named& b) { return a.name < b.name; });
   for (const std::filesystem::path& path : extra_worlds) {
     // Checked now, so that a broken --scenario stops the server at once.
-    if (auto loaded = load_scenario(path); !loaded) return tl::unexpected(loaded.error());
+    if (auto loaded = load_world(path); !loaded) return tl::unexpected(loaded.error());
     std::string name = path.stem().string();
     std::erase_if(c.worlds_, [&](const Named& e) { return e.name == name; });
     c.worlds_.insert(c.worlds_.begin(), Named{name, path});
@@ -74,7 +75,7 @@ Result<Scenario> Catalogue::world(std::string_view name) const {
   if (!entry)
     return make_error(ErrorCode::kNotFound, "this server offers no world named " + apprentice::quoted(std::string(name)) +
                                                 "; it offers " + join(names_of(worlds_), ", "));
-  return load_scenario(entry->path);
+  return load_world(entry->path);
 }
 
 Result<std::optional<std::filesystem::path>> Catalogue::store(std::string_view name) const {
@@ -105,7 +106,7 @@ Result<Scenario> Catalogue::upload(std::string_view yaml, std::string_view file_
   // Read as if it were beside the shipped worlds, so that ../domains/
   // resolves to the server's own; messages name the file as uploaded.
   const std::filesystem::path source = scenarios_dir_ / shown;
-  auto scenario = parse_scenario(yaml, source);
+  auto scenario = parse_scenario(yaml, source, {data_dir() / "domains"});
   if (!scenario) {
     Error error = scenario.error();
     std::string prefix = scenarios_dir_.string() + "/";

@@ -1,6 +1,7 @@
 // apprentice.Scenario and the plain objects it is made of.
 #include <pybind11/pytypes.h>
 
+#include "face/apprentice.h"
 #include "bindings.h"
 #include "world/goal.h"
 
@@ -67,7 +68,7 @@ ScenarioHandle scenario_from(const py::object& scenario_or_path) {
   Result<Scenario> loaded;
   {
     py::gil_scoped_release release;
-    loaded = load_scenario(path);
+    loaded = load_world(path);
   }
   return ScenarioHandle{std::make_shared<const Scenario>(unwrap(std::move(loaded)))};
 }

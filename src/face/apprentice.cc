@@ -64,6 +64,10 @@ std::filesystem::path data_dir() {
   return APPRENTICE_DATA_DIR;
 }
 
+Result<Scenario> load_world(const std::filesystem::path& path) {
+  return load_scenario(path, {data_dir() / "domains"});
+}
+
 struct AgentSession::Parts {
   Scenario scenario;
   std::string store_label;  // the store as the spec named it

@@ -194,6 +194,11 @@ Result<std::unique_ptr<AgentSession>> make_agent_session(const AgentSpec& spec, 
 // configured.
 std::filesystem::path data_dir();
 
+// Loads a world (a scenario file, docs/scenarios.md), whose `domain:` may
+// name a shipped domain from any folder ("domain: kitchen"). Errors: those
+// of load_scenario (world/scenario.h).
+Result<Scenario> load_world(const std::filesystem::path& path);
+
 // What an instructor of a program's own can say, in the words the agent
 // reads best (the STARS instructor script's): "Tidy kitchen.", "Repeat the
 // following tasks while an object is on the table.", "Clear an object that

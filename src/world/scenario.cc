@@ -88,7 +88,8 @@ std::optional<std::pair<YAML::Mark, std::string>> find_duplicate_key(const YAML:
 // throwing; every call into it happens inside parse_scenario's try block.
 class ScenarioBuilder {
  public:
-  explicit ScenarioBuilder(std::filesystem::path source) : source_(std::move(source)) {}
+  ScenarioBuilder(std::filesystem::path source, const std::vector<std::filesystem::path>& domain_folders)
+      : source_(std::move(source)), domain_folders_(domain_folders) {}
 
   Result<Scenario> build(const YAML::Node& root) {
     if (!root.IsMap()) return fail(root, "expected a mapping with name, domain, places, objects, task and intent");
@@ -197,10 +198,22 @@ class ScenarioBuilder {
     return words;
   }
 
+  // The domain's file: relative to the scenario; a bare name that names no
+  // file there ("kitchen"), NAME.pddl in the first domain folder that has it.
+  std::filesystem::path domain_file(const std::string& named) const {
+    std::error_code ec;
+    const std::filesystem::path beside = source_.parent_path() / named;
+    const bool bare = named.find('/') == std::string::npos && std::filesystem::path(named).extension().empty();
+    if (!bare || std::filesystem::exists(beside, ec)) return beside;
+    for (const std::filesystem::path& folder : domain_folders_)
+      if (std::filesystem::exists(folder / (named + ".pddl"), ec)) return folder / (named + ".pddl");
+    return beside;
+  }
+
   Status load_domain(const YAML::Node& root, Scenario& scenario) {
     auto path = required_string(root, "domain");
     if (!path) return tl::unexpected(path.error());
-    scenario.domain_path = source_.parent_path() / *path;
+    scenario.domain_path = domain_file(*path);
     auto domain = read_domain_file(scenario.domain_path);
     if (!domain) {
       // Keep the code: a missing domain file is kNotFound, as a missing scenario is.
@@ -455,6 +468,7 @@ class ScenarioBuilder {
   }
 
   std::filesystem::path source_;
+  const std::vector<std::filesystem::path>& domain_folders_;
   Universe universe_;
   std::vector<Fact> facts_;
   Vocabulary vocabulary_;
@@ -465,10 +479,11 @@ class ScenarioBuilder {
 
 }  // namespace
 
-Result<Scenario> parse_scenario(std::string_view yaml_text, const std::filesystem::path& source) {
+Result<Scenario> parse_scenario(std::string_view yaml_text, const std::filesystem::path& source,
+                                const std::vector<std::filesystem::path>& domain_folders) {
   try {
     YAML::Node root = YAML::Load(std::string(yaml_text));
-    return ScenarioBuilder(source).build(root);
+    return ScenarioBuilder(source, domain_folders).build(root);
   } catch (const YAML::DeepRecursion& e) {
     // yaml-cpp's own message is "bad file"; a scenario nests four levels.
     std::string where = source.string();
@@ -484,10 +499,11 @@ Result<Scenario> parse_scenario(std::string_view yaml_text, const std::filesyste
   }
 }
 
-Result<Scenario> load_scenario(const std::filesystem::path& path) {
+Result<Scenario> load_scenario(const std::filesystem::path& path,
+                               const std::vector<std::filesystem::path>& domain_folders) {
   auto text = read_text_file(path);
   if (!text) return tl::unexpected(text.error());
-  return parse_scenario(*text, path);
+  return parse_scenario(*text, path, domain_folders);
 }
 
 }  // namespace apprentice

@@ -90,11 +90,16 @@ struct Scenario {
 
 // Loads and validates a scenario and its domain. Errors carry file:line and
 // the code kInvalidInput (or kNotFound for a missing file); nothing partly
-// loaded is ever returned.
-Result<Scenario> load_scenario(const std::filesystem::path& path);
+// loaded is ever returned. The domain is a file relative to the scenario;
+// a bare name ("domain: kitchen") that names no file there is looked for as
+// NAME.pddl in `domain_folders` (the shipped domains: the face's
+// load_world passes data_dir()/domains).
+Result<Scenario> load_scenario(const std::filesystem::path& path,
+                               const std::vector<std::filesystem::path>& domain_folders = {});
 
 // The same from YAML text; `source` names it in messages and relative
 // domain paths resolve against its directory.
-Result<Scenario> parse_scenario(std::string_view yaml_text, const std::filesystem::path& source);
+Result<Scenario> parse_scenario(std::string_view yaml_text, const std::filesystem::path& source,
+                                const std::vector<std::filesystem::path>& domain_folders = {});
 
 }  // namespace apprentice

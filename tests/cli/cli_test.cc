@@ -303,6 +303,29 @@ TEST_F(Cli, WorldPrintsPlacesAndObjects) {
   EXPECT_THAT(r.out, HasSubstr("  mug2 in dish-rack1\n"));
   // The world never shows the instructor's intent.
   EXPECT_THAT(r.out, ::testing::Not(HasSubstr("intent")));
+  // Things of one kind are listed together, to be told apart.
+  EXPECT_THAT(r.out, HasSubstr("Look-alikes (one kind of thing each): "));
+  EXPECT_THAT(r.out, HasSubstr("mug1, mug2"));
+}
+
+TEST_F(Cli, WorldShowsPropertiesAndLookAlikes) {
+  const std::string playroom = source("data/scenarios/playroom.yaml");
+  Invocation text = run({"world", "--scenario", playroom});
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  Invocation r = run({"world", "--scenario", playroom, "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  auto json = nlohmann::json::parse(r.out);
+  int with_properties = 0;
+  for (const char* part : {"places", "objects"})
+    for (const auto& o : json[part]) {
+      ASSERT_TRUE(o["properties"].is_array() && o["look_alikes"].is_array()) << o.dump();
+      for (const auto& p : o["properties"]) {
+        ++with_properties;
+        EXPECT_THAT(text.out, HasSubstr(p.get<std::string>())) << o.dump();
+      }
+      for (const auto& other : o["look_alikes"]) EXPECT_NE(other, o["id"]);
+    }
+  EXPECT_GT(with_properties, 0);
 }
 
 TEST_F(Cli, WorldJsonParses) {

@@ -129,6 +129,33 @@ TEST_F(FaceStore, AStoreThatIsNotOneIsRefused) {
   EXPECT_NE(made.error().code, ErrorCode::kInvalidInput);
 }
 
+// "domain: kitchen" names the shipped domain from a world in any folder.
+TEST_F(FaceStore, AWorldElsewhereNamesAShippedDomainByName) {
+  std::string yaml = [] {
+    std::ifstream in(testing::source_path("tests/agent/data/two-objects.yaml"));
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }();
+  const std::size_t at = yaml.find("domain:");
+  ASSERT_NE(at, std::string::npos);
+  yaml.replace(at, yaml.find('\n', at) - at, "domain: kitchen");
+  const std::filesystem::path world = write("elsewhere.yaml", yaml);
+  auto loaded = load_world(world);
+  ASSERT_TRUE(loaded) << loaded.error().describe();
+  EXPECT_EQ(std::filesystem::weakly_canonical(loaded->domain_path),
+            std::filesystem::weakly_canonical(testing::source_path("data/domains/kitchen.pddl")));
+  // Without the shipped domains to look in, the name is a file beside it.
+  auto alone = load_scenario(world);
+  ASSERT_FALSE(alone);
+  EXPECT_EQ(alone.error().code, ErrorCode::kNotFound);
+  // A domain of that name beside the world is preferred.
+  write("kitchen", "not a domain");
+  auto beside = load_world(world);
+  ASSERT_FALSE(beside);
+  EXPECT_EQ(beside.error().code, ErrorCode::kInvalidInput);
+}
+
 // One way to find data/: from the test binary inside the build tree, the
 // checkout's; $APPRENTICE_DATA wins when set.
 TEST(Face, DataDirIsFoundFromTheCodeAndCanBeChosen) {
