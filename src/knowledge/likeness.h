@@ -35,7 +35,7 @@ inline constexpr std::size_t kLikenessFeatures = 7;
 
 struct LikenessWeights {
   // In the order of the features above.
-  std::array<double, kLikenessFeatures> weights = {4.0, 12.0, 1.0, 1.5, 1.0, 1.0, 4.0};
+  std::array<double, kLikenessFeatures> weights = {4.0, 12.0, 1.0, 1.5, 3.0, 1.0, 4.0};
 };
 
 // Each destination's features for one thing (the rows of the fit). `rules`
