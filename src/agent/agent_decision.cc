@@ -19,12 +19,12 @@ namespace apprentice {
 namespace {
 
 // An analogy (agent/transfer.h) as a proposal: the same kind learned in
-// another context is memory; a kind near it in WordNet, similarity.
+// another context is memory; a kind near it in WordNet, analogy.
 DestinationProposal analogy_proposal(const Analogy& analogy) {
   DestinationProposal proposal;
   proposal.destination = *destination_of(analogy.like.literals);
   proposal.confidence = analogy.confidence;
-  proposal.source = analogy.distance == 0 ? ProposalSource::kMemory : ProposalSource::kSimilarity;
+  proposal.source = analogy.distance == 0 ? ProposalSource::kMemory : ProposalSource::kAnalogy;
   proposal.evidence = {analogy.learned_as};
   proposal.reason = "analogy: like the " + language::spoken_category(analogy.learned_as);
   return proposal;
@@ -52,10 +52,11 @@ std::string goal_source_of(const Decision& decision) {
   if (decision.support.empty()) return "decision";
   const DestinationProposal& top = decision.support.front();
   if (std::any_of(decision.support.begin(), decision.support.end(), is_analogy) &&
-      (top.source == ProposalSource::kMemory || top.source == ProposalSource::kSimilarity))
+      (top.source == ProposalSource::kMemory || top.source == ProposalSource::kAnalogy))
     return "analogy";
   switch (top.source) {
     case ProposalSource::kMemory:
+    case ProposalSource::kAnalogy:
     case ProposalSource::kSimilarity: return "likeness";
     case ProposalSource::kInducedRule: return "rule";
     case ProposalSource::kPersonRule: return "person's rule";
@@ -69,6 +70,42 @@ std::string goal_source_of(const Decision& decision) {
 }  // namespace
 
 const GoalProposer& TaskLearningAgent::Session::proposer() const { return proposer_; }
+
+TaskLearningAgent::Session::Flow<TaskLearningAgent::Session::ProposalAnswer>
+TaskLearningAgent::Session::answer_to_proposal(const Question& asked, ObjectId object) {
+  const World& w = world();
+  auto about_it = [&](const language::Reply& r) {
+    const auto* given = std::get_if<language::GoalGiven>(&r);
+    if (given == nullptr) return false;
+    std::vector<ObjectId> mentioned = given->goal.objects();
+    return std::find(mentioned.begin(), mentioned.end(), object) != mentioned.end();
+  };
+  auto heard = converse(
+      asked, context(language::Asked::kYesNo, object),
+      [&](const language::Reply& r) -> std::optional<std::string> {
+        if (std::holds_alternative<language::YesNo>(r) || about_it(r)) return std::nullopt;
+        return "I asked a yes-or-no question.";
+      },
+      // Where the thing goes instead, said in place of "no".
+      [&](const std::string& text) -> std::optional<language::Reply> {
+        language::Reply where = agent_.understanding_.reply(w, context(language::Asked::kGoal, object), text);
+        if (about_it(where)) return where;
+        return std::nullopt;
+      });
+  if (!heard) return tl::unexpected(heard.error());
+  if (!heard->reply) return ProposalAnswer{};
+  if (const auto* yes_no = std::get_if<language::YesNo>(&*heard->reply)) {
+    if (yes_no->yes) begin_lesson(heard->text);
+    return ProposalAnswer{yes_no->yes, std::nullopt};
+  }
+  const auto& given = std::get<language::GoalGiven>(*heard->reply);
+  begin_lesson(heard->text);
+  say(language::read_back_goal(w, object, given.goal));
+  const std::string source = "instructor: " + apprentice::quoted(heard->text);
+  if (auto s = learn_goal(object, given.goal, source); !s) return stop(s.error());
+  if (auto s = learn_goals_of_others(object, object, given, source); !s) return stop(s.error());
+  return ProposalAnswer{false, given.goal};
+}
 
 std::vector<DestinationProposal> TaskLearningAgent::Session::proposals_for(ObjectId object) const {
   const GoalKey key = goal_key(object);
@@ -112,9 +149,15 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
       std::string asked = "Does " + language::spoken_name_and_location(w, object) + " go " +
                           (evidence.empty() ? "here" : evidence) + ": " + language::goal_outcome(w, object, *goal, "it") +
                           "?";
-      auto yes = confirm(question(QuestionKind::kConfirmGoal, asked, object, goal));
-      if (!yes) return tl::unexpected(yes.error());
-      if (!*yes) {
+      auto answer = answer_to_proposal(question(QuestionKind::kConfirmGoal, asked, object, goal), object);
+      if (!answer) return tl::unexpected(answer.error());
+      if (answer->instead) {
+        // "No, it goes in the garbage": the teacher's own goal, learned.
+        refused_.emplace_back(goal_key(object).category, *decision.destination);
+        report.goal_source = "instructor";
+        return answer->instead;
+      }
+      if (!answer->yes) {
         // An exception: this kind does not go there, whatever the class says.
         refused_.emplace_back(goal_key(object).category, *decision.destination);
         proposals = without_destination(proposals, *decision.destination);

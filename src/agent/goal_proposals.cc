@@ -16,8 +16,8 @@ DecisionPolicy default_decision_policy() {
   policy.confirm_at = 0.25;
   // Likeness and the induced rules both read the same examples through the
   // same WordNet and vectors: not independent experts.
-  policy.weights[ProposalSource::kSimilarity] = 0.35;
-  policy.weights[ProposalSource::kInducedRule] = 0.35;
+  policy.weights[ProposalSource::kSimilarity] = 0.5;
+  policy.weights[ProposalSource::kInducedRule] = 0.5;
   return policy;
 }
 
@@ -90,10 +90,22 @@ std::vector<DestinationProposal> GoalProposer::propose(const World& world, const
   std::vector<DestinationProposal> out;
   std::vector<PlacementExample> examples = examples_for(key);
   const std::vector<ClassRule>& induced = induced_for(key);
-  if (!examples.empty()) {
+  // Likeness tells destinations apart: with examples at one destination
+  // alone it cannot say whether a thing goes there or anywhere else.
+  std::set<std::string> destinations;
+  for (const PlacementExample& e : examples) destinations.insert(format_destination(e.destination));
+  if (destinations.size() >= 2)
     for (DestinationProposal& p : likeness_proposals(examples, thing, induced, *concepts_)) out.push_back(std::move(p));
+  if (!examples.empty()) {
     for (DestinationProposal& p : rule_proposals(induced, thing, RuleSource::kInduced)) out.push_back(std::move(p));
   }
+  // Examples taught for another task are half as telling (as analogies
+  // from another context are: agent/transfer.h): the same person may want
+  // the soda can in the recycling bin after a meal and in the fridge after
+  // shopping.
+  const std::vector<const GoalKnowledge*> prior = prior_for(key);
+  if (!prior.empty() && prior.front()->key.task != key.task)
+    for (DestinationProposal& p : out) p.confidence *= 0.5;
   // The person's rules and the LLM's summary's, where said for this task
   // (or before any task).
   std::vector<ClassRule> applicable;

@@ -213,6 +213,13 @@ class TaskLearningAgent::Session {
   // Every source's proposals for `object`, without the destinations the
   // teacher refused for its kind.
   std::vector<DestinationProposal> proposals_for(ObjectId object) const;
+  // The teacher's answer to a proposed goal: yes, no, or, in place of no,
+  // where the thing goes instead (then learned, and read back).
+  struct ProposalAnswer {
+    bool yes = false;
+    std::optional<Goal> instead;
+  };
+  Flow<ProposalAnswer> answer_to_proposal(const Question& asked, ObjectId object);
   const GoalProposer& proposer() const;
   // "same as the soda can", "like the mug": the goal of a kind already
   // learned, for `object`; nullopt if the reply is not such a comparison.

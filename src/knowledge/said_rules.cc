@@ -86,8 +86,8 @@ std::vector<DestinationProposal> said_rule_proposals(std::span<const ClassRule> 
                                                                          : class_score(rule, thing, concepts, weights, sure);
     scores[i] = own - (another_is_sure ? weights.rest_penalty : 0.0);
   }
-  const double top = *std::max_element(scores.begin(), scores.end());
-  double total = 0;
+  const double top = std::max(*std::max_element(scores.begin(), scores.end()), weights.none);
+  double total = std::exp(weights.none - top);
   for (double& s : scores) total += s = std::exp(s - top);
   std::vector<DestinationProposal> out;
   for (std::size_t i = 0; i < mine.size(); ++i) {

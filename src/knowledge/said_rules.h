@@ -11,8 +11,8 @@
 //             word vectors know "electronics" and a "Nintendo Switch")
 // A rule for "the rest" ("other clothes", "everything else") takes what no
 // other clause of its source takes well. The shares are a softmax over the
-// clauses of the score below; the proposal's confidence is that share
-// times the rule's own confidence.
+// clauses of the score below and of "none of them"; the proposal's
+// confidence is that share times the rule's own confidence.
 #pragma once
 
 #include <span>
@@ -33,6 +33,9 @@ struct SaidRuleWeights {
   // name's words).
   double rest = 2.0;
   double rest_penalty = 5.0;
+  // The score of "none of the clauses": a thing that fits no clause well
+  // (or only one it is an exception to) is not pushed onto the others.
+  double none = 2.0;
   // A class said with modifiers ("plastic toys") whose modifiers are not in
   // the thing's name scores this much less. (A rule of modifiers alone,
   // "heavy items", is then scored by the vectors.)
