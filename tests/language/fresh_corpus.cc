@@ -1,0 +1,426 @@
+#include "fresh_corpus.h"
+
+#include <algorithm>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "language/generation.h"
+#include "language/reply.h"
+#include "util/text.h"
+
+namespace apprentice::language::fresh {
+namespace {
+
+std::string spaced(std::string text) {
+  std::replace(text.begin(), text.end(), '-', ' ');
+  return join(split_words(to_lower(text)), " ");
+}
+
+std::string str(const nlohmann::json& j, const char* key) {
+  if (!j.is_object() || !j.contains(key) || !j[key].is_string()) return "";
+  return j[key].get<std::string>();
+}
+
+// The objects a label's name means: a category ("hamper", "bathtub-edge",
+// "tool chest"), after property words where the world has look-alikes
+// ("top drawer", "left bin"); every object of it when the name fits several.
+std::vector<ObjectId> objects_named(const World& world, const std::string& name) {
+  std::vector<std::string> words = split_words(to_lower(name));
+  const Universe& u = *world.universe;
+  for (std::size_t first = 0; first < words.size(); ++first) {
+    std::string category = join(std::vector<std::string>(words.begin() + first, words.end()), "-");
+    std::vector<ObjectId> out;
+    for (ObjectId id = 0; id < u.size(); ++id) {
+      const ObjectInfo& info = u.info(id);
+      if (info.category != category) continue;
+      bool all = std::all_of(words.begin(), words.begin() + first, [&](const std::string& p) {
+        return std::find(info.properties.begin(), info.properties.end(), p) != info.properties.end();
+      });
+      if (all) out.push_back(id);
+    }
+    if (!out.empty()) return out;
+  }
+  return {};
+}
+
+// How an object is named in the acts: an item by its category, a place by
+// its category and, where the world has look-alikes, its properties.
+std::string canonical(const World& world, ObjectId id) {
+  const Universe& u = *world.universe;
+  const ObjectInfo& info = u.info(id);
+  if (info.kind == ObjectKind::kItem) return info.category;
+  int same = 0;
+  for (ObjectId o = 0; o < u.size(); ++o) same += u.info(o).category == info.category;
+  if (same == 1 || info.properties.empty()) return info.category;
+  return join(info.properties, " ") + " " + info.category;
+}
+
+std::string canonical(const World& world, std::vector<ObjectId> ids) {
+  std::set<std::string> names;
+  for (ObjectId id : ids) names.insert(canonical(world, id));
+  return join(std::vector<std::string>(names.begin(), names.end()), ",");
+}
+
+// A label's name, canonical; the name itself (with a note) when it names
+// nothing here.
+std::string canonical(const World& world, const std::string& name, std::string& error) {
+  if (name.empty()) return "";
+  std::vector<ObjectId> ids = objects_named(world, name);
+  if (ids.empty()) {
+    if (error.empty()) error = "the label's \"" + name + "\" names nothing in the world";
+    return "?" + name;
+  }
+  return canonical(world, ids);
+}
+
+std::optional<ObjectId> first_named(const World& world, const std::string& name) {
+  std::vector<ObjectId> ids = objects_named(world, name);
+  if (ids.empty()) return std::nullopt;
+  return ids.front();
+}
+
+std::string closed_word(const nlohmann::json& value) {
+  if (value.is_boolean()) return value.get<bool>() ? "true" : "false";
+  return "null";
+}
+
+// One act of a label as its lines (a goal: one line per thing).
+std::vector<std::string> label_act(const World& world, const nlohmann::json& act, std::string& error) {
+  const std::string kind = str(act, "act");
+  if (kind == "goal") {
+    std::vector<std::string> out;
+    std::string place = canonical(world, str(act, "place"), error);
+    std::string closed = closed_word(act.value("closed", nlohmann::json()));
+    if (!act.contains("things") || !act["things"].is_array() || act["things"].empty())
+      error = "a goal act without things";
+    else
+      for (const auto& thing : act["things"])
+        out.push_back("goal " + (thing.is_string() ? canonical(world, thing.get<std::string>(), error) : "?") + " " +
+                      str(act, "relation") + " " + place + " closed=" + closed);
+    return out;
+  }
+  if (kind == "task") return {"task " + spaced(str(act, "name"))};
+  if (kind == "subtask") return {"subtask " + spaced(str(act, "verb")) + " " + canonical(world, str(act, "place"), error)};
+  if (kind == "loop") return {"loop " + canonical(world, str(act, "place"), error)};
+  if (kind == "action" || kind == "command") {
+    std::string line = kind + " " + spaced(str(act, "verb")) + " " + canonical(world, str(act, "object"), error);
+    if (!str(act, "place").empty()) line += " " + canonical(world, str(act, "place"), error);
+    return {line};
+  }
+  if (kind == "choose") return {"choose " + canonical(world, str(act, "place"), error)};
+  if (kind == "question") {
+    std::string line = "question " + str(act, "about");
+    if (!str(act, "thing").empty()) line += " " + canonical(world, str(act, "thing"), error);
+    return {line};
+  }
+  static const std::set<std::string> kPlain = {"leave", "repeat", "part-done", "keep-going", "task-done", "yes",
+                                               "no",    "undo",   "help",      "quit",       "ask-back"};
+  if (kPlain.count(kind)) return {kind};
+  error = "unknown act \"" + kind + "\"";
+  return {"?" + kind};
+}
+
+// Appends an act: a goal's lines join a run of goal acts just before it.
+void push(Acts& acts, std::vector<std::string> lines) {
+  if (lines.empty()) return;
+  bool goal = lines.front().starts_with("goal");
+  if (goal && !acts.empty() && !acts.back().empty() && acts.back().front().starts_with("goal")) {
+    acts.back().insert(acts.back().end(), lines.begin(), lines.end());
+  } else {
+    acts.push_back(std::move(lines));
+  }
+  if (goal) {
+    std::sort(acts.back().begin(), acts.back().end());
+    acts.back().erase(std::unique(acts.back().begin(), acts.back().end()), acts.back().end());
+  }
+}
+
+std::vector<std::string> goal_lines(const World& world, const Goal& goal) {
+  const Universe& u = *world.universe;
+  const Vocabulary& v = world.vocabulary;
+  std::vector<std::string> out;
+  std::set<ObjectId> destinations;
+  for (const Literal& l : goal.literals) {
+    if (!l.positive || l.fact.arity != 2 || (l.fact.predicate != v.in && l.fact.predicate != v.on)) continue;
+    if (u.info(l.fact.args[0]).kind != ObjectKind::kItem) continue;
+    ObjectId place = l.fact.args[1];
+    destinations.insert(place);
+    std::string closed = "null";
+    for (const Literal& c : goal.literals)
+      if (c.fact.predicate == v.closed && c.fact.arity == 1 && c.fact.args[0] == place)
+        closed = c.positive ? "true" : "false";
+    out.push_back("goal " + canonical(world, l.fact.args[0]) + " " + (l.fact.predicate == v.in ? "in" : "on") + " " +
+                  canonical(world, place) + " closed=" + closed);
+  }
+  // A door's state the goal sets for a place nothing goes to.
+  for (const Literal& c : goal.literals)
+    if (c.fact.predicate == v.closed && c.fact.arity == 1 && !destinations.count(c.fact.args[0]))
+      out.push_back(std::string("goal-state ") + (c.positive ? "closed " : "open ") + canonical(world, c.fact.args[0]));
+  return out;
+}
+
+std::string action_line(const World& world, const Action& action) {
+  const std::string& name = world.domain->actions[action.schema].name;
+  auto args = action.arguments();
+  std::string verb = name;
+  if (name == "pick-up" || name == "pick-up-from") verb = "pick up";
+  if (name == "put-in" || name == "put-on") verb = "put";
+  std::string line = "action " + verb + " " + (args.empty() ? "?" : canonical(world, args[0]));
+  if (verb == "put" && args.size() > 1) line += " " + canonical(world, args[1]);
+  return line;
+}
+
+// The reading as acts; nullopt when it asks back or refuses.
+std::optional<Acts> reading_acts(const Grounder& grounder, const World& world, const Line& line,
+                                 const ReplyContext& context, const Reply& reply) {
+  Acts acts;
+  struct Visitor {
+    const Grounder& grounder;
+    const World& world;
+    const Line& line;
+    const ReplyContext& context;
+    Acts& acts;
+    bool operator()(const TaskNamed& r) const { return push(acts, {"task " + spaced(r.name)}), true; }
+    bool operator()(const SubtaskNamed& r) const {
+      return push(acts, {"subtask " + spaced(r.verb) + " " + canonical(world, r.places)}), true;
+    }
+    bool operator()(const LoopNamed& r) const { return push(acts, {"loop " + canonical(world, r.places)}), true; }
+    bool operator()(const Finished&) const {
+      const std::string word = line.asked == "task-step"     ? "task-done"
+                               : line.asked == "subtask-end" ? "part-done"
+                               : line.asked == "goal"        ? "leave"
+                                                             : "finished";
+      return push(acts, {word}), true;
+    }
+    bool operator()(const Proceed&) const {
+      const std::string word = line.asked == "task-step"     ? "repeat"
+                               : line.asked == "subtask-end" ? "keep-going"
+                                                             : "proceed";
+      return push(acts, {word}), true;
+    }
+    bool operator()(const GoalGiven& r) const {
+      push(acts, goal_lines(world, r.goal));
+      for (const Goal& g : r.others) push(acts, goal_lines(world, g));
+      return true;
+    }
+    bool operator()(const ActionGiven& r) const {
+      push(acts, {action_line(world, r.action)});
+      for (const Action& a : r.more) push(acts, {action_line(world, a)});
+      return true;
+    }
+    bool operator()(const YesNo& r) const {
+      push(acts, {r.yes ? "yes" : "no"});
+      // The rest is read at the question that follows: where the thing
+      // proposed goes.
+      if (!r.rest.empty() && context.object) {
+        ReplyContext next = context;
+        next.asked = Asked::kGoal;
+        Reply rest = read_reply(grounder, world, next, r.rest);
+        if (!std::holds_alternative<Unusable>(rest) && !std::holds_alternative<Ambiguous>(rest) &&
+            !std::holds_alternative<YesNo>(rest)) {
+          Line as_goal = line;
+          as_goal.asked = "goal";
+          auto more = reading_acts(grounder, world, as_goal, next, rest);
+          if (more)
+            for (auto& act : *more) push(acts, act);
+        }
+      }
+      return true;
+    }
+    bool operator()(const Chosen& r) const { return push(acts, {"choose " + canonical(world, r.object)}), true; }
+    bool operator()(const Command& r) const {
+      switch (r.kind) {
+        case Command::Kind::kHelp: push(acts, {"help"}); break;
+        case Command::Kind::kStatus: push(acts, {"question status"}); break;
+        case Command::Kind::kUndo: push(acts, {"undo"}); break;
+        case Command::Kind::kQuit: push(acts, {"quit"}); break;
+        case Command::Kind::kForget: push(acts, {"forget " + r.argument}); break;
+      }
+      return true;
+    }
+    bool operator()(const Ambiguous&) const { return false; }
+    bool operator()(const Unusable&) const { return false; }
+  };
+  if (!std::visit(Visitor{grounder, world, line, context, acts}, reply)) return std::nullopt;
+  return acts;
+}
+
+bool is_goal_run(const std::vector<std::string>& act) { return !act.empty() && act.front().starts_with("goal"); }
+
+// The reading says what the label says, less some goals for other things.
+bool fewer_goals(const Acts& label, const Acts& reading) {
+  auto split = [](const Acts& acts, Acts& rest, std::set<std::string>& goals) {
+    for (const auto& act : acts) {
+      if (is_goal_run(act)) goals.insert(act.begin(), act.end());
+      else rest.push_back(act);
+    }
+  };
+  Acts label_rest, reading_rest;
+  std::set<std::string> label_goals, reading_goals;
+  split(label, label_rest, label_goals);
+  split(reading, reading_rest, reading_goals);
+  if (label_rest != reading_rest || reading_goals.size() >= label_goals.size()) return false;
+  return std::includes(label_goals.begin(), label_goals.end(), reading_goals.begin(), reading_goals.end());
+}
+
+}  // namespace
+
+std::string_view to_string(Outcome outcome) {
+  switch (outcome) {
+    case Outcome::kMeant: return "meant";
+    case Outcome::kAskedBack: return "asked-back";
+    case Outcome::kWrong: return "wrong";
+  }
+  return "wrong";
+}
+
+Corpus read_corpus(const std::filesystem::path& folder) {
+  Corpus corpus;
+  std::vector<std::filesystem::path> files;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(folder, ec))
+    if (entry.path().extension() == ".jsonl") files.push_back(entry.path());
+  if (ec) corpus.errors.push_back(folder.string() + ": " + ec.message());
+  std::sort(files.begin(), files.end());
+  for (const auto& path : files) {
+    std::ifstream in(path);
+    std::string text;
+    int number = 0;
+    while (std::getline(in, text)) {
+      ++number;
+      if (trim(text).empty()) continue;
+      std::string where = path.filename().string() + ":" + std::to_string(number);
+      nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
+      if (j.is_discarded() || !j.is_object()) {
+        corpus.errors.push_back(where + ": not a JSON object");
+        continue;
+      }
+      Line line;
+      line.file = where;
+      line.id = str(j, "id");
+      line.world = str(j, "world");
+      line.asked = str(j, "asked");
+      line.reply = str(j, "reply");
+      if (j.contains("about") && j["about"].is_string()) line.about = j["about"].get<std::string>();
+      line.context = j.contains("context") && j["context"].is_object() ? j["context"] : nlohmann::json::object();
+      line.meaning = j.contains("meaning") ? j["meaning"] : nlohmann::json();
+      if (line.id.empty() || line.world.empty() || line.asked.empty() || !j.contains("reply") ||
+          !line.meaning.is_array() || line.meaning.empty()) {
+        corpus.errors.push_back(where + ": a field is missing (id, world, asked, reply, meaning)");
+        continue;
+      }
+      corpus.lines.push_back(std::move(line));
+    }
+  }
+  return corpus;
+}
+
+const Scenario* Worlds::get(const std::string& world_file, std::string& error) {
+  auto found = loaded_.find(world_file);
+  if (found != loaded_.end()) return &found->second;
+  std::filesystem::path own = folder_ / world_file;
+  std::filesystem::path shipped = folder_ / "../../../../data/scenarios" / world_file;
+  Result<Scenario> scenario = load_scenario(std::filesystem::exists(own) ? own : shipped);
+  if (!scenario) {
+    error = "world " + world_file + ": " + scenario.error().message;
+    return nullptr;
+  }
+  return &loaded_.emplace(world_file, std::move(*scenario)).first->second;
+}
+
+ReplyContext context_of(const Line& line, const World& world, std::string& error) {
+  ReplyContext c;
+  bool known = false;
+  for (Asked a : {Asked::kTask, Asked::kTaskStep, Asked::kSubtaskEnd, Asked::kGoal, Asked::kAction, Asked::kYesNo,
+                  Asked::kWhich})
+    if (to_string(a) == line.asked) c.asked = a, known = true;
+  if (!known) error = "unknown question kind \"" + line.asked + "\"";
+  const nlohmann::json& ctx = line.context;
+  // The places of the subtask under way.
+  std::vector<ObjectId> subtask_places;
+  if (ctx.contains("subtask") && ctx["subtask"].is_object()) {
+    subtask_places = objects_named(world, str(ctx["subtask"], "place"));
+    if (!str(ctx["subtask"], "verb").empty()) c.taught_subtasks.push_back(str(ctx["subtask"], "verb"));
+  }
+  // The thing asked about: of the category `about` (or proposed), at the
+  // subtask's places if one is there.
+  std::string about = line.about.value_or("");
+  if (about.empty() && ctx.contains("proposal")) about = str(ctx["proposal"], "thing");
+  if (!about.empty()) {
+    std::vector<ObjectId> things = objects_named(world, about);
+    if (things.empty()) error = "\"about\" names nothing in the world: " + about;
+    for (ObjectId t : things) {
+      auto at = place_of(world, t);
+      if (!c.object && at && std::find(subtask_places.begin(), subtask_places.end(), *at) != subtask_places.end())
+        c.object = t;
+    }
+    if (!c.object && !things.empty()) c.object = things.front();
+  }
+  if (ctx.contains("last_goal") && ctx["last_goal"].is_object())
+    c.recent_place = first_named(world, str(ctx["last_goal"], "place"));
+  if (ctx.contains("choices") && ctx["choices"].is_array())
+    for (const auto& choice : ctx["choices"])
+      if (choice.is_string())
+        if (auto id = first_named(world, choice.get<std::string>())) c.choices.push_back(*id);
+  return c;
+}
+
+Scored score(const Grounder& grounder, const World& world, const Line& line) {
+  Scored out;
+  ReplyContext context = context_of(line, world, out.error);
+  for (const auto& act : line.meaning) push(out.label, label_act(world, act, out.error));
+  Reply reply = read_reply(grounder, world, context, line.reply);
+  out.reply_line = format_reply(world, reply);
+  std::optional<Acts> reading = reading_acts(grounder, world, line, context, reply);
+  const bool ask_back = out.label.size() == 1 && out.label.front() == std::vector<std::string>{"ask-back"};
+  if (!reading) {
+    out.outcome = ask_back ? Outcome::kMeant : Outcome::kAskedBack;
+    return out;
+  }
+  out.reading = *reading;
+  if (out.reading == out.label) out.outcome = Outcome::kMeant;
+  else if (!ask_back && fewer_goals(out.label, out.reading)) out.outcome = Outcome::kAskedBack;
+  else out.outcome = Outcome::kWrong;
+  return out;
+}
+
+void add(Report& report, const Line& line, Outcome outcome) {
+  auto count = [&](Tally& t) {
+    (outcome == Outcome::kMeant ? t.meant : outcome == Outcome::kAskedBack ? t.asked_back : t.wrong) += 1;
+  };
+  std::set<std::string> kinds;
+  for (const auto& act : line.meaning) kinds.insert(str(act, "act"));
+  // A correction is an undo with what replaces it.
+  if (kinds.count("undo") && line.meaning.size() > 1) kinds.insert("correction");
+  for (const std::string& kind : kinds) count(report.by_act[kind]);
+  count(report.by_asked[line.asked]);
+  count(report.overall);
+}
+
+std::string format_report(const Report& report) {
+  std::ostringstream out;
+  auto percent = [](int n, int of) {
+    std::ostringstream p;
+    p.setf(std::ios::fixed);
+    p.precision(1);
+    p << (of == 0 ? 0.0 : 100.0 * n / of) << "%";
+    return p.str();
+  };
+  auto table = [&](const std::string& heading, const std::map<std::string, Tally>& rows) {
+    out << "| " << heading << " | lines | understood as meant | asked back | acted on wrongly |\n";
+    out << "|---|---:|---:|---:|---:|\n";
+    for (const auto& [name, t] : rows)
+      out << "| " << name << " | " << t.total() << " | " << t.meant << " | " << t.asked_back << " | " << t.wrong
+          << " |\n";
+    const Tally& o = report.overall;
+    out << "| **all lines** | **" << o.total() << "** | **" << o.meant << " (" << percent(o.meant, o.total())
+        << ")** | **" << o.asked_back << "** | **" << o.wrong << " (" << percent(o.wrong, o.total()) << ")** |\n";
+  };
+  table("act", report.by_act);
+  out << "\n";
+  table("question", report.by_asked);
+  return out.str();
+}
+
+}  // namespace apprentice::language::fresh
