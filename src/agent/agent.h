@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "agent/condition.h"
+#include "agent/goal_proposals.h"
 #include "agent/goal_repair.h"
 #include "agent/llm_advisor.h"
 #include "agent/report.h"
@@ -55,6 +56,10 @@ struct AgentOptions {
   // only usable ones are offered, and without an instructor the best usable
   // one is taken.
   bool offer_ungrounded = false;
+  // Where a thing goes that no goal is known for: when the agent acts
+  // alone, asks yes/no, or asks where (knowledge/decision.h,
+  // agent/goal_proposals.h).
+  DecisionPolicy decision = default_decision_policy();
 };
 
 // Ownership: the agent owns its options, knowledge and understanding (by

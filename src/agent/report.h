@@ -17,6 +17,12 @@ struct ObjectReport {
   std::string goal;         // as PDDL, if any
   bool achieved = false;
   std::string note;         // why not, if not
+  // For a thing no goal was known for: the place its sources believed it
+  // goes to most (the place's name in the world) and that belief, 0..1,
+  // before the teacher said anything; "" and 0 when nothing was proposed.
+  // What calibration reads.
+  std::string proposed;
+  double belief = 0;
 };
 
 struct AgentReport {

@@ -63,7 +63,7 @@ Result<ExperimentResults> run_experiment(const Scenario& scenario, const Experim
       // The breaker tripped in an earlier condition: ask the server once
       // more before this one depends on it, so that a server that died or
       // hung costs this condition one timeout rather than the breaker's three.
-      auto answers = check_llm_before_run(*request.llm_spec, request.llm_options, true);
+      auto answers = check_llm_before_run(*request.llm_spec, request.llm_options, true, LlmCheck::kBetweenConditions);
       if (!answers) return tl::unexpected(answers.error());
       options.llm_disabled = !*answers;
       llm_suspect = false;

@@ -15,7 +15,8 @@ llm::LlmOptions llm_client_options(const LlmSpec& spec) {
   return options;
 }
 
-Result<bool> check_llm_before_run(const std::string& spec, const llm::LlmOptions& options, bool optional) {
+Result<bool> check_llm_before_run(const std::string& spec, const llm::LlmOptions& options, bool optional,
+                                  LlmCheck when) {
   auto checked = llm::check_llm_server(spec, options);
   if (checked) {
     const llm::LogprobsArrived logprobs = checked->logprobs;
@@ -41,7 +42,9 @@ Result<bool> check_llm_before_run(const std::string& spec, const llm::LlmOptions
     error.message += " (--llm-optional goes on without it)";
     return tl::unexpected(std::move(error));
   }
-  spdlog::warn("{}; going on without the LLM (--llm-optional)", checked.error().message);
+  spdlog::warn("{}; {}", checked.error().message,
+               when == LlmCheck::kBeforeRun ? "going on without the LLM (--llm-optional)"
+                                            : "the LLM conditions left run without it, marked degraded");
   return false;
 }
 
