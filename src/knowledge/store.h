@@ -19,7 +19,6 @@
 
 namespace apprentice {
 
-inline constexpr int kKnowledgeSchemaVersion = 1;
 
 // Owns its engine and its connection; move-only. Use one KnowledgeStore per
 // thread.

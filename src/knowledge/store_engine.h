@@ -29,6 +29,9 @@
 
 namespace apprentice {
 
+// The version of the stores' schema this program reads and writes.
+inline constexpr int kKnowledgeSchemaVersion = 1;
+
 // Everything the agent knows, in memory.
 struct Knowledge {
   std::vector<TaskKnowledge> tasks;
