@@ -149,6 +149,48 @@ std::optional<Command> question(const Grounder& grounder, const World& world, co
   return std::nullopt;
 }
 
+// "stop for now", "gotta go", "I'm done for today, stop": the teacher
+// ends the session.
+bool ends_session(const Words& said, Asked asked) {
+  Words words;
+  for (const std::string& w : said)
+    if (!is_interjection(w) && !is_one_of(w, {"let", "us", "i", "will", "am", "we", "can", "just", "im"}))
+      words.push_back(w);
+  if (words.empty()) return false;
+  for (std::initializer_list<std::string_view> leaving :
+       {std::initializer_list<std::string_view>{"gotta", "go"}, {"gotta", "run"}, {"have", "to", "go"},
+        {"got", "to", "go"}, {"need", "to", "go"}, {"have", "to", "run"}, {"call", "it", "a", "day"}})
+    if (has(words, leaving)) return true;
+  // "done for today" at the task's step ends the task, not the session.
+  if (asked != Asked::kTaskStep && asked != Asked::kSubtaskEnd)
+    for (std::initializer_list<std::string_view> done :
+         {std::initializer_list<std::string_view>{"done", "for", "today"}, {"done", "for", "now"}, {"done", "for", "the", "day"}})
+      if (has(words, done)) return true;
+  bool stop = std::any_of(words.begin(), words.end(), [](const std::string& w) {
+    return is_one_of(w, {"stop", "quit", "bye", "goodbye", "later"});
+  });
+  return stop && std::all_of(words.begin(), words.end(), [](const std::string& w) {
+           return is_one_of(w, {"stop", "here", "for", "now", "today", "quit", "that", "is", "it", "enough", "finish",
+                                "later", "continue", "bye", "goodbye", "see", "you", "the", "rest", "pause"});
+         });
+}
+
+// "what can you do?", "what kinds of things can you learn?", "what do I
+// type here?": the teacher asks what to say.
+bool asks_for_help(const Words& said) {
+  Words words = without_interjections(said);
+  bool asks = std::any_of(words.begin(), words.end(), [](const std::string& w) { return is_one_of(w, {"what", "how"}); });
+  if (!asks) return false;
+  bool you_do = has(words, {"you"}) && std::any_of(words.begin(), words.end(), [](const std::string& w) {
+                  return is_one_of(w, {"learn", "able"});
+                }) ;
+  bool can_you_do = has(words, {"can", "you", "do"}) || has(words, {"able", "to", "do"});
+  bool to_say = std::any_of(words.begin(), words.end(), [](const std::string& w) {
+    return is_one_of(w, {"say", "type", "write", "answer"});
+  });
+  return (you_do || can_you_do || to_say) && words.size() <= 10;
+}
+
 // "close the top drawer", "shut both drawers", "open the compost bin
 // first": the actions, or nullopt when the segment is not such a command.
 std::optional<std::vector<Action>> door_action(const Grounder& grounder, const World& world,
@@ -354,6 +396,14 @@ ReplyActs read_acts(const Grounder& grounder, const World& world, const ReplyCon
       if (before.empty() || said_undo)
         for (int k = 0; k < n; ++k) before.push_back(Command{Command::Kind::kUndo, "", {}, {}});
       correcting = true;
+      continue;
+    }
+    if (ends_session(s.words, context.asked)) {
+      out.acts = {Command{Command::Kind::kQuit, "", {}, {}}};
+      return out;
+    }
+    if (asks_for_help(s.words)) {
+      after.push_back(Command{Command::Kind::kHelp, "", {}, {}});
       continue;
     }
     if (auto q = question(grounder, world, s.words)) {

@@ -110,3 +110,22 @@ TEST_F(ReplyActsTest, TheRestAndClassesReachTheThingsStillToCome) {
 
 }  // namespace
 }  // namespace apprentice::language
+
+namespace apprentice::language {
+namespace {
+
+TEST_F(ReplyActsTest, LeavingAndAskingWhatToSayAreCommands) {
+  ReplyContext c = goal_question("towel1");
+  EXPECT_EQ(acts(c, "ok I have to go, stop for now"), "command quit");
+  EXPECT_EQ(acts(c, "ok im done for today, stop"), "command quit");
+  EXPECT_EQ(acts(c, "um not sure, what kinds of things can you learn?"), "command help");
+  // Not a question about the agent's abilities.
+  EXPECT_NE(acts(c, "what did you do with the towels?"), "command help");
+  // "done for today" at the task's step ends the task, not the session.
+  ReplyContext step;
+  step.asked = Asked::kTaskStep;
+  EXPECT_NE(acts(step, "done for today"), "command quit");
+}
+
+}  // namespace
+}  // namespace apprentice::language
