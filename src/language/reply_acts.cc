@@ -181,9 +181,10 @@ bool asks_for_help(const Words& said) {
   Words words = without_interjections(said);
   bool asks = std::any_of(words.begin(), words.end(), [](const std::string& w) { return is_one_of(w, {"what", "how"}); });
   if (!asks) return false;
-  bool you_do = has(words, {"you"}) && std::any_of(words.begin(), words.end(), [](const std::string& w) {
-                  return is_one_of(w, {"learn", "able"});
-                }) ;
+  auto any_of = [&](std::initializer_list<std::string_view> set) {
+    return std::any_of(words.begin(), words.end(), [&](const std::string& w) { return is_one_of(w, set); });
+  };
+  bool you_do = has(words, {"you"}) && any_of({"learn", "able"}) && any_of({"can", "could", "able", "kind", "kinds"});
   bool can_you_do = has(words, {"can", "you", "do"}) || has(words, {"able", "to", "do"});
   bool to_say = std::any_of(words.begin(), words.end(), [](const std::string& w) {
     return is_one_of(w, {"say", "type", "write", "answer"});

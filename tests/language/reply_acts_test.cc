@@ -129,3 +129,26 @@ TEST_F(ReplyActsTest, LeavingAndAskingWhatToSayAreCommands) {
 
 }  // namespace
 }  // namespace apprentice::language
+
+namespace apprentice::language {
+namespace {
+
+TEST_F(ReplyActsTest, ATasksPlaceIsTheRoomNeverAFiller) {
+  ReplyContext task;
+  task.asked = Asked::kTask;
+  EXPECT_EQ(acts(task, "can you tidy up in here? I just showered and it's a disaster"), "task tidy bathroom");
+  EXPECT_EQ(acts(task, "clean up the bathroom after my shower"), "task clean bathroom");
+  EXPECT_EQ(acts(task, "ugh, the bathroom's a total mess. can you tidy it up for me?"), "task tidy bathroom");
+}
+
+TEST_F(ReplyActsTest, TakingEverythingOffAPlaceClearsOrEmptiesIt) {
+  ReplyContext step;
+  step.asked = Asked::kTaskStep;
+  EXPECT_EQ(acts(step, "first get everything off the floor"), "subtask clear on floor1");
+  EXPECT_EQ(acts(step, "take all the stuff off the counter"), "subtask clear on counter1");
+  // A place that holds nothing is not a part of the task.
+  EXPECT_EQ(acts(step, "take everything out of the hamper"), "unusable");
+}
+
+}  // namespace
+}  // namespace apprentice::language
