@@ -47,13 +47,10 @@ llm::TaskContext TaskLearningAgent::Session::llm_context(ObjectId object) const 
 
 TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session::acquire_goal(ObjectId object,
                                                                                              ObjectReport& report) {
+  // The LLM's placement of the thing, where it gave one, was weighed in
+  // the decision (agent_decision.cc) with the other sources.
   std::optional<Goal> goal;
   if (agent_.options_.condition.llm) {
-    auto placed = goal_from_llm_placement(object, report);
-    if (!placed) return placed;
-    goal = *placed;
-  }
-  if (!goal && agent_.options_.condition.llm) {
     auto from_llm = goal_from_llm(object, report);
     if (!from_llm) return from_llm;
     goal = *from_llm;

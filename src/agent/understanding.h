@@ -12,6 +12,7 @@
 #include "language/logical_form.h"
 #include "language/reply.h"
 #include "util/result.h"
+#include "vectors/word_vectors.h"
 #include "world/action.h"
 #include "world/goal.h"
 #include "world/scenario.h"
@@ -71,6 +72,10 @@ class Understanding {
   bool is_known_action_word(std::string_view word) const;
   // The WordNet lexicon the grounder uses (also for transfer across worlds).
   const language::Lexicon& lexicon() const;
+  // The word vectors (vectors/word_vectors.h), mapped the first time they
+  // are asked for; null when they are not installed (said once per process,
+  // in plain English, with the command that installs them).
+  const vectors::WordVectors* vectors() const;
 
  private:
   struct Impl;
