@@ -1,6 +1,7 @@
 #include "fresh_corpus.h"
 
 #include <algorithm>
+#include <chrono>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -438,7 +439,9 @@ Scored score(const Grounder& grounder, const World& world, const Line& line) {
   Scored out;
   ReplyContext context = context_of(line, world, out.error);
   for (const auto& act : line.meaning) push(out.label, label_act(world, act, out.error));
+  auto start = std::chrono::steady_clock::now();
   ReplyActs read = read_acts(grounder, world, context, line.reply);
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::optional<Acts> reading = Acts{};
   for (const Reply& reply : read.acts) {
     out.reply_line += (out.reply_line.empty() ? "" : " ; ") + format_reply(world, reply);
