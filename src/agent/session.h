@@ -221,22 +221,12 @@ class TaskLearningAgent::Session {
   };
   Flow<ProposalAnswer> answer_to_proposal(const Question& asked, ObjectId object);
   const GoalProposer& proposer() const;
-  // "same as the soda can", "like the mug": the goal of a kind already
-  // learned, for `object`; nullopt if the reply is not such a comparison.
-  // "socks too", "same again" (language::read_same_again) mean the goal the
-  // last object was given.
-  std::optional<language::Reply> goal_like_another(ObjectId object, const std::string& text) const;
-  // The goal given last, for `object`; `named` is the phrase the reply named
-  // the object by ("" for none), which must name its kind.
-  std::optional<language::Reply> goal_given_last(ObjectId object, const std::string& named,
-                                                 const std::string& text) const;
-  // "the sweater goes on the low shelf", asked about the sock: the goal of
-  // one other thing still to come in this subtask; nullopt otherwise.
+  // "the sweater goes on the low shelf", asked about the sock, for a thing
+  // of another part of the task: asked about when its turn comes. (A thing
+  // still to come in this part, "same again", "same as the hammer", a class
+  // and "the rest" are read by language::read_reply, with what context()
+  // gives it.)
   std::optional<language::Reply> goal_for_another(ObjectId object, const std::string& text) const;
-  // "tools go in the top drawer": a class WordNet puts kinds here under
-  // (Understanding::kinds_under) gives each of them the goal, the thing
-  // asked about first; nullopt if the reply names no such class.
-  std::optional<language::Reply> goal_for_a_class(ObjectId object, const std::string& text) const;
   // The goals a reply gave other things along with the one for `about`
   // ("plates and forks go in the dishwasher"): those still to come in this
   // subtask are learned for their kinds, and said; the rest are asked
@@ -294,6 +284,17 @@ class TaskLearningAgent::Session {
   std::vector<std::string> rules_said_;
   ClassRules said_rules_;
   LlmPreferences llm_preferences_;
+
+  // --- Dialogue acts (agent_dialogue.cc): what a reply held besides its
+  // answer. The answer that followed an undo in the same reply ("oops
+  // scratch that, the wrench goes in the bottom drawer"), to be taken as
+  // the reply to the question the undo brings back.
+  std::deque<std::string> queued_replies_;
+  // The teacher's own questions and one-off actions.
+  void answer_whats_left();
+  void answer_where(const language::Command& command);
+  void answer_why();
+  void do_now(const std::vector<Action>& actions);
 };
 
 }  // namespace apprentice

@@ -86,6 +86,11 @@ language::Reply Understanding::reply(const World& world, const language::ReplyCo
   return language::read_reply(impl_->grounder, world, context, text);
 }
 
+language::ReplyActs Understanding::acts(const World& world, const language::ReplyContext& context,
+                                        std::string_view text) const {
+  return language::read_acts(impl_->grounder, world, context, text);
+}
+
 std::vector<std::string> Understanding::example_replies(const World& world,
                                                         const language::ReplyContext& context) const {
   return language::example_replies(world, context);

@@ -42,6 +42,9 @@ class Understanding {
   // What a teacher's reply means as an answer to the question in `context`
   // (language/reply.h).
   language::Reply reply(const World& world, const language::ReplyContext& context, std::string_view text) const;
+  // The same reply as the acts it holds, in order (language::read_acts):
+  // an undo and the answer after it, one-off actions, the teacher's questions.
+  language::ReplyActs acts(const World& world, const language::ReplyContext& context, std::string_view text) const;
   // Replies that would work at that question, for help and after a reply
   // that could not be used.
   std::vector<std::string> example_replies(const World& world, const language::ReplyContext& context) const;
