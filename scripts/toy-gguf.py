@@ -24,12 +24,27 @@ except ImportError:
     sys.exit("toy-gguf.py: needs llama.cpp's gguf-py: PYTHONPATH=/path/to/llama.cpp/gguf-py")
 
 
+def field_value(field):
+    """A field's value. gguf-py's ReaderField has contents() since mid 2025;
+    older releases (llama.cpp of early 2025) keep the raw parts only."""
+    if hasattr(field, "contents"):
+        return field.contents()
+    def one(index):
+        part = field.parts[index]
+        if field.types[-1] == gguf.GGUFValueType.STRING:
+            return bytes(part).decode("utf-8")
+        return part.tolist()[0]
+    if field.types[0] == gguf.GGUFValueType.ARRAY:
+        return [one(index) for index in field.data]
+    return one(field.data[0])
+
+
 def tokenizer_fields(reader):
     """The vocab file's tokenizer.* fields, as (key, value, type)."""
     out = []
     for key, field in reader.fields.items():
         if key.startswith("tokenizer."):
-            out.append((key, field.contents(), field.types))
+            out.append((key, field_value(field), field.types))
     return out
 
 
@@ -45,7 +60,7 @@ def main():
     args = parser.parse_args()
 
     reader = gguf.GGUFReader(args.vocab)
-    tokens = reader.fields["tokenizer.ggml.tokens"].contents()
+    tokens = field_value(reader.fields["tokenizer.ggml.tokens"])
     vocab = len(tokens)
     embd, heads, ff = args.embedding, args.heads, 2 * args.embedding
     rng = np.random.default_rng(args.seed)

@@ -46,7 +46,9 @@ Result<AgentReport> TaskLearningAgent::perform(Simulator& simulator, const std::
 TaskLearningAgent::Session::Session(TaskLearningAgent& agent, Simulator& simulator, Dialogue* dialogue,
                                     bool learning)
     : agent_(agent), simulator_(simulator), dialogue_(dialogue), learning_(learning),
-      transfer_(agent.knowledge_, simulator.world(), agent.understanding_.lexicon()) {
+      transfer_(agent.knowledge_, simulator.world(), agent.understanding_.lexicon()),
+      concepts_(agent.understanding_.lexicon(), agent.understanding_.vectors()),
+      proposer_(concepts_, transfer_.prior_goals()) {
   for (const CategoryMatch& m : transfer_.matches())
     report_.renamed.push_back("took the " + m.world + " for the " + m.learned + " (" + m.reason + ")");
 }
@@ -330,7 +332,7 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::start_object(Object
     }
   }
   if (!goal) {
-    auto analogous = goal_by_analogy(object, report);
+    auto analogous = goal_by_decision(object, report);
     if (!analogous) return tl::unexpected(analogous.error());
     goal = *analogous;
   }

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "agent/condition.h"
+#include "agent/goal_proposals.h"
 #include "agent/goal_repair.h"
 #include "agent/llm_advisor.h"
 #include "agent/understanding.h"
@@ -54,6 +55,10 @@ struct AgentOptions {
   // only usable ones are offered, and without an instructor the best usable
   // one is taken.
   bool offer_ungrounded = false;
+  // Where a thing goes that no goal is known for: when the agent acts
+  // alone, asks yes/no, or asks where (knowledge/decision.h,
+  // agent/goal_proposals.h).
+  DecisionPolicy decision = default_decision_policy();
 };
 
 // How one object went.
@@ -64,6 +69,12 @@ struct ObjectReport {
   std::string goal;         // as PDDL, if any
   bool achieved = false;
   std::string note;         // why not, if not
+  // For a thing no goal was known for: the place its sources believed it
+  // goes to most (the place's name in the world) and that belief, 0..1,
+  // before the teacher said anything; "" and 0 when nothing was proposed.
+  // What calibration reads.
+  std::string proposed;
+  double belief = 0;
 };
 
 struct AgentReport {

@@ -7,6 +7,7 @@
 #include <algorithm>
 
 #include "agent/session.h"
+#include "knowledge/goal_memory.h"
 #include "language/generation.h"
 #include "language/narration.h"
 #include "util/log.h"
@@ -67,6 +68,35 @@ language::ReplyContext TaskLearningAgent::Session::context(language::Asked asked
   c.asked = asked;
   c.object = object;
   c.recent_place = recent_place_;
+  // What "same again", "same as the hammer", "the rest" and a class word
+  // refer to (language/reply.h).
+  const World& w = world();
+  if (const GoalKnowledge* last = progress_.last_goal ? agent_.knowledge_.goals.find(*progress_.last_goal) : nullptr) {
+    // The thing it was given to: the last of its kind dealt with.
+    std::optional<ObjectId> given_to;
+    for (auto it = progress_.evaluated_order.rbegin(); it != progress_.evaluated_order.rend() && !given_to; ++it)
+      if (w.universe->info(*it).category == last->key.category) given_to = *it;
+    for (ObjectId o : w.universe->of_kind(ObjectKind::kItem))
+      if (!given_to && w.universe->info(o).category == last->key.category) given_to = o;
+    if (given_to)
+      if (std::optional<Goal> goal = instantiate_goal(w, *last, *given_to))
+        c.last_goal = language::ReplyContext::LastGoal{*given_to, *goal};
+  }
+  if (progress_.current)
+    for (ObjectId o : w.universe->of_kind(ObjectKind::kItem))
+      if (o != object && still_to_come(o)) c.still_to_come.push_back(o);
+  c.goal_of_kind = [this](const std::string& kind, ObjectId thing) -> std::optional<Goal> {
+    const GoalKnowledge* known = nullptr;
+    if (progress_.current) {
+      GoalKey key = goal_key(thing);
+      key.category = kind;
+      known = agent_.knowledge_.goals.find(key);
+    }
+    for (const GoalKnowledge& g : agent_.knowledge_.goals.all())
+      if (known == nullptr && g.key.category == kind) known = &g;
+    if (known == nullptr) return std::nullopt;
+    return instantiate_goal(world(), *known, thing);
+  };
   return c;
 }
 
@@ -85,14 +115,49 @@ TaskLearningAgent::Session::Flow<TaskLearningAgent::Session::Heard> TaskLearning
   APPRENTICE_CHECK(dialogue_ != nullptr);
   int unusable = 0;
   for (;;) {
-    auto text = dialogue_->ask_uncounted(asked, world());
-    if (!text) return stop(text.error());
-    language::Reply reply = agent_.understanding_.reply(world(), context, *text);
-    if (const auto* command = std::get_if<language::Command>(&reply)) {
-      // Commands are not instructions and teach nothing.
-      if (auto s = obey(*command, asked, context); !s) return tl::unexpected(s.error());
-      continue;
+    // The answer said after an undo in the last reply is the reply to the
+    // question the undo brought back.
+    Result<std::string> text = std::string();
+    if (!queued_replies_.empty()) {
+      text = std::move(queued_replies_.front());
+      queued_replies_.pop_front();
+    } else {
+      text = dialogue_->ask_uncounted(asked, world());
     }
+    if (!text) return stop(text.error());
+    language::ReplyActs read = agent_.understanding_.acts(world(), context, *text);
+    std::optional<language::Reply> answer;
+    int undos = 0;
+    for (language::Reply& act : read.acts) {
+      const auto* command = std::get_if<language::Command>(&act);
+      if (command == nullptr) answer = std::move(act);
+      else if (command->kind == language::Command::Kind::kUndo) ++undos;
+    }
+    for (const std::string& note : read.notes) say(note, Voice::kResponse);
+    if (undos > 0) {
+      // Each undo goes one lesson back; the loop then asks that lesson's
+      // question again, and the answer said with the undo replies to it.
+      bool undone = false;
+      for (int k = 0; k < undos; ++k) {
+        Step s = undo();
+        if (s) break;  // nothing (more) to undo
+        if (s.error().error) return tl::unexpected(s.error());
+        undone = true;
+      }
+      if (undone) {
+        if (!read.after_undo.empty()) queued_replies_.push_back(read.after_undo);
+        return tl::unexpected(Stop{});
+      }
+      if (!answer) continue;
+    }
+    // Commands are not instructions and teach nothing: the teacher's
+    // questions are answered and one-off actions done, then the reply's
+    // answer is taken, or the question asked again.
+    for (const language::Reply& act : read.acts)
+      if (const auto* command = std::get_if<language::Command>(&act); command && command->kind != language::Command::Kind::kUndo)
+        if (auto s = obey(*command, asked, context); !s) return tl::unexpected(s.error());
+    if (!answer) continue;
+    language::Reply reply = std::move(*answer);
     dialogue_->count_reply(asked, *text);
     // A reply the question's own reading takes whole ("same as the hammer,
     // and shut the drawer") is not asked "which drawer?" about.
@@ -195,6 +260,10 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::obey(const language
       if (auto s = forget(command.argument); !s) return stop(s.error());
       return {};
     case language::Command::Kind::kQuit: return stop(Error{ErrorCode::kCancelled, "the instructor quit"});
+    case language::Command::Kind::kWhatsLeft: answer_whats_left(); return {};
+    case language::Command::Kind::kWhere: answer_where(command); return {};
+    case language::Command::Kind::kWhy: answer_why(); return {};
+    case language::Command::Kind::kDo: do_now(command.actions); return {};
   }
   return {};
 }
@@ -245,6 +314,75 @@ void TaskLearningAgent::Session::status(const Question& asked) {
            " and " + language::count_phrase(static_cast<long long>(agent_.knowledge_.rules.size()), "rule") +
            ", after " + language::count_phrase(counts.instructions, "instruction") + " this session.";
   say(doing, Voice::kResponse);
+}
+
+void TaskLearningAgent::Session::answer_whats_left() {
+  const World& w = world();
+  if (!progress_.current) {
+    say(progress_.task.name.empty() ? "I have not been given a task yet." : "I am not working on a part of the task now.",
+        Voice::kResponse);
+    return;
+  }
+  std::vector<ObjectId> left;
+  for (ObjectId o : w.universe->of_kind(ObjectKind::kItem))
+    if (still_to_come(o) && (!progress_.in_progress || progress_.in_progress->object != o)) left.push_back(o);
+  std::string where = current().relation + " " + language::spoken_places(w, current().places);
+  if (left.empty()) say("Nothing else is left " + where + ".", Voice::kResponse);
+  else say("Still " + where + ": " + language::spoken_things(w, left) + ".", Voice::kResponse);
+}
+
+void TaskLearningAgent::Session::answer_where(const language::Command& command) {
+  const World& w = world();
+  if (command.things.empty()) {
+    say("I don't see " + command.argument + " here.", Voice::kResponse);
+    return;
+  }
+  std::vector<std::string> said;
+  for (ObjectId o : command.things) {
+    if (said.size() == 3) break;
+    if (w.state.holds(Fact(w.vocabulary.holding, {o}))) {
+      said.push_back("I am holding " + language::spoken_name(w, o));
+      continue;
+    }
+    std::optional<ObjectId> at = language::place_of(w, o);
+    if (!at) continue;
+    said.push_back(language::capitalize(language::spoken_name(w, o)) + " is " +
+                   std::string(language::relation_word(w, *at)) + " " + language::spoken_name(w, *at));
+  }
+  if (said.empty()) say("I don't know where " + command.argument + " is.", Voice::kResponse);
+  for (const std::string& line : said) say(line + ".", Voice::kResponse);
+}
+
+void TaskLearningAgent::Session::answer_why() {
+  if (lessons_.empty()) {
+    say("I have only done what I already knew; you have not told me anything yet this session.", Voice::kResponse);
+    return;
+  }
+  say(with_period("Because of what you told me last: \"" + lessons_.back().reply + "\"") +
+          " If that was wrong, say undo, or tell me what you meant.",
+      Voice::kResponse);
+}
+
+void TaskLearningAgent::Session::do_now(const std::vector<Action>& actions) {
+  std::vector<Action> done;
+  for (const Action& action : actions) {
+    const std::string& name = world().domain->actions[action.schema].name;
+    const ObjectId thing = action.arguments()[0];
+    bool closed = world().state.holds(Fact(world().vocabulary.closed, {thing}));
+    if ((name == "close" && closed) || (name == "open" && !closed)) {
+      say(language::capitalize(language::spoken_name(world(), thing)) + " is already " + (closed ? "closed" : "open") +
+              ".",
+          Voice::kResponse);
+      continue;
+    }
+    std::string why = language::refusal(world(), action);
+    if (!why.empty() || !execute(action)) {
+      say(why.empty() ? "I could not " + language::action_phrase(world(), action) + "." : why, Voice::kResponse);
+      continue;
+    }
+    done.push_back(action);
+  }
+  if (!done.empty()) say(language::report_actions(world(), done), Voice::kResponse);
 }
 
 std::vector<std::string> TaskLearningAgent::Session::known_kinds(std::string_view phrase) const {

@@ -5,31 +5,11 @@
 #include "agent/session.h"
 #include "language/generation.h"
 #include "language/narration.h"
-#include "language/same_as.h"
 #include "util/log.h"
 #include "util/text.h"
 
 namespace apprentice {
 
-namespace {
-
-// "done", "leave it", "skip it": the object stays where it is (the reader
-// takes the script's "You are done." at a goal question; these are what
-// people say instead).
-bool leaves_it_alone(const std::string& text) {
-  std::string said = to_lower(trim(text));
-  while (!said.empty() && (said.back() == '.' || said.back() == '!')) said.pop_back();
-  for (std::string_view polite : {"please ", "just ", "ok ", "okay "})
-    if (said.starts_with(polite)) said = said.substr(polite.size());
-  static const char* const kAlone[] = {"done", "skip", "skip it", "skip that", "skip this one", "leave it",
-                                       "leave it there", "leave it alone", "leave that", "leave that one",
-                                       "it stays", "it stays there", "it stays where it is", "nowhere", "nothing",
-                                       "pass", "ignore it", "don't move it", "do not move it", "keep it there",
-                                       "it can stay", "it can stay there", "leave it be"};
-  return std::any_of(std::begin(kAlone), std::end(kAlone), [&](const char* a) { return said == a; });
-}
-
-}  // namespace
 
 GoalKey TaskLearningAgent::Session::goal_key(ObjectId object) const {
   return GoalKey{progress_.task.name, current().verb, world().universe->info(object).category,
@@ -47,13 +27,10 @@ llm::TaskContext TaskLearningAgent::Session::llm_context(ObjectId object) const 
 
 TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session::acquire_goal(ObjectId object,
                                                                                              ObjectReport& report) {
+  // The LLM's placement of the thing, where it gave one, was weighed in
+  // the decision (agent_decision.cc) with the other sources.
   std::optional<Goal> goal;
   if (agent_.options_.condition.llm) {
-    auto placed = goal_from_llm_placement(object, report);
-    if (!placed) return placed;
-    goal = *placed;
-  }
-  if (!goal && agent_.options_.condition.llm) {
     auto from_llm = goal_from_llm(object, report);
     if (!from_llm) return from_llm;
     goal = *from_llm;
@@ -210,12 +187,7 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
           return "That says what becomes of " + (names.empty() ? "other things" : language::list_phrase(names)) +
                  ", but I asked about " + language::spoken_name_and_location(w, object) + ".";
         },
-        [&](const std::string& text) {
-          if (leaves_it_alone(text)) return std::optional<language::Reply>(language::Finished{});
-          if (auto like = goal_like_another(object, text)) return like;
-          if (auto another = goal_for_another(object, text)) return another;
-          return goal_for_a_class(object, text);
-        });
+        [&](const std::string& text) { return goal_for_another(object, text); });
     if (!heard) return tl::unexpected(heard.error());
     if (!heard->reply) {
       report.note = "no usable goal from the instructor";
@@ -260,43 +232,6 @@ std::optional<language::Reply> TaskLearningAgent::Session::goal_for_another(Obje
           current().verb + " what is " + current().relation + " " + language::spoken_places(world(), current().places) +
           ". Where should " + language::spoken_name(world(), object) + " go?",
       agent_.understanding_.example_replies(world(), context(language::Asked::kGoal, object)), std::nullopt});
-}
-
-std::optional<language::Reply> TaskLearningAgent::Session::goal_for_a_class(ObjectId object,
-                                                                            const std::string& text) const {
-  const World& w = world();
-  language::Reply first = agent_.understanding_.reply(w, context(language::Asked::kGoal, object), text);
-  const auto* unusable = std::get_if<language::Unusable>(&first);
-  if (unusable == nullptr || !unusable->failure || unusable->failure->kind != language::FailureKind::kUngroundedObject)
-    return std::nullopt;
-  const std::string& phrase = unusable->failure->detail;
-  const std::string said = to_lower(text);
-  const std::size_t at = said.find(phrase);
-  if (phrase.empty() || at == std::string::npos) return std::nullopt;
-  std::vector<std::string> kinds = agent_.understanding_.kinds_under(w, phrase);
-  const std::string& asked_kind = w.universe->info(object).category;
-  std::stable_partition(kinds.begin(), kinds.end(), [&](const std::string& k) { return k == asked_kind; });
-  // Each kind's goal, read from the reply with the kind's name for the
-  // class's: for the thing asked about, else the first of that kind still
-  // to come (then the goal is said ahead).
-  std::optional<language::GoalGiven> given;
-  for (const std::string& kind : kinds) {
-    std::optional<ObjectId> who;
-    if (kind == asked_kind) who = object;
-    for (ObjectId o : w.universe->of_kind(ObjectKind::kItem))
-      if (!who && w.universe->info(o).category == kind && still_to_come(o)) who = o;
-    if (!who) continue;
-    std::string for_kind = said.substr(0, at) + language::spoken_category(kind) + said.substr(at + phrase.size());
-    language::Reply reply = agent_.understanding_.reply(w, context(language::Asked::kGoal, *who), for_kind);
-    const auto* goal = std::get_if<language::GoalGiven>(&reply);
-    if (goal == nullptr) continue;
-    if (!given) given = language::GoalGiven{goal->goal};
-    else given->others.push_back(goal->goal);
-    // "crackers, cereal and granola bars in the pantry": the rest of a list.
-    given->others.insert(given->others.end(), goal->others.begin(), goal->others.end());
-  }
-  if (!given) return std::nullopt;
-  return language::Reply(*given);
 }
 
 Status TaskLearningAgent::Session::learn_goals_of_others(ObjectId asked, ObjectId about, const language::GoalGiven& given,
@@ -350,97 +285,6 @@ bool TaskLearningAgent::Session::still_to_come(ObjectId item) const {
     for (PredicateId relation : {v.on, v.in})
       if (world().state.holds(Fact(relation, {item, place}))) return true;
   return false;
-}
-
-std::optional<language::Reply> TaskLearningAgent::Session::goal_given_last(ObjectId object, const std::string& named,
-                                                                           const std::string& text) const {
-  const World& w = world();
-  // Who gets it: the thing asked about when the reply names nothing; else
-  // each thing named ("milk and cream too", asked about the milk: the milk,
-  // and the cream ahead), a thing of another kind only if it is still to
-  // come in this subtask (goal_from_instructor learns it ahead). A name
-  // that fits nothing so is not this reading.
-  std::vector<std::string> phrases(1);
-  std::string names = named;
-  std::replace(names.begin(), names.end(), ',', ' ');
-  for (const std::string& word : split_words(names)) {
-    if (word == "and") phrases.emplace_back();
-    else phrases.back() += (phrases.back().empty() ? "" : " ") + word;
-  }
-  std::vector<ObjectId> to;
-  for (const std::string& phrase : phrases) {
-    if (phrase.empty()) continue;
-    std::vector<ObjectId> things = agent_.understanding_.may_name(w, phrase);
-    const std::string& kind = w.universe->info(object).category;
-    std::optional<ObjectId> who;
-    if (std::any_of(things.begin(), things.end(), [&](ObjectId o) { return w.universe->info(o).category == kind; }))
-      who = object;
-    for (ObjectId o : things)
-      if (!who && w.universe->info(o).kind == ObjectKind::kItem && still_to_come(o)) who = o;
-    if (!who) return std::nullopt;
-    if (std::find(to.begin(), to.end(), *who) == to.end()) to.push_back(*who);
-  }
-  if (to.empty()) to = {object};
-  std::stable_partition(to.begin(), to.end(), [&](ObjectId o) { return o == object; });
-  const GoalKnowledge* last = progress_.last_goal ? agent_.knowledge_.goals.find(*progress_.last_goal) : nullptr;
-  if (last == nullptr)
-    return language::Reply(language::Unusable{
-        "I have not put anything away yet, so I do not know what " + apprentice::quoted(text) + " refers to. Where should " +
-            language::spoken_name(w, object) + " go?",
-        agent_.understanding_.example_replies(w, context(language::Asked::kGoal, object)), std::nullopt});
-  language::GoalGiven given;
-  for (std::size_t i = 0; i < to.size(); ++i) {
-    std::optional<Goal> goal = instantiate_goal(w, *last, to[i]);
-    if (!goal) return std::nullopt;
-    if (i == 0) given.goal = std::move(*goal);
-    else given.others.push_back(std::move(*goal));
-  }
-  return language::Reply(std::move(given));
-}
-
-std::optional<language::Reply> TaskLearningAgent::Session::goal_like_another(ObjectId object,
-                                                                             const std::string& text) const {
-  if (auto again = language::read_same_again(text)) return goal_given_last(object, *again, text);
-  auto [other, more] = language::read_same_as(text);
-  if (other.empty()) return std::nullopt;
-  std::vector<std::string> kinds;
-  if (auto here = agent_.understanding_.category(world(), other)) kinds = {*here};
-  else kinds = known_kinds(other);
-  if (kinds.size() != 1) return std::nullopt;
-  // The goal learned for that kind in this subtask, else in any.
-  GoalKey key = goal_key(object);
-  key.category = kinds.front();
-  const GoalKnowledge* known = agent_.knowledge_.goals.find(key);
-  for (const GoalKnowledge& g : agent_.knowledge_.goals.all())
-    if (known == nullptr && g.key.category == kinds.front()) known = &g;
-  if (known == nullptr)
-    return language::Reply(language::Unusable{
-        "I have not learned where " + language::kind_goes(kinds.front()) + " yet. Where should " +
-            language::spoken_name(world(), object) + " go?",
-        agent_.understanding_.example_replies(world(), context(language::Asked::kGoal, object)), std::nullopt});
-  std::optional<Goal> goal = instantiate_goal(world(), *known, object);
-  if (!goal) return std::nullopt;
-  if (!more.empty()) {
-    // The rest adds to that goal: it is read after the placement that goal
-    // makes, said in words ("put it in the top drawer, shut the drawer"),
-    // so that "the drawer" and "it" are that place. A rest that does not
-    // read as a goal is not guessed at.
-    std::optional<ObjectId> place;
-    for (const Literal& l : goal->literals)
-      if ((l.fact.predicate == world().vocabulary.in || l.fact.predicate == world().vocabulary.on) && l.fact.arity == 2 &&
-          l.fact.args[0] == object)
-        place = l.fact.args[1];
-    if (!place) return std::nullopt;
-    std::string placed = "put it " + std::string(language::relation_word(world(), *place)) + " " +
-                         language::spoken_name(world(), *place) + ", " + more;
-    language::Reply rest = agent_.understanding_.reply(world(), context(language::Asked::kGoal, object), placed);
-    const auto* given = std::get_if<language::GoalGiven>(&rest);
-    if (given == nullptr) return std::nullopt;
-    std::vector<Literal> literals = goal->literals;
-    literals.insert(literals.end(), given->goal.literals.begin(), given->goal.literals.end());
-    goal = Goal(std::move(literals));
-  }
-  return language::Reply(language::GoalGiven{*goal});
 }
 
 Status TaskLearningAgent::Session::learn_goal(ObjectId object, const Goal& goal, const std::string& source) {

@@ -1,5 +1,6 @@
 // The LLM's placements in the session (agent/llm_preferences.h): asked once,
-// acted on alone, confirmed by the instructor where there is one.
+// each a proposal that the decision weighs with the other sources
+// (agent_decision.cc).
 #include <algorithm>
 
 #include "agent/person_rule.h"
@@ -10,16 +11,6 @@
 #include "util/text.h"
 
 namespace apprentice {
-
-namespace {
-
-// The placement of `thing` at `place`: in a receptacle, on a surface.
-Goal placement(const World& world, ObjectId thing, ObjectId place) {
-  const bool surface = world.universe->info(place).kind == ObjectKind::kSurface;
-  return Goal({Literal{Fact(surface ? world.vocabulary.on : world.vocabulary.in, {thing, place}), true}});
-}
-
-}  // namespace
 
 void TaskLearningAgent::Session::consult_llm(ObjectId object) {
   if (agent_.llm_ == nullptr || !agent_.options_.condition.llm || llm_preferences_.consulted()) return;
@@ -49,33 +40,11 @@ std::optional<DestinationProposal> TaskLearningAgent::Session::llm_placement_pro
   if (!place) return std::nullopt;
   DestinationProposal proposal;
   proposal.destination = destination_at(world(), *place);
-  proposal.confidence = kLlmPlacementConfidence;
+  proposal.confidence = rules_said_.empty() ? kLlmPlacementConfidence : kLlmPlacementByPersonConfidence;
   proposal.source = ProposalSource::kLlmPlacement;
   const std::string& by = llm_preferences_.placed_by();
   proposal.reason = "the language model placed it" + (by.empty() ? std::string() : " by " + apprentice::quoted(by));
   return proposal;
-}
-
-TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session::goal_from_llm_placement(
-    ObjectId object, ObjectReport& report) {
-  consult_llm(object);
-  const World& w = world();
-  auto place = llm_preferences_.place_for(object);
-  if (!place) return std::optional<Goal>();
-  Goal goal = placement(w, object, *place);
-  const bool instructed = agent_.options_.condition.instruction;
-  if (instructed) {
-    auto yes = confirm(question(QuestionKind::kConfirmGoal, language::say_goal_question(w, object, goal, true), object, goal));
-    if (!yes) return tl::unexpected(yes.error());
-    if (!*yes) return std::optional<Goal>();
-    say(language::read_back_goal(w, object, goal));
-  }
-  const std::string& by = llm_preferences_.placed_by();
-  const std::string source = "llm placement" + (by.empty() ? std::string() : " by " + apprentice::quoted(by)) +
-                             (instructed ? " (confirmed)" : "");
-  if (auto s = learn_goal(object, goal, source); !s) return stop(s.error());
-  report.goal_source = "llm";
-  return std::optional<Goal>(goal);
 }
 
 }  // namespace apprentice

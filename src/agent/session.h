@@ -15,6 +15,8 @@
 #include <set>
 
 #include "agent/agent.h"
+#include "agent/concept_source.h"
+#include "agent/goal_proposals.h"
 #include "agent/llm_preferences.h"
 #include "knowledge/decision.h"
 #include "knowledge/preferences.h"
@@ -179,11 +181,6 @@ class TaskLearningAgent::Session {
   Flow<std::optional<Goal>> goal_from_llm(ObjectId object, ObjectReport& report);
   Flow<std::optional<Goal>> goal_from_instructor(ObjectId object, ObjectReport& report);
   Status learn_goal(ObjectId object, const Goal& goal, const std::string& source);
-  // The LLM's placement of `object` (agent_llm_placement.cc; LlmPreferences,
-  // asked once per session for every thing to place), confirmed by the
-  // instructor where there is one; nullopt when it placed it nowhere, the
-  // instructor says no, or there is no LLM.
-  Flow<std::optional<Goal>> goal_from_llm_placement(ObjectId object, ObjectReport& report);
   // Asks the LLM, the first time a thing needs it this session, for the
   // summary of what was taught and where each thing to place goes; the
   // summary's rules join rules_said_ (RuleSource::kLlm). Nothing without an
@@ -205,28 +202,31 @@ class TaskLearningAgent::Session {
   // Keeps a rule the person said, and says what was understood of it and
   // what was not.
   void hear_rule(const language::RuleReading& rule, const std::string& text);
-  // Knowledge across worlds (agent_transfer.cc): the goal of the nearest
-  // kind learned before, proposed to the teacher as a yes/no question, or,
-  // alone, adopted at kAdoptAnalogyAt or more. nullopt when there is none,
-  // the teacher says no, or it is too doubtful (then `report.note` says why
-  // when performing).
-  Flow<std::optional<Goal>> goal_by_analogy(ObjectId object, ObjectReport& report);
-  // "same as the soda can", "like the mug": the goal of a kind already
-  // learned, for `object`; nullopt if the reply is not such a comparison.
-  // "socks too", "same again" (language::read_same_again) mean the goal the
-  // last object was given.
-  std::optional<language::Reply> goal_like_another(ObjectId object, const std::string& text) const;
-  // The goal given last, for `object`; `named` is the phrase the reply named
-  // the object by ("" for none), which must name its kind.
-  std::optional<language::Reply> goal_given_last(ObjectId object, const std::string& named,
-                                                 const std::string& text) const;
-  // "the sweater goes on the low shelf", asked about the sock: the goal of
-  // one other thing still to come in this subtask; nullopt otherwise.
+  // Deciding where a thing goes that no goal is known for
+  // (agent_decision.cc): the sources' proposals combined
+  // (knowledge/decision.h); acted on alone when confident, else offered to
+  // the teacher as one yes/no showing the evidence (a "no" is kept as an
+  // exception for the kind). nullopt when nothing is likely enough, the
+  // teacher refused every proposal, or, alone, the agent is in doubt (then
+  // `report.note` says what it would have done and why it did not).
+  Flow<std::optional<Goal>> goal_by_decision(ObjectId object, ObjectReport& report);
+  // Every source's proposals for `object`, without the destinations the
+  // teacher refused for its kind.
+  std::vector<DestinationProposal> proposals_for(ObjectId object) const;
+  // The teacher's answer to a proposed goal: yes, no, or, in place of no,
+  // where the thing goes instead (then learned, and read back).
+  struct ProposalAnswer {
+    bool yes = false;
+    std::optional<Goal> instead;
+  };
+  Flow<ProposalAnswer> answer_to_proposal(const Question& asked, ObjectId object);
+  const GoalProposer& proposer() const;
+  // "the sweater goes on the low shelf", asked about the sock, for a thing
+  // of another part of the task: asked about when its turn comes. (A thing
+  // still to come in this part, "same again", "same as the hammer", a class
+  // and "the rest" are read by language::read_reply, with what context()
+  // gives it.)
   std::optional<language::Reply> goal_for_another(ObjectId object, const std::string& text) const;
-  // "tools go in the top drawer": a class WordNet puts kinds here under
-  // (Understanding::kinds_under) gives each of them the goal, the thing
-  // asked about first; nullopt if the reply names no such class.
-  std::optional<language::Reply> goal_for_a_class(ObjectId object, const std::string& text) const;
   // The goals a reply gave other things along with the one for `about`
   // ("plates and forks go in the dishwasher"): those still to come in this
   // subtask are learned for their kinds, and said; the rest are asked
@@ -270,6 +270,13 @@ class TaskLearningAgent::Session {
   // What the agent knew, in this world's words, and the analogies it offers.
   // Constructed last: it renames the agent's knowledge when the session starts.
   KnowledgeTransfer transfer_;
+  // What WordNet and the vectors know of kinds, and the proposals drawn
+  // from the knowledge brought into the session (after transfer_, whose
+  // renamed goals they use).
+  LexicalConcepts concepts_;
+  GoalProposer proposer_;
+  // Destinations the teacher said no to, by kind, this session.
+  std::vector<std::pair<std::string, Destination>> refused_;
   // The person's rules said this session, as said; those rules, and the
   // LLM's summary's, as class rules (agent/person_rule.h); and what the LLM
   // says of the person's preferences (asked once, when a thing first needs
@@ -277,6 +284,17 @@ class TaskLearningAgent::Session {
   std::vector<std::string> rules_said_;
   ClassRules said_rules_;
   LlmPreferences llm_preferences_;
+
+  // --- Dialogue acts (agent_dialogue.cc): what a reply held besides its
+  // answer. The answer that followed an undo in the same reply ("oops
+  // scratch that, the wrench goes in the bottom drawer"), to be taken as
+  // the reply to the question the undo brings back.
+  std::deque<std::string> queued_replies_;
+  // The teacher's own questions and one-off actions.
+  void answer_whats_left();
+  void answer_where(const language::Command& command);
+  void answer_why();
+  void do_now(const std::vector<Action>& actions);
 };
 
 }  // namespace apprentice

@@ -117,6 +117,8 @@ class KnowledgeTransfer {
   KnowledgeTransfer(Knowledge& knowledge, const World& world, const language::Lexicon& lexicon);
 
   const std::vector<CategoryMatch>& matches() const { return matches_; }
+  // The goals known when the session began, in this world's words.
+  const std::vector<GoalKnowledge>& prior_goals() const { return prior_goals_; }
 
   // The nearest goal learned before the session for another kind of object
   // (or for the same kind in another context), that means something for

@@ -11,6 +11,8 @@ namespace apprentice {
 
 struct Understanding::Impl {
   language::Grounder grounder{language::Lexicon::open_default()};
+  bool vectors_looked_for = false;
+  std::optional<vectors::WordVectors> vectors;
 };
 
 Understanding::Understanding() : impl_(std::make_unique<Impl>()) {}
@@ -84,6 +86,11 @@ language::Reply Understanding::reply(const World& world, const language::ReplyCo
   return language::read_reply(impl_->grounder, world, context, text);
 }
 
+language::ReplyActs Understanding::acts(const World& world, const language::ReplyContext& context,
+                                        std::string_view text) const {
+  return language::read_acts(impl_->grounder, world, context, text);
+}
+
 std::vector<std::string> Understanding::example_replies(const World& world,
                                                         const language::ReplyContext& context) const {
   return language::example_replies(world, context);
@@ -125,6 +132,14 @@ std::vector<std::string> Understanding::kinds_under(const World& world, std::str
 }
 
 const language::Lexicon& Understanding::lexicon() const { return impl_->grounder.lexicon(); }
+
+const vectors::WordVectors* Understanding::vectors() const {
+  if (!impl_->vectors_looked_for) {
+    impl_->vectors_looked_for = true;
+    impl_->vectors = vectors::open_default_vectors();
+  }
+  return impl_->vectors ? &*impl_->vectors : nullptr;
+}
 
 bool Understanding::is_known_action_word(std::string_view word) const {
   std::string w = to_lower(trim(word));

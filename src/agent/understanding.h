@@ -12,6 +12,7 @@
 #include "language/logical_form.h"
 #include "language/reply.h"
 #include "util/result.h"
+#include "vectors/word_vectors.h"
 #include "world/action.h"
 #include "world/goal.h"
 #include "world/scenario.h"
@@ -41,6 +42,9 @@ class Understanding {
   // What a teacher's reply means as an answer to the question in `context`
   // (language/reply.h).
   language::Reply reply(const World& world, const language::ReplyContext& context, std::string_view text) const;
+  // The same reply as the acts it holds, in order (language::read_acts):
+  // an undo and the answer after it, one-off actions, the teacher's questions.
+  language::ReplyActs acts(const World& world, const language::ReplyContext& context, std::string_view text) const;
   // Replies that would work at that question, for help and after a reply
   // that could not be used.
   std::vector<std::string> example_replies(const World& world, const language::ReplyContext& context) const;
@@ -71,6 +75,10 @@ class Understanding {
   bool is_known_action_word(std::string_view word) const;
   // The WordNet lexicon the grounder uses (also for transfer across worlds).
   const language::Lexicon& lexicon() const;
+  // The word vectors (vectors/word_vectors.h), mapped the first time they
+  // are asked for; null when they are not installed (said once per process,
+  // in plain English, with the command that installs them).
+  const vectors::WordVectors* vectors() const;
 
  private:
   struct Impl;

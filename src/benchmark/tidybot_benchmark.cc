@@ -70,6 +70,8 @@ Condition condition_for(bool teacher, bool llm) {
 struct Session {
   Knowledge knowledge;  // what the agent knows at the end
   State end;
+  std::map<std::string, std::size_t> reports;  // report.objects' index by the world's name of the object
+  AgentReport report;
   Tally tally;          // questions and instructions only
   std::string transcript;
 };
@@ -86,17 +88,18 @@ Result<Session> run_session(const BenchmarkWorld& world, Knowledge knowledge, co
   Dialogue dialogue(teacher);
   auto report = agent.learn(simulator, dialogue);
   if (!report) return tl::unexpected(report.error());
-  Session session{agent.knowledge(), simulator.state(), {}, dialogue.transcript_text()};
+  Session session{agent.knowledge(), simulator.state(), {}, std::move(*report), {}, dialogue.transcript_text()};
+  for (std::size_t i = 0; i < session.report.objects.size(); ++i) session.reports.emplace(session.report.objects[i].object, i);
   session.tally.questions = teacher.questions_about_things();
   session.tally.instructions = dialogue.counts().instructions;
   return session;
 }
 
 // Where each object ended, against where the person wants it.
-std::vector<ObjectOutcome> outcomes(const BenchmarkWorld& world, const TidyBotScenario& scenario, const State& end,
+std::vector<ObjectOutcome> outcomes(const BenchmarkWorld& world, const TidyBotScenario& scenario, const Session& session,
                                     Tally& tally, Tally& unseen) {
   World now = world.scenario.world;
-  now.state = end;
+  now.state = session.end;
   std::vector<ObjectOutcome> out;
   for (const auto& [name, id] : world.objects) {
     ObjectOutcome outcome;
@@ -106,6 +109,12 @@ std::vector<ObjectOutcome> outcomes(const BenchmarkWorld& world, const TidyBotSc
       outcome.wanted = world.receptacle_name(entry->place);
     auto place = language::place_of(now, id);
     if (place && *place != world.cart) outcome.placed = world.receptacle_name(*place);
+    if (auto r = session.reports.find(now.universe->name(id)); r != session.reports.end()) {
+      const ObjectReport& report = session.report.objects[r->second];
+      if (auto at = now.universe->find(report.proposed); at && !report.proposed.empty())
+        outcome.proposed = world.receptacle_name(*at);
+      outcome.belief = report.belief;
+    }
     outcome.unseen = std::find(scenario.unseen_objects.begin(), scenario.unseen_objects.end(), name) !=
                      scenario.unseen_objects.end();
     for (Tally* counted : {&tally, outcome.unseen ? &unseen : nullptr}) {
@@ -160,7 +169,7 @@ Result<ScenarioOutcome> run_scenario(Bench& bench, const TidyBotScenario& scenar
   outcome.index = scenario.index;
   outcome.tags = scenario.tags;
   outcome.tally = session->tally;
-  outcome.objects = outcomes(*world, scenario, session->end, outcome.tally, outcome.unseen);
+  outcome.objects = outcomes(*world, scenario, *session, outcome.tally, outcome.unseen);
   if (bench.options.keep_transcripts) outcome.transcript = std::move(session->transcript);
   return outcome;
 }
@@ -217,6 +226,22 @@ Result<SettingResult> run_setting(Bench& bench, const std::vector<TidyBotScenari
 }
 
 }  // namespace
+
+std::vector<CurvePoint> calibration_curve(const SettingResult& result) {
+  std::vector<CurvePoint> curve;
+  for (double threshold : {0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.85, 0.9, 0.95, 0.98, 0.99}) {
+    CurvePoint point{threshold, 0, 0, 0};
+    for (const ScenarioOutcome& s : result.scenarios)
+      for (const ObjectOutcome& o : s.objects) {
+        if (result.setting.protocol == Protocol::kExamples && !o.unseen) continue;
+        if (o.proposed.empty() || o.belief < threshold) ++point.asked;
+        else if (o.proposed == o.wanted) ++point.right;
+        else ++point.wrong;
+      }
+    curve.push_back(point);
+  }
+  return curve;
+}
 
 std::vector<RecordedScore> score_recorded_answers(const std::vector<TidyBotScenario>& scenarios,
                                                   const std::vector<llm::RecordedAnswer>& answers) {

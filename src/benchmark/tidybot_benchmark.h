@@ -65,6 +65,11 @@ struct ObjectOutcome {
   std::string wanted;  // the receptacle the person wants
   std::string placed;  // where it ended; empty when still on the cart
   bool unseen = false;  // one of the scenario's unseen objects
+  // The receptacle the agent's sources believed most before anyone
+  // answered, and that belief (agent's ObjectReport::proposed, belief);
+  // "" and 0 when nothing was proposed (or its goal was known).
+  std::string proposed;
+  double belief = 0;
 };
 
 struct ScenarioOutcome {
@@ -91,6 +96,18 @@ struct SettingResult {
   int llm_failures = 0;
   double wall_ms = 0;
 };
+
+// Calibration: had the agent acted alone on every thing whose belief is at
+// least `threshold` and asked about the rest, how many of the things it
+// measures (protocol A: the unseen; B: all) it would have placed right,
+// wrong, and asked about. From each thing's first belief in the setting.
+struct CurvePoint {
+  double threshold = 0;
+  int right = 0;
+  int wrong = 0;
+  int asked = 0;
+};
+std::vector<CurvePoint> calibration_curve(const SettingResult& result);
 
 // Makes a fresh LLM client; one per setting that uses the LLM.
 using LlmClientFactory = std::function<Result<std::unique_ptr<llm::LlmClient>>()>;

@@ -74,6 +74,21 @@ std::string format_tidybot_table(const BenchmarkResults& results) {
     }
     out += "\n";
   }
+  out += "\nCalibration: acting alone at belief >= t, right / wrong / asked, % of the objects measured\n";
+  out += row_text("%-20s", "t");
+  for (const SettingResult& r : results.results) out += row_text(" %19s", r.setting.name.c_str());
+  out += "\n";
+  std::vector<std::vector<CurvePoint>> curves;
+  for (const SettingResult& r : results.results) curves.push_back(calibration_curve(r));
+  for (std::size_t i = 0; !curves.empty() && i < curves.front().size(); ++i) {
+    out += row_text("%-20.2f", curves.front()[i].threshold);
+    for (const auto& curve : curves) {
+      const CurvePoint& p = curve[i];
+      const int n = p.right + p.wrong + p.asked;
+      out += row_text("  %5.1f %5.1f %5.1f", percent(p.right, n), percent(p.wrong, n), percent(p.asked, n));
+    }
+    out += "\n";
+  }
   if (!results.recorded.empty()) {
     out += "\nTidyBot's recorded answers on these scenarios (unseen objects, mean over scenarios), by tag\n";
     out += row_text("%-20s", "Tag");
@@ -108,7 +123,8 @@ std::string tidybot_json(const BenchmarkResults& results) {
     for (const ScenarioOutcome& s : r.scenarios) {
       nlohmann::json objects = nlohmann::json::array();
       for (const ObjectOutcome& o : s.objects)
-        objects.push_back({{"object", o.object}, {"wanted", o.wanted}, {"placed", o.placed}, {"unseen", o.unseen}});
+        objects.push_back({{"object", o.object}, {"wanted", o.wanted}, {"placed", o.placed}, {"unseen", o.unseen},
+                           {"proposed", o.proposed}, {"belief", o.belief}});
       nlohmann::json entry = tally_json(s.tally);
       entry["index"] = s.index;
       entry["tags"] = s.tags;
@@ -128,6 +144,10 @@ std::string tidybot_json(const BenchmarkResults& results) {
     entry["llm_failures"] = r.llm_failures;
     entry["wall_ms"] = r.wall_ms;
     entry["by_tag"] = by_tag;
+    nlohmann::json curve = nlohmann::json::array();
+    for (const CurvePoint& p : calibration_curve(r))
+      curve.push_back({{"threshold", p.threshold}, {"right", p.right}, {"wrong", p.wrong}, {"asked", p.asked}});
+    entry["calibration"] = curve;
     entry["scenarios"] = scenarios;
     settings.push_back(entry);
   }

@@ -14,7 +14,8 @@ std::string per_condition_llm_spec(const std::string& spec, const std::string& c
   return llm::spec_for_condition(spec, condition);
 }
 
-Result<bool> check_llm_before_run(const std::string& spec, const llm::LlmOptions& options, bool optional) {
+Result<bool> check_llm_before_run(const std::string& spec, const llm::LlmOptions& options, bool optional,
+                                  LlmCheck when) {
   auto checked = llm::check_llm_server(spec, options);
   if (checked) {
     const llm::LogprobsArrived logprobs = checked->logprobs;
@@ -40,7 +41,9 @@ Result<bool> check_llm_before_run(const std::string& spec, const llm::LlmOptions
     error.message += " (--llm-optional goes on without it)";
     return tl::unexpected(std::move(error));
   }
-  spdlog::warn("{}; going on without the LLM (--llm-optional)", checked.error().message);
+  spdlog::warn("{}; {}", checked.error().message,
+               when == LlmCheck::kBeforeRun ? "going on without the LLM (--llm-optional)"
+                                            : "the LLM conditions left run without it, marked degraded");
   return false;
 }
 
@@ -92,7 +95,7 @@ Result<ExperimentResults> run_experiment(const Scenario& scenario, const Experim
       // The breaker tripped in an earlier condition: ask the server once
       // more before this one depends on it, so that a server that died or
       // hung costs this condition one timeout rather than the breaker's three.
-      auto answers = check_llm_before_run(*request.llm_spec, request.llm_options, true);
+      auto answers = check_llm_before_run(*request.llm_spec, request.llm_options, true, LlmCheck::kBetweenConditions);
       if (!answers) return tl::unexpected(answers.error());
       options.llm_disabled = !*answers;
       llm_suspect = false;

@@ -60,7 +60,11 @@ std::string per_condition_llm_spec(const std::string& spec, const std::string& c
 // that a dead server costs seconds rather than a run's worth of timeouts:
 // true when `spec`'s server answers; false when it does not and `optional`
 // (with one warning); kUnavailable naming the server when it does not.
-Result<bool> check_llm_before_run(const std::string& spec, const llm::LlmOptions& options, bool optional);
+// kBetweenConditions is the check again after the breaker tripped, which
+// never stops the run: its warning says the conditions left go without it.
+enum class LlmCheck { kBeforeRun, kBetweenConditions };
+Result<bool> check_llm_before_run(const std::string& spec, const llm::LlmOptions& options, bool optional,
+                                  LlmCheck when = LlmCheck::kBeforeRun);
 
 // The results as `experiment --json` prints them: a JSON array with one
 // object per condition (keys in docs/experiment.md), pretty-printed.

@@ -1,5 +1,6 @@
 #include "instructor/dialogue.h"
 
+#include "language/reply.h"
 #include "util/text.h"
 
 namespace apprentice {
@@ -19,13 +20,7 @@ const char* to_string(QuestionKind kind) {
 
 int count_words(std::string_view utterance) { return static_cast<int>(split_words(utterance).size()); }
 
-std::optional<bool> read_yes_no(std::string_view reply) {
-  std::string text = to_lower(trim(reply));
-  while (!text.empty() && (text.back() == '.' || text.back() == '!')) text.pop_back();
-  if (text == "yes" || text == "y") return true;
-  if (text == "no" || text == "n") return false;
-  return std::nullopt;
-}
+std::optional<bool> read_yes_no(std::string_view reply) { return language::yes_or_no(reply); }
 
 Result<std::string> Dialogue::ask(const Question& question, const World& world) {
   auto reply = ask_uncounted(question, world);

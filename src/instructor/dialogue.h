@@ -58,7 +58,8 @@ class Dialogue {
 
 // Words as the paper counts them: whitespace-separated tokens.
 int count_words(std::string_view utterance);
-// Whether a reply reads as yes (trimmed, any case, optional final period).
+// Whether a reply reads as yes or no: language::yes_or_no, the reader the
+// agent answers with, so that a yes counted is a yes taken.
 std::optional<bool> read_yes_no(std::string_view reply);
 
 }  // namespace apprentice

@@ -46,6 +46,7 @@ std::string_view proposal_source_name(ProposalSource source) {
   switch (source) {
     case ProposalSource::kMemory: return "memory";
     case ProposalSource::kSimilarity: return "similarity";
+    case ProposalSource::kAnalogy: return "analogy";
     case ProposalSource::kInducedRule: return "induced rule";
     case ProposalSource::kPersonRule: return "person's rule";
     case ProposalSource::kLlmPlacement: return "llm placement";

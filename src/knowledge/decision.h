@@ -29,14 +29,15 @@ namespace apprentice {
 
 enum class ProposalSource {
   kMemory,        // the goal learned for this very kind
-  kSimilarity,    // likeness to the kinds taught: WordNet's hierarchy (the analogy of transfer.h) and vectors
+  kSimilarity,    // likeness to the kinds taught: WordNet's classes and the vectors (knowledge/likeness.h)
+  kAnalogy,       // WordNet's nearest kind learned before (agent/transfer.h)
   kInducedRule,   // a class rule induced from the examples
   kPersonRule,    // a class rule the person said
   kLlmPlacement,  // the LLM placed the thing
   kLlmRule,       // a class rule read from the LLM's summary
   kFleet,         // other robots' knowledge
 };
-// "memory", "similarity", "induced rule", "person's rule", "llm placement",
+// "memory", "similarity", "analogy", "induced rule", "person's rule", "llm placement",
 // "llm summary", "fleet".
 std::string_view proposal_source_name(ProposalSource source);
 

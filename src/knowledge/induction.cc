@@ -215,14 +215,17 @@ std::vector<DestinationProposal> rule_proposals(std::span<const ClassRule> rules
     if (s.covering.empty()) continue;
     DestinationProposal p;
     p.destination = s.destination;
-    p.confidence = s.score / total;
+    const ClassRule* strongest = s.covering.front();
+    for (const ClassRule* r : s.covering)
+      if (r->confidence > strongest->confidence) strongest = r;
+    // The destination's share among those the rules name, no surer than
+    // its strongest rule is of its class (one destination alone is not
+    // certain).
+    p.confidence = s.score / total * strongest->confidence;
     p.source = source == RuleSource::kPerson ? ProposalSource::kPersonRule
                : source == RuleSource::kLlm  ? ProposalSource::kLlmRule
                : source == RuleSource::kFleet ? ProposalSource::kFleet
                                               : ProposalSource::kInducedRule;
-    const ClassRule* strongest = s.covering.front();
-    for (const ClassRule* r : s.covering)
-      if (r->confidence > strongest->confidence) strongest = r;
     p.rule = *strongest;
     p.evidence = strongest->evidence;
     p.reason = format_class_rule(*strongest);

@@ -67,8 +67,9 @@ double rule_covers(const ClassRule& rule, const KindProfile& thing);
 // (the size principle's prediction: a small class that covers the thing
 // predicts it more strongly than a large one; a modifier rule counts as a
 // class of size 1). Rest rules count only when no other rule covers the
-// thing. Only destinations some rule covers are proposed; none when no
-// rule covers the thing.
+// thing, times the confidence of its strongest covering rule. Only
+// destinations some rule covers are proposed; none when no rule covers the
+// thing.
 std::vector<DestinationProposal> rule_proposals(std::span<const ClassRule> rules, const KindProfile& thing, RuleSource source,
                                      const InductionOptions& options = {});
 

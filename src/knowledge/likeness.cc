@@ -74,8 +74,10 @@ std::vector<DestinationProposal> likeness_proposals(std::span<const PlacementExa
     for (std::size_t k = 0; k < kLikenessFeatures; ++k) s += weights.weights[k] * f.values[k];
     scores.push_back(s);
   }
-  const double top = *std::max_element(scores.begin(), scores.end());
-  double total = 0;
+  double elsewhere = 0;
+  for (std::size_t k = 0; k < kLikenessFeatures; ++k) elsewhere += weights.weights[k] * weights.elsewhere[k];
+  const double top = std::max(*std::max_element(scores.begin(), scores.end()), elsewhere);
+  double total = std::exp(elsewhere - top);
   for (double& s : scores) total += s = std::exp(s - top);
   for (std::size_t i = 0; i < features.size(); ++i) {
     DestinationProposal p;

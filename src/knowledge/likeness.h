@@ -35,7 +35,12 @@ inline constexpr std::size_t kLikenessFeatures = 7;
 
 struct LikenessWeights {
   // In the order of the features above.
-  std::array<double, kLikenessFeatures> weights = {4.0, 12.0, 1.0, 1.5, 1.0, 1.0, 4.0};
+  std::array<double, kLikenessFeatures> weights = {4.0, 12.0, 1.0, 1.5, 3.0, 1.0, 4.0};
+  // The features of "somewhere else": a place no example went to, as like
+  // the thing as unrelated names are (their cosines near 0.3). Without it a
+  // lone destination would get all the belief, however unlike its
+  // examples the thing is (the paper plate is no ketchup).
+  std::array<double, kLikenessFeatures> elsewhere = {0.3, 0.3, 0.3, 0.0, 0.0, 0.0, 0.0};
 };
 
 // Each destination's features for one thing (the rows of the fit). `rules`
@@ -51,7 +56,8 @@ std::vector<LikenessFeatures> likeness_features(std::span<const PlacementExample
                                                 std::span<const ClassRule> rules, const ConceptSource& concepts);
 
 // The proposals, one per destination with examples, most probable first;
-// none without examples.
+// none without examples. The softmax includes "somewhere else"
+// (LikenessWeights::elsewhere), whose share is not proposed.
 std::vector<DestinationProposal> likeness_proposals(std::span<const PlacementExample> examples, const KindProfile& thing,
                                                     std::span<const ClassRule> rules, const ConceptSource& concepts,
                                                     const LikenessWeights& weights = {});

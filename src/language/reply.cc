@@ -198,7 +198,39 @@ std::string_view to_string(Asked asked) {
   return "task";
 }
 
+namespace {
+
+// A goal that leaves the thing asked about where it is ("leave it on the
+// desk", "it stays on the tub") is leaving it alone.
+bool stays_where_it_is(const World& world, const ReplyContext& context, const Reply& reply) {
+  const auto* given = std::get_if<GoalGiven>(&reply);
+  if (given == nullptr || !context.object || !given->others.empty()) return false;
+  std::optional<ObjectId> here = place_of(world, *context.object);
+  bool placed = false;
+  for (const Literal& l : given->goal.literals) {
+    if (l.fact.arity != 2 || (l.fact.predicate != world.vocabulary.in && l.fact.predicate != world.vocabulary.on))
+      continue;
+    if (l.fact.args[0] != *context.object || l.fact.args[1] != here) return false;
+    placed = true;
+  }
+  return placed;
+}
+
+}  // namespace
+
 Reply read_reply(const Grounder& grounder, const World& world, const ReplyContext& context, std::string_view text) {
+  Reply reply = read_reply_plain(grounder, world, context, text);
+  if (context.asked != Asked::kGoal) return reply;
+  if (stays_where_it_is(world, context, reply)) return Finished{};
+  if (std::holds_alternative<GoalGiven>(reply))
+    if (auto rest = read_goal_with_rest(grounder, world, context, text, reply)) return *rest;
+  if (std::holds_alternative<Unusable>(reply) || std::holds_alternative<Ambiguous>(reply))
+    if (auto other = read_goal_by_others(grounder, world, context, text, reply)) return *other;
+  return reply;
+}
+
+Reply read_reply_plain(const Grounder& grounder, const World& world, const ReplyContext& context,
+                       std::string_view text) {
   if (text.size() > kMaxSentenceBytes)
     return Unusable{"That is too long for me; please say it in a shorter sentence.", example_replies(world, context),
                     std::nullopt};
@@ -285,6 +317,14 @@ std::string format_reply(const World& world, const Reply& reply) {
         case Command::Kind::kUndo: return "command undo";
         case Command::Kind::kForget: return "command forget " + r.argument;
         case Command::Kind::kQuit: return "command quit";
+        case Command::Kind::kWhatsLeft: return "command whats-left";
+        case Command::Kind::kWhere: return "command where " + r.argument;
+        case Command::Kind::kWhy: return "command why";
+        case Command::Kind::kDo: {
+          std::string out = "command do";
+          for (const Action& a : r.actions) out += " " + format_action(*world.domain, u, a);
+          return out;
+        }
       }
       return "command";
     }

@@ -14,6 +14,7 @@
 // `Unusable`, so that the agent asks back instead of storing it silently.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -65,6 +66,23 @@ struct ReplyContext {
   // what "do the same with the counter" and "the counter next" do. Empty
   // when unknown; such replies then get a question back.
   std::vector<std::string> taught_subtasks = {};
+
+  // --- What the dialogue knows, read-only: what "same again", "the rest",
+  // "same as the hammer" and a class word ("clothes") refer to. Left empty,
+  // such replies are asked back.
+  // The goal given last, and the thing it was given to.
+  struct LastGoal {
+    ObjectId object = 0;
+    Goal goal;
+  };
+  std::optional<LastGoal> last_goal = {};
+  // The things still to come in the part of the task under way, in order.
+  std::vector<ObjectId> still_to_come = {};
+  // The goal learned for a kind of thing (a category, here or not), made
+  // for `object`; nullopt when none was learned.
+  std::function<std::optional<Goal>(const std::string& kind, ObjectId object)> goal_of_kind = {};
+  // kYesNo: the goal proposed, which "yes, and close the lid" adds to.
+  std::optional<Goal> proposal = {};
 };
 
 // --- What a reply can mean --------------------------------------------------
@@ -126,10 +144,15 @@ struct Chosen {
 
 // A command to the agent rather than an answer. These are never counted as
 // instructions.
+// The teacher's own questions ("what's left?", "where is the soap?", "why
+// did you close it?") and one-off actions to do now ("close the top
+// drawer", "oh and shut the fridge"), at any question, are commands too.
 struct Command {
-  enum class Kind { kHelp, kStatus, kUndo, kForget, kQuit };
+  enum class Kind { kHelp, kStatus, kUndo, kForget, kQuit, kWhatsLeft, kWhere, kWhy, kDo };
   Kind kind = Kind::kHelp;
-  std::string argument;  // kForget: the kind of object ("ketchup")
+  std::string argument;  // kForget: the kind of object ("ketchup"); kWhere: the thing as said
+  std::vector<ObjectId> things = {};  // kWhere: what the words may name
+  std::vector<Action> actions = {};   // kDo: in order
 };
 
 // A phrase that fits several things: the agent should ask which.
@@ -157,6 +180,28 @@ using Reply = std::variant<TaskNamed, SubtaskNamed, LoopNamed, Finished, Proceed
 // What `text` means as an answer to `context.asked` in `world`. Never
 // throws; every reply gets a meaning, if only `Unusable`.
 Reply read_reply(const Grounder& grounder, const World& world, const ReplyContext& context, std::string_view text);
+
+// A reply as the acts it holds, in the order they take effect: "oops
+// scratch that, the wrench goes in the bottom one" is an undo and then the
+// wrench's goal; "shelf. oh and close the top drawer" a goal and a one-off
+// closing; "undo undo" two undos. Words it does not know are skipped when
+// the rest is whole, and `notes` say how they were taken.
+struct ReplyActs {
+  std::vector<Reply> acts;  // never empty
+  // After an undo: the words of the answer that follows it, to be read at
+  // the question the undo brings back (the answer in `acts` is read as if
+  // that were the question: about the thing of the last goal).
+  std::string after_undo = {};
+  // "I took \"nah\" as a filler.", "I took \"hampr\" as \"hamper\"."
+  std::vector<std::string> notes = {};
+};
+ReplyActs read_acts(const Grounder& grounder, const World& world, const ReplyContext& context, std::string_view text);
+
+// The one yes/no reader: whether a reply answers yes or no ("sure", "yep,
+// go ahead", "nope", "no, the pantry"), as read_reply reads it at a yes/no
+// question; nullopt when it starts with neither. The dialogue counts the
+// yeses of Table 3 with it too.
+std::optional<bool> yes_or_no(std::string_view text);
 
 // Two or more replies that would work at this question, for help and after
 // an unusable reply: "the ketchup goes in the fridge".

@@ -85,6 +85,23 @@ std::optional<std::pair<std::size_t, bool>> answer_prefix(const std::vector<std:
 bool says_finished(const std::vector<std::string>& words, const ReplyInput& in);
 bool says_proceed(const std::vector<std::string>& words);
 
+// read_reply without the readings by reference to others below: the
+// commands, the script's grammar, then the question's own reader.
+Reply read_reply_plain(const Grounder& grounder, const World& world, const ReplyContext& context,
+                       std::string_view text);
+
+// At a goal question, what the question's own reading (`first`) could not
+// use, read by reference to other things (reply_others.cc): "skip it",
+// "socks too", "same as the hammer", a goal for another thing still to
+// come, "clothes go in the hamper", "the rest on the floor".
+std::optional<Reply> read_goal_by_others(const Grounder& grounder, const World& world, const ReplyContext& context,
+                                         std::string_view text, const Reply& first);
+
+// "everything else goes in the hamper", read whole by the goal's reader as
+// one thing's goal: the same goal for the rest of the things still to come.
+std::optional<Reply> read_goal_with_rest(const Grounder& grounder, const World& world, const ReplyContext& context,
+                                         std::string_view text, const Reply& first);
+
 // "clear", "put away": a verb and its particle as a subtask's name.
 std::string verb_name(const std::string& verb, const std::string& particle);
 

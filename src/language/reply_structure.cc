@@ -286,6 +286,16 @@ class StructureReader {
     if (c.verb == "do" && !in_.context.taught_subtasks.empty()) return in_.context.taught_subtasks.back();
     return verb_name(c.verb, c.particle);
   }
+  // A verb that only takes things from a place ("get everything off the
+  // bench", "take everything out of the baskets") or says nothing of what
+  // to do ("do the yellow bucket") names the part by the place: a surface
+  // is cleared, a receptacle emptied.
+  std::string subtask_verb(const Clause& c, const std::vector<ObjectId>& places) const {
+    std::string verb = subtask_verb(c);
+    if (places.empty() || !is_one_of(verb, {"get", "take", "grab", "do", "get out", "take out", "get off", "take off"}))
+      return verb;
+    return in_.world.universe->info(places.front()).kind == ObjectKind::kSurface ? "clear" : "empty";
+  }
 
   // The places a phrase names: one, or every place of one kind ("the bags").
   std::optional<Places> places(const Chunk& chunk) {
@@ -376,7 +386,7 @@ class StructureReader {
       if (!found || problem_ || ambiguous_) return std::nullopt;
       std::vector<ObjectId> holding = holding_items(found->objects);
       if (holding.empty()) return std::nullopt;
-      return SubtaskNamed{subtask_verb(c), relation(holding.front()), holding};
+      return SubtaskNamed{subtask_verb(c, holding), relation(holding.front()), holding};
     }
     return std::nullopt;
   }
@@ -435,7 +445,7 @@ class StructureReader {
       item_named_ = true;  // a place where things go, not where they are
       return std::nullopt;
     }
-    return SubtaskNamed{subtask_verb(c), relation(holding.front()), holding};
+    return SubtaskNamed{subtask_verb(c, holding), relation(holding.front()), holding};
   }
 
   const ReplyInput& in_;
@@ -507,6 +517,18 @@ Reply read_task(const ReplyInput& in) {
         break;
       }
     }
+  }
+  // The task's place is the world's location: said ("clean up the
+  // bathroom after my shower", "tidy the garden shed") or pointed at ("tidy
+  // up in here", "this room", "it" for the room), never a filler or a
+  // time ("ugh", "after my shower").
+  Words room = split_words(to_lower(in.world.location));
+  if (!room.empty()) {
+    auto at = std::search(object.begin(), object.end(), room.begin(), room.end());
+    bool pointed = !object.empty() && std::all_of(object.begin(), object.end(), [](const std::string& w) {
+      return is_one_of(w, {"in", "here", "this", "room", "place", "it", "ugh", "um", "lol", "hmm", "oh", "so"});
+    });
+    if (at != object.end() || pointed) object = room;
   }
   std::string name = verb_name(verb, particle);
   if (particle == "off" || particle == "down" || particle == "over" || particle == "aside") name = verb + " " + particle;

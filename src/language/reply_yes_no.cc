@@ -72,10 +72,24 @@ bool only_confirms(Words words) {
 
 }  // namespace
 
-Reply read_yes_no(const ReplyInput& in) {
-  Words words = in.words;
+namespace {
+
+Words without_lead(Words words) {
   while (!words.empty() && is_one_of(words.front(), {"oh", "well", "um", "uh", "hmm", ",", "so"}))
     words.erase(words.begin());
+  return words;
+}
+
+}  // namespace
+
+std::optional<bool> yes_or_no(std::string_view text) {
+  auto answer = answer_prefix(without_lead(reply_words(text)));
+  if (!answer) return std::nullopt;
+  return answer->second;
+}
+
+Reply read_yes_no(const ReplyInput& in) {
+  Words words = without_lead(in.words);
   auto answer = answer_prefix(words);
   if (!answer)
     return unusable(in, Problem{"Please answer yes or no.", std::nullopt});

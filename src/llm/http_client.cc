@@ -156,9 +156,14 @@ HttpLlmClient::Attempt HttpLlmClient::post_once(const std::string& body) {
 
   attempt.code = curl_easy_perform(curl);
   curl_easy_getinfo(curl, CURLINFO_RESPONSE_CODE, &attempt.status);
+  // Connected: a new connection was made, or the request went out on one
+  // kept from an earlier answer (curl gives a reused connection no connect
+  // time, so that alone blamed connecting for a server that hung after it).
   curl_off_t connect_time = 0;
+  long request_size = 0;
   curl_easy_getinfo(curl, CURLINFO_CONNECT_TIME_T, &connect_time);
-  attempt.connected = connect_time > 0;
+  curl_easy_getinfo(curl, CURLINFO_REQUEST_SIZE, &request_size);
+  attempt.connected = connect_time > 0 || request_size > 0;
   if (attempt.code != CURLE_OK) {
     attempt.curl_message = error_buffer[0] != '\0' ? std::string(error_buffer)
                                                    : std::string(curl_easy_strerror(attempt.code));

@@ -2,6 +2,7 @@
 // in a kitchen whose things go by other words (synonyms), and which learned
 // kind of object a new kind is nearest to (analogy).
 #include "agent/transfer.h"
+#include "agent/goal_proposals.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -227,18 +228,24 @@ TEST(TransferInTheAgent, PerformsTheRenamedKitchenWithTheKitchensKnowledge) {
   EXPECT_EQ(catsup->goal_source, "memory");
   EXPECT_TRUE(catsup->achieved);
   EXPECT_EQ(catsup->goal, "(and (in catsup1 refrigerator1) (closed refrigerator1))");
-  // Saltines are crackers (distance 1, the same subtask): adopted.
+  // Saltines are crackers (distance 1, the same subtask), and the crackers
+  // and the granola bars went to the larder: decided alone.
   const ObjectReport* saltines = report_for(*report, "saltines1");
   ASSERT_NE(saltines, nullptr);
-  EXPECT_EQ(saltines->goal_source, "analogy");
+  EXPECT_FALSE(saltines->goal_source.empty());
   EXPECT_TRUE(saltines->achieved);
-  EXPECT_THAT(report->analogies, ::testing::Contains(HasSubstr("the goal of the crackers for saltines1")));
-  // Cream and half-and-half are sisters (0.33): not adopted alone.
+  EXPECT_EQ(saltines->goal, "(and (in saltines1 larder1) (closed larder1))");
+  EXPECT_GE(saltines->belief, default_decision_policy().act_at);
+  EXPECT_THAT(report->analogies, ::testing::Contains(HasSubstr("saltines1 (saltines) goes in the larder")));
+  // The cream is like the half-and-half (WordNet: the refrigerator) and
+  // like the granola bars (the examples' classes: the larder): in doubt, it
+  // is left as needing help, saying what it might do.
   const ObjectReport* cream = report_for(*report, "cream1");
   ASSERT_NE(cream, nullptr);
   EXPECT_FALSE(cream->achieved);
+  EXPECT_LT(cream->belief, default_decision_policy().act_at);
   EXPECT_THAT(report->help_needed,
-              ::testing::Contains(::testing::AllOf(HasSubstr("the cream"), HasSubstr("like the half and half"))));
+              ::testing::Contains(::testing::AllOf(HasSubstr("the cream"), HasSubstr("not sure enough"))));
 }
 
 // Teaching the renamed kitchen to an agent that knows the kitchen: it asks
@@ -258,12 +265,23 @@ TEST(TransferInTheAgent, TheTeacherConfirmsAnalogiesAndTeachesTheRest) {
   EXPECT_EQ(scratch.counts.yes_no, 0);
   EXPECT_THAT(carried.transcript_text, ::testing::StartsWith("Agent: Here I take the coffee mill for the coffee grinder"));
   EXPECT_THAT(carried.transcript_text, HasSubstr(", the refrigerator for the fridge, the trash can for the garbage,"));
-  EXPECT_THAT(carried.transcript_text, HasSubstr("Does the cream on the sideboard go like the half and half: it goes in "
-                                                 "the refrigerator, and the refrigerator ends closed?\nInstructor: yes."));
-  // The confirmed analogy is learned, in this world's words, with its source.
+  // In doubt, a yes/no that shows its evidence; a yes is learned, in this
+  // world's words, with where it came from.
+  EXPECT_THAT(carried.transcript_text,
+              HasSubstr("Does the ceramic dish on the dining table go like the ceramic plate and the metal fork: it goes in "
+                        "the dishwashing machine, and the dishwashing machine ends closed?\nInstructor: yes."));
+  const GoalKnowledge* dish = carried.knowledge.goals.find(GoalKey{"tidy kitchen", "clear", "ceramic-dish", "dining-table"});
+  ASSERT_NE(dish, nullptr);
+  EXPECT_THAT(dish->provenance.source, HasSubstr("decision: like the ceramic-plate and the metal-fork (confirmed)"));
+  // Sure enough, it acts alone and says why.
+  EXPECT_THAT(carried.transcript_text, HasSubstr("Agent: The saltines on the sideboard go in the larder, and the larder "
+                                                 "ends closed, like the crackers and the granola bars.\nAgent: I opened"));
+  // A no, and the teacher's own answer: the cream in the refrigerator.
+  EXPECT_THAT(carried.transcript_text, HasSubstr("Does the cream on the sideboard go like"));
   const GoalKnowledge* cream = carried.knowledge.goals.find(GoalKey{"tidy kitchen", "store", "cream", "sideboard"});
   ASSERT_NE(cream, nullptr);
-  EXPECT_THAT(cream->provenance.source, HasSubstr("analogy: like the half and half (confirmed)"));
+  EXPECT_THAT(cream->provenance.source, ::testing::StartsWith("instructor"));
+  EXPECT_THAT(format_goal_knowledge(*cream), HasSubstr("refrigerator"));
 }
 
 // Where the nearest kind went elsewhere in its own task, the teacher says

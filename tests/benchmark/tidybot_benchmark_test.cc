@@ -126,7 +126,7 @@ TEST_F(TidyBotRun, TheJsonHasTheCountsOfEachSetting) {
 // The LLM settings with answers recorded for the two scenarios: a summary
 // asked of the seen placements and placements by it (protocol A), and
 // placements by the person's note (protocol B).
-TEST(TidyBotWithAnLlm, TheLlmsPlacementsAreActedOnAloneAndConfirmedWithTheTeacher) {
+TEST(TidyBotWithAnLlm, TheLlmsPlacementsAreWeighedAgainstTheExamplesAndTheRule) {
   apprentice::testing::ScratchDir scratch;
   const auto corpus = scratch / "answers.jsonl";
   std::ofstream(corpus) << testing::kTwoScenariosAnswers;
@@ -141,22 +141,25 @@ TEST(TidyBotWithAnLlm, TheLlmsPlacementsAreActedOnAloneAndConfirmedWithTheTeache
   ASSERT_TRUE(results) << results.error().describe();
   const SettingResult& alone = results->results[0];
   // The shirt and the block as the LLM placed them, the second polo shirt
-  // by what was taught; the coffee mug where the LLM (wrongly) put it.
-  EXPECT_EQ(alone.total.right, 3);
-  EXPECT_EQ(alone.total.wrong, 1);
-  EXPECT_EQ(alone.scenarios[1].objects[0].placed, "bottom shelf");
+  // by what was taught. The LLM put the coffee mug (wrongly) on the bottom
+  // shelf; the examples say it is like the Disney mug, and the decision
+  // weighs both: it does not act on the LLM's word alone.
+  EXPECT_EQ(alone.total.right + alone.total.left, 4);
+  EXPECT_EQ(alone.total.wrong, 0);
+  EXPECT_NE(alone.scenarios[1].objects[0].placed, "bottom shelf");
+  EXPECT_EQ(alone.scenarios[1].objects[0].proposed, "top shelf");
   EXPECT_EQ(alone.total.questions, 0);
   EXPECT_GT(alone.llm_calls, 0);
   const SettingResult& taught = results->results[1];
-  EXPECT_EQ(taught.total.right, 4) << "the teacher says no to the wrong shelf";
-  EXPECT_GE(taught.total.questions, 1);
+  EXPECT_EQ(taught.total.right, 4);
+  EXPECT_EQ(taught.total.wrong, 0);
   // By the note, which is word for word the summary: every object, the
   // seen from the answer recorded by the note, the unseen from the one
   // recorded by the summary (the same rule, so the same query).
   const SettingResult& note = results->results[2];
   EXPECT_EQ(note.scenarios[0].tally.right, 5);
   EXPECT_EQ(note.scenarios[1].tally.right, 2);
-  EXPECT_EQ(note.scenarios[1].tally.wrong, 1) << "the coffee mug, on the bottom shelf";
+  EXPECT_EQ(note.scenarios[1].tally.wrong, 0) << "the person said mugs go on the top shelf";
 }
 
 TEST(TidyBotRecorded, TidyBotsOwnAnswersAreScoredAsItScoresThem) {

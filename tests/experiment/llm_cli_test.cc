@@ -199,6 +199,53 @@ TEST_F(LlmSpecs, AServerThatHangsDuringTheRunCostsThreeTimeoutsThenOne) {
   EXPECT_EQ(server.requests(), 1 + kBreaker + 1);
 }
 
+// Found against a real llama-server stopped with SIGSTOP during a run: the
+// first query to time out went on the connection the client had kept open
+// from its last answer, and curl gives a reused connection no connect time,
+// so the warning blamed connecting ("no connection within 300 ms
+// (--llm-connect-timeout-ms)") for what was the request timeout.
+TEST_F(LlmSpecs, AServerThatHangsOnAKeptConnectionIsBlamedOnTheRequestTimeout) {
+  FakeLlmServer server(ServerMode::kSlow, kitchen_goals());
+  server.healthy_for(2);  // the check, then the condition's first query, whose connection is kept
+  auto args = experiment("inst+llm", "openai:" + server.url());
+  args.insert(args.end(), {"--llm-timeout-ms", "300", "--llm-connect-timeout-ms", "200"});
+  testing::Invocation run;
+  nlohmann::json out = rows(args, 4, &run);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0]["llm_failures"], kBreaker);
+  EXPECT_THAT(run.err, HasSubstr("the LLM failed (deadline exceeded: no answer from the LLM server at"));
+  EXPECT_THAT(run.err, HasSubstr("in time: no answer within 300 ms (--llm-timeout-ms)); asking the instructor instead"));
+  EXPECT_THAT(run.err, Not(HasSubstr("--llm-connect-timeout-ms"))) << run.err;
+}
+
+// Found against a real llama-server killed during a run: before the next
+// LLM condition the server is asked once more, and when it did not answer
+// the warning said "going on without the LLM (--llm-optional)" in a run
+// that was not given --llm-optional (and that exits 4). It now says what
+// happens: the LLM conditions left run without it, marked degraded.
+TEST_F(LlmSpecs, TheCheckBetweenConditionsSaysWhatHappensWithoutLlmOptional) {
+  FakeLlmServer server(ServerMode::kSlow);
+  server.healthy_for(1);
+  auto args = experiment("inst+llm,inst+search4+llm", "openai:" + server.url());
+  args.insert(args.end(), {"--llm-timeout-ms", "300"});
+  testing::Invocation run;
+  nlohmann::json out = rows(args, 4, &run);
+  ASSERT_EQ(out.size(), 2u);
+  EXPECT_EQ(out[1]["degraded_why"], "the LLM could not be reached and was not asked");
+  EXPECT_THAT(run.err, Not(HasSubstr("(--llm-optional)"))) << run.err;
+  EXPECT_THAT(run.err, HasSubstr("(--llm-timeout-ms); the LLM conditions left run without it, marked degraded"))
+      << run.err;
+  // With --llm-optional the same words: the flag changes the exit code, not what the run does.
+  FakeLlmServer again(ServerMode::kSlow);
+  again.healthy_for(1);
+  auto optional_args = experiment("inst+llm,inst+search4+llm", "openai:" + again.url());
+  optional_args.insert(optional_args.end(), {"--llm-timeout-ms", "300", "--llm-optional"});
+  testing::Invocation optional;
+  rows(optional_args, 0, &optional);
+  EXPECT_THAT(optional.err, Not(HasSubstr("(--llm-optional)"))) << optional.err;
+  EXPECT_THAT(optional.err, HasSubstr("the LLM conditions left run without it, marked degraded"));
+}
+
 // A server that recovers between conditions is used again.
 TEST_F(LlmSpecs, AServerThatRecoversIsAskedAgainInTheNextCondition) {
   FakeLlmServer server(ServerMode::kMalformedJson, kitchen_goals());

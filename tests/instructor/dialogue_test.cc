@@ -69,7 +69,14 @@ TEST(ReadYesNo, ReadsTheScriptsAnswersAndCommonVariants) {
   EXPECT_EQ(read_yes_no("y"), true);
   EXPECT_EQ(read_yes_no("n."), false);
   EXPECT_EQ(read_yes_no("maybe"), std::nullopt);
-  EXPECT_EQ(read_yes_no("yes, in the fridge"), std::nullopt);
+  // The reader the agent answers with: a person's "sure" is a yes, counted.
+  EXPECT_EQ(read_yes_no("sure"), true);
+  EXPECT_EQ(read_yes_no("yep, go ahead"), true);
+  EXPECT_EQ(read_yes_no("nope"), false);
+  EXPECT_EQ(read_yes_no("no, the pantry"), false);
+  // The agent takes "yes, in the fridge" as a yes (and reads the rest), so
+  // it is counted as one.
+  EXPECT_EQ(read_yes_no("yes, in the fridge"), true);
   EXPECT_EQ(read_yes_no(""), std::nullopt);
 }
 

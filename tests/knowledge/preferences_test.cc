@@ -124,7 +124,11 @@ TEST(RuleProposals, TheOrangeGoesWhereTheFruitRuleSays) {
   std::vector<DestinationProposal> proposals = rule_proposals(rules, fruit("orange"), RuleSource::kInduced);
   ASSERT_FALSE(proposals.empty());
   EXPECT_EQ(proposals.front().destination, on("coffee-table"));
-  EXPECT_GT(proposals.front().confidence, 0.9);
+  // No surer than the rule is of its class ("edible fruit" rather than
+  // "produce" or "food", from two examples).
+  ASSERT_TRUE(proposals.front().rule.has_value());
+  EXPECT_GT(proposals.front().confidence, 0.8);
+  EXPECT_LE(proposals.front().confidence, proposals.front().rule->confidence);
   EXPECT_EQ(proposals.front().source, ProposalSource::kInducedRule);
   ASSERT_TRUE(proposals.front().rule.has_value());
   EXPECT_EQ(proposals.front().rule->class_name, "edible fruit");

@@ -1,6 +1,7 @@
 #include "fresh_corpus.h"
 
 #include <algorithm>
+#include <chrono>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -173,8 +174,7 @@ std::string action_line(const World& world, const Action& action) {
 
 // The reading as acts; nullopt when it asks back or refuses.
 std::optional<Acts> reading_acts(const Grounder& grounder, const World& world, const Line& line,
-                                 const ReplyContext& context, const Reply& reply) {
-  Acts acts;
+                                 const ReplyContext& context, const Reply& reply, Acts acts = {}) {
   struct Visitor {
     const Grounder& grounder;
     const World& world;
@@ -236,6 +236,17 @@ std::optional<Acts> reading_acts(const Grounder& grounder, const World& world, c
         case Command::Kind::kUndo: push(acts, {"undo"}); break;
         case Command::Kind::kQuit: push(acts, {"quit"}); break;
         case Command::Kind::kForget: push(acts, {"forget " + r.argument}); break;
+        case Command::Kind::kWhatsLeft: push(acts, {"question whats-left"}); break;
+        case Command::Kind::kWhy: push(acts, {"question why"}); break;
+        case Command::Kind::kWhere:
+          push(acts, {"question where" + (r.things.empty() ? std::string() : " " + canonical(world, r.things))});
+          break;
+        case Command::Kind::kDo:
+          for (const Action& a : r.actions) {
+            std::string line = action_line(world, a);
+            push(acts, {"command" + line.substr(std::string("action").size())});
+          }
+          break;
       }
       return true;
     }
@@ -357,8 +368,66 @@ ReplyContext context_of(const Line& line, const World& world, std::string& error
     }
     if (!c.object && !things.empty()) c.object = things.front();
   }
-  if (ctx.contains("last_goal") && ctx["last_goal"].is_object())
+  // A goal of the context ({thing, place, relation, closed}) for a thing
+  // of that kind, other than `not_this` where there is one.
+  auto goal_of = [&](const nlohmann::json& g, std::optional<ObjectId> not_this) -> std::optional<ReplyContext::LastGoal> {
+    std::vector<ObjectId> things = objects_named(world, str(g, "thing"));
+    std::optional<ObjectId> place = first_named(world, str(g, "place"));
+    if (things.empty() || !place) return std::nullopt;
+    ObjectId thing = things.front();
+    for (ObjectId t : things)
+      if (t != not_this) {
+        thing = t;
+        break;
+      }
+    const Vocabulary& v = world.vocabulary;
+    std::vector<Literal> literals = {Literal{Fact(str(g, "relation") == "on" ? v.on : v.in, {thing, *place}), true}};
+    if (g.contains("closed") && g["closed"].is_boolean())
+      literals.push_back(Literal{Fact(v.closed, {*place}), g["closed"].get<bool>()});
+    return ReplyContext::LastGoal{thing, Goal(std::move(literals))};
+  };
+  if (ctx.contains("last_goal") && ctx["last_goal"].is_object()) {
     c.recent_place = first_named(world, str(ctx["last_goal"], "place"));
+    c.last_goal = goal_of(ctx["last_goal"], c.object);
+  }
+  // What was taught before, as far as the line says: the last goal.
+  if (c.last_goal) {
+    const ReplyContext::LastGoal last = *c.last_goal;
+    c.goal_of_kind = [last, &world](const std::string& kind, ObjectId object) -> std::optional<Goal> {
+      if (world.universe->info(last.object).category != kind) return std::nullopt;
+      std::vector<Literal> literals = last.goal.literals;
+      for (Literal& l : literals)
+        for (std::size_t i = 0; i < l.fact.arity; ++i)
+          if (l.fact.args[i] == last.object) l.fact.args[i] = object;
+      return Goal(std::move(literals));
+    };
+  }
+  if (ctx.contains("proposal") && ctx["proposal"].is_object())
+    if (auto proposed = goal_of(ctx["proposal"], std::nullopt)) c.proposal = proposed->goal;
+  // Things still to come: the categories listed, at the subtask's places
+  // first; else every other thing at the subtask's places.
+  if (ctx.contains("still_to_come") && ctx["still_to_come"].is_array()) {
+    for (const auto& kind : ctx["still_to_come"]) {
+      if (!kind.is_string()) continue;
+      std::vector<ObjectId> things = objects_named(world, kind.get<std::string>());
+      std::stable_partition(things.begin(), things.end(), [&](ObjectId t) {
+        auto at = place_of(world, t);
+        return at && std::find(subtask_places.begin(), subtask_places.end(), *at) != subtask_places.end();
+      });
+      for (ObjectId t : things)
+        if (t != c.object && std::find(c.still_to_come.begin(), c.still_to_come.end(), t) == c.still_to_come.end()) {
+          c.still_to_come.push_back(t);
+          break;
+        }
+    }
+  } else {
+    for (ObjectId t : world.universe->of_kind(ObjectKind::kItem)) {
+      auto at = place_of(world, t);
+      if (t != c.object && at && std::find(subtask_places.begin(), subtask_places.end(), *at) != subtask_places.end() &&
+          (!c.last_goal || world.universe->info(t).category != world.universe->info(c.last_goal->object).category))
+        c.still_to_come.push_back(t);
+    }
+  }
   if (ctx.contains("choices") && ctx["choices"].is_array())
     for (const auto& choice : ctx["choices"])
       if (choice.is_string())
@@ -370,9 +439,14 @@ Scored score(const Grounder& grounder, const World& world, const Line& line) {
   Scored out;
   ReplyContext context = context_of(line, world, out.error);
   for (const auto& act : line.meaning) push(out.label, label_act(world, act, out.error));
-  Reply reply = read_reply(grounder, world, context, line.reply);
-  out.reply_line = format_reply(world, reply);
-  std::optional<Acts> reading = reading_acts(grounder, world, line, context, reply);
+  auto start = std::chrono::steady_clock::now();
+  ReplyActs read = read_acts(grounder, world, context, line.reply);
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::optional<Acts> reading = Acts{};
+  for (const Reply& reply : read.acts) {
+    out.reply_line += (out.reply_line.empty() ? "" : " ; ") + format_reply(world, reply);
+    if (reading) reading = reading_acts(grounder, world, line, context, reply, *reading);
+  }
   const bool ask_back = out.label.size() == 1 && out.label.front() == std::vector<std::string>{"ask-back"};
   if (!reading) {
     out.outcome = ask_back ? Outcome::kMeant : Outcome::kAskedBack;

@@ -73,6 +73,7 @@ struct Scored {
   Acts reading;
   std::string reply_line;  // format_reply of what was read
   std::string error;       // the label names nothing in the world, an unknown act
+  double seconds = 0;      // how long read_acts took
 };
 
 // What the line's context gives the reader (ReplyContext), built in its world.

@@ -38,6 +38,7 @@ Report score_set(const std::string& set, std::size_t& lines) {
   for (const std::string& e : corpus.errors) ADD_FAILURE() << set << ": " << e;
   Worlds worlds(folder);
   Report report;
+  std::vector<double> times;
   std::ofstream detail;
   if (const char* path = std::getenv("APPRENTICE_FRESH_LINES")) detail.open(path, std::ios::app);
   for (const Line& line : corpus.lines) {
@@ -50,6 +51,7 @@ Report score_set(const std::string& set, std::size_t& lines) {
     Scored scored = score(grounder(), scenario->world, line);
     EXPECT_EQ(scored.error, "") << line.file << " " << line.id;
     add(report, line, scored.outcome);
+    times.push_back(scored.seconds);
     if (detail)
       detail << line.id << "\t" << to_string(scored.outcome) << "\t" << line.asked << "\t" << line.reply << "\t"
              << acts_text(scored.label) << "\t" << (scored.reading.empty() ? scored.reply_line : acts_text(scored.reading))
@@ -63,6 +65,13 @@ Report score_set(const std::string& set, std::size_t& lines) {
   EXPECT_EQ(static_cast<std::size_t>(report.overall.total()), corpus.lines.size());
   for (const auto& [act, tally] : report.by_act) EXPECT_LE(tally.total(), report.overall.total()) << act;
   std::cout << "Fresh corpus " << set << " (" << corpus.lines.size() << " replies):\n" << format_report(report);
+  // How long reading a reply took (a measurement, not a limit; this build,
+  // this machine's load).
+  if (!times.empty()) {
+    std::sort(times.begin(), times.end());
+    std::cout << "read_acts per reply: median " << times[times.size() / 2] * 1000 << " ms, 95th percentile "
+              << times[times.size() * 95 / 100] * 1000 << " ms\n";
+  }
   return report;
 }
 

@@ -381,10 +381,15 @@ TEST(ReplyReasons, PlainEnglish) {
   ASSERT_TRUE(std::holds_alternative<Unusable>(milk));
   EXPECT_EQ(std::get<Unusable>(milk).reason, "That says what becomes of the milk, but I asked about the ketchup on the table. Where should the ketchup go?");
   // A reply quoted back keeps its commas where they were typed.
-  Reply same = read_reply(grounder(), kitchen, asking(Asked::kGoal, in(kitchen, "ketchup1")), "same as the cereal, or not");
+  Reply same = read_reply(grounder(), kitchen, asking(Asked::kGoal, in(kitchen, "ketchup1")), "as usual, or not");
   ASSERT_TRUE(std::holds_alternative<Unusable>(same)) << format_reply(kitchen, same);
-  EXPECT_NE(std::get<Unusable>(same).reason.find("\"same as the cereal, or not\""), std::string::npos)
+  EXPECT_NE(std::get<Unusable>(same).reason.find("\"as usual, or not\""), std::string::npos)
       << std::get<Unusable>(same).reason;
+  // "same as" a kind not taught yet says so.
+  Reply cereal = read_reply(grounder(), kitchen, asking(Asked::kGoal, in(kitchen, "ketchup1")), "same as the cereal, or not");
+  ASSERT_TRUE(std::holds_alternative<Unusable>(cereal)) << format_reply(kitchen, cereal);
+  EXPECT_EQ(std::get<Unusable>(cereal).reason,
+            "I have not learned where the cereal box goes yet. Where should the ketchup go?");
 }
 
 TEST(ReplyReasons, YesNoKeepsTheCorrection) {

@@ -1,0 +1,119 @@
+// A person's rule applied to things (knowledge/said_rules.h), over a small
+// table of classes and two-dimensional "vectors": the clause a thing falls
+// under by WordNet, by the words of its name, by the vectors where WordNet
+// is silent, and "the rest" only where no other clause is sure.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <map>
+
+#include "knowledge/said_rules.h"
+
+namespace apprentice {
+namespace {
+
+Destination in(const std::string& place) { return Destination{"in", GoalTemplateArgument{false, place, {}}, {}}; }
+Destination on(const std::string& place) { return Destination{"on", GoalTemplateArgument{false, place, {}}, {}}; }
+
+// Classes by word, and unit vectors in two dimensions: "toy" words point
+// one way, "clothes" words the other.
+class TableConcepts final : public ConceptSource {
+ public:
+  KindProfile profile(std::string_view kind) const override {
+    KindProfile p;
+    p.kind = std::string(kind);
+    p.head = p.kind;
+    return p;
+  }
+  std::vector<ConceptClass> classes_named(std::string_view words) const override {
+    if (words == "toys") return {ConceptClass{"id:plaything", "plaything", 1, 60, 0}};
+    if (words == "clothes") return {ConceptClass{"id:clothing", "clothing", 1, 300, 0}};
+    if (words == "outerwear") return {ConceptClass{"id:outerwear", "outerwear", 1, 40, 0}};
+    return {};
+  }
+  std::vector<float> vector_of(std::string_view words) const override {
+    static const std::map<std::string, std::vector<float>, std::less<>> kVectors = {
+        {"toys", {1, 0}}, {"electronics", {0.6f, 0.8f}}, {"clothes", {0, 1}}, {"outerwear", {0.1f, 0.995f}}};
+    auto found = kVectors.find(words);
+    return found == kVectors.end() ? std::vector<float>{} : found->second;
+  }
+};
+
+KindProfile thing(const std::string& kind, std::vector<std::string> classes, std::vector<float> vector,
+                  std::vector<std::string> modifiers = {}) {
+  KindProfile p;
+  p.kind = kind;
+  p.head = kind;
+  p.modifiers = std::move(modifiers);
+  for (const std::string& c : classes) p.classes.push_back(ConceptClass{"id:" + c, c, 1, 10, 1});
+  p.vector = std::move(vector);
+  return p;
+}
+
+ClassRule said(const std::string& cls, Destination where, bool rest = false, std::vector<std::string> modifiers = {}) {
+  ClassRule rule;
+  rule.class_name = cls;
+  rule.modifiers = std::move(modifiers);
+  rule.rest = rest;
+  rule.destination = std::move(where);
+  rule.source = RuleSource::kPerson;
+  rule.said = "as said";
+  rule.confidence = 0.95;
+  return rule;
+}
+
+TEST(SaidRules, WordNetPutsAThingUnderItsClause) {
+  TableConcepts concepts;
+  std::vector<ClassRule> rules = {said("toys", in("storage-box")), said("clothes", on("chair"))};
+  auto proposals =
+      said_rule_proposals(rules, thing("teddy bear", {"plaything"}, {0.7f, 0.7f}), RuleSource::kPerson, concepts);
+  ASSERT_EQ(proposals.size(), 2u);
+  EXPECT_EQ(proposals.front().destination, in("storage-box"));
+  EXPECT_GT(proposals.front().confidence, 0.8);
+  EXPECT_EQ(proposals.front().source, ProposalSource::kPersonRule);
+  ASSERT_TRUE(proposals.front().rule.has_value());
+  EXPECT_EQ(proposals.front().rule->class_name, "toys");
+}
+
+TEST(SaidRules, TheVectorsPlaceWhatWordNetDoesNotKnow) {
+  TableConcepts concepts;
+  std::vector<ClassRule> rules = {said("electronics", on("coffee-table")), said("clothes", on("chair"))};
+  // A game console: no WordNet class, a vector near "electronics".
+  auto proposals = said_rule_proposals(rules, thing("nintendo switch", {}, {0.6f, 0.8f}), RuleSource::kPerson, concepts);
+  ASSERT_FALSE(proposals.empty());
+  EXPECT_EQ(proposals.front().destination, on("coffee-table"));
+  // Another source's rules say nothing.
+  EXPECT_TRUE(said_rule_proposals(rules, thing("x", {}, {1, 0}), RuleSource::kLlm, concepts).empty());
+}
+
+TEST(SaidRules, TheRestTakesOnlyWhatNoOtherClauseIsSureOf) {
+  TableConcepts concepts;
+  std::vector<ClassRule> rules = {said("outerwear", in("closet")), said("clothes", on("bed"), /*rest=*/true)};
+  // The parka is outerwear (and clothing): the closet, though its vector is
+  // as near to "clothes".
+  auto parka = said_rule_proposals(rules, thing("parka", {"outerwear", "clothing"}, {0.05f, 0.998f}),
+                                   RuleSource::kPerson, concepts);
+  ASSERT_FALSE(parka.empty());
+  EXPECT_EQ(parka.front().destination, in("closet"));
+  // The blouse is clothing, not outerwear: the bed.
+  auto blouse = said_rule_proposals(rules, thing("blouse", {"clothing"}, {0, 1}), RuleSource::kPerson, concepts);
+  ASSERT_FALSE(blouse.empty());
+  EXPECT_EQ(blouse.front().destination, on("bed"));
+}
+
+TEST(SaidRules, ModifiersInTheNameDecideAndAnExceptionIsHonoured) {
+  TableConcepts concepts;
+  std::vector<ClassRule> rules = {said("", in("left-box"), false, {"plastic"}), said("", in("right-box"), false, {"metal"})};
+  auto cup = said_rule_proposals(rules, thing("plastic cup", {}, {}, {"plastic"}), RuleSource::kPerson, concepts);
+  ASSERT_EQ(cup.size(), 2u);
+  EXPECT_EQ(cup.front().destination, in("left-box"));
+  rules[0].exceptions.push_back("plastic cup");
+  auto excepted = said_rule_proposals(rules, thing("plastic cup", {}, {}, {"plastic"}), RuleSource::kPerson, concepts);
+  // Not pushed onto the other clause, which it does not fit either.
+  ASSERT_EQ(excepted.size(), 1u);
+  EXPECT_EQ(excepted.front().destination, in("right-box"));
+  EXPECT_LT(excepted.front().confidence, 0.5);
+}
+
+}  // namespace
+}  // namespace apprentice

@@ -1,0 +1,154 @@
+// read_acts (language/reply.h): a reply as the acts it holds, in a
+// bathroom with look-alike drawers (tests/language/fresh/set1/bathroom.yaml).
+// Every expectation here was written from what a person means, before the
+// reading was run on it.
+#include <gtest/gtest.h>
+
+#include "fresh_corpus.h"
+#include "language/reply.h"
+#include "language_fixtures.h"
+
+namespace apprentice::language {
+namespace {
+
+using testing::grounder;
+using testing::source_path;
+
+class ReplyActsTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::string error;
+    scenario_ = worlds_.get("bathroom.yaml", error);
+    ASSERT_NE(scenario_, nullptr) << error;
+  }
+  const World& world() const { return scenario_->world; }
+  ObjectId id(std::string_view name) const {
+    auto found = world().universe->find(name);
+    EXPECT_TRUE(found.has_value()) << name;
+    return found.value_or(0);
+  }
+  // A goal question about `object`, after `last` was told to go in `place`.
+  ReplyContext goal_question(std::string_view object, std::string_view last = "", std::string_view place = "") const {
+    ReplyContext c;
+    c.asked = Asked::kGoal;
+    c.object = id(object);
+    if (!last.empty()) {
+      c.last_goal = ReplyContext::LastGoal{
+          id(last), Goal({Literal{Fact(world().vocabulary.in, {id(last), id(place)}), true}})};
+      c.recent_place = id(place);
+    }
+    return c;
+  }
+  std::string acts(const ReplyContext& c, std::string_view text) const {
+    ReplyActs read = read_acts(grounder(), world(), c, text);
+    std::string out;
+    for (const Reply& r : read.acts) out += (out.empty() ? "" : " | ") + format_reply(world(), r);
+    return out;
+  }
+  fresh::Worlds worlds_{source_path("tests/language/fresh/set1")};
+  const Scenario* scenario_ = nullptr;
+};
+
+TEST_F(ReplyActsTest, ACorrectionIsAnUndoAndTheAnswerTheUndoneQuestionWanted) {
+  ReplyContext c = goal_question("comb1", "hairbrush1", "drawer1");
+  EXPECT_EQ(acts(c, "wait no, bottom drawer"), "command undo | goal (in hairbrush1 drawer2)");
+  ReplyActs read = read_acts(grounder(), world(), c, "oops i meant the bottom drawer");
+  ASSERT_EQ(read.acts.size(), 2u);
+  EXPECT_EQ(read.after_undo, "the bottom drawer");
+  // Naming the last thing, or what was wrong, corrects even after "no".
+  EXPECT_EQ(acts(c, "no, the hairbrush goes in the cabinet, not in the drawer"),
+            "command undo | goal (in hairbrush1 cabinet1)");
+}
+
+TEST_F(ReplyActsTest, ANahBeforeAFirstAnswerIsAFillerAndSaidSo) {
+  ReplyContext c = goal_question("comb1", "hairbrush1", "drawer1");
+  ReplyActs read = read_acts(grounder(), world(), c, "nah, put it in the cabinet");
+  EXPECT_EQ(acts(c, "nah, put it in the cabinet"), "goal (in comb1 cabinet1)");
+  ASSERT_FALSE(read.notes.empty());
+  EXPECT_EQ(read.notes.front(), "I took \"nah\" as a filler.");
+}
+
+TEST_F(ReplyActsTest, UndoesCountAsSaid) {
+  ReplyContext c = goal_question("comb1", "hairbrush1", "drawer1");
+  EXPECT_EQ(acts(c, "undo undo"), "command undo | command undo");
+  EXPECT_EQ(acts(c, "go back one, that was wrong"), "command undo");
+  EXPECT_EQ(acts(c, "oops, scratch that"), "command undo");
+}
+
+TEST_F(ReplyActsTest, AOneOffClosingIsNotPartOfTheGoal) {
+  ReplyContext c = goal_question("toothpaste1");
+  EXPECT_EQ(acts(c, "shelf. oh and close the top drawer"), "goal (on toothpaste1 shelf1) | command do (close drawer1)");
+  EXPECT_EQ(acts(c, "close both drawers"), "command do (close drawer1) (close drawer2)");
+  // Closing the goal's own place is part of the goal.
+  EXPECT_EQ(acts(c, "in the cabinet, and shut it"), "goal (and (in toothpaste1 cabinet1) (closed cabinet1))");
+}
+
+TEST_F(ReplyActsTest, TheTeachersQuestionsAreAnsweredNotTaught) {
+  ReplyContext c = goal_question("toothpaste1");
+  EXPECT_EQ(acts(c, "what's left?"), "command whats-left");
+  EXPECT_EQ(acts(c, "hmm, where did the hairbrush go?"), "command where hairbrush");
+  EXPECT_EQ(acts(c, "why did you close the hamper"), "command why");
+}
+
+TEST_F(ReplyActsTest, WordsThatCarryNothingAreSkippedWhenTheRestIsWhole) {
+  ReplyContext c = goal_question("towel1");
+  EXPECT_EQ(acts(c, "in the hamper lol"), "goal (in towel1 hamper1)");
+  ReplyActs read = read_acts(grounder(), world(), c, "ugh, it's soaking, in the hamper");
+  EXPECT_EQ(acts(c, "ugh, it's soaking, in the hamper"), "goal (in towel1 hamper1)");
+  // A slip of a name the meaning hangs on is asked back, not guessed.
+  EXPECT_EQ(acts(c, "in the hampr"), "unusable unknown-word hampr");
+}
+
+TEST_F(ReplyActsTest, TheRestAndClassesReachTheThingsStillToCome) {
+  ReplyContext c = goal_question("t-shirt1");
+  c.still_to_come = {id("jeans1"), id("socks1"), id("hair-dryer1")};
+  EXPECT_EQ(acts(c, "everything else goes in the hamper except the hair dryer"),
+            "goal (in t-shirt1 hamper1); also (in jeans1 hamper1); also (in socks1 hamper1)");
+  // "same again" with nothing given yet is asked back, not guessed.
+  EXPECT_EQ(acts(c, "same again"), "unusable");
+}
+
+}  // namespace
+}  // namespace apprentice::language
+
+namespace apprentice::language {
+namespace {
+
+TEST_F(ReplyActsTest, LeavingAndAskingWhatToSayAreCommands) {
+  ReplyContext c = goal_question("towel1");
+  EXPECT_EQ(acts(c, "ok I have to go, stop for now"), "command quit");
+  EXPECT_EQ(acts(c, "ok im done for today, stop"), "command quit");
+  EXPECT_EQ(acts(c, "um not sure, what kinds of things can you learn?"), "command help");
+  // Not a question about the agent's abilities.
+  EXPECT_NE(acts(c, "what did you do with the towels?"), "command help");
+  // "done for today" at the task's step ends the task, not the session.
+  ReplyContext step;
+  step.asked = Asked::kTaskStep;
+  EXPECT_NE(acts(step, "done for today"), "command quit");
+}
+
+}  // namespace
+}  // namespace apprentice::language
+
+namespace apprentice::language {
+namespace {
+
+TEST_F(ReplyActsTest, ATasksPlaceIsTheRoomNeverAFiller) {
+  ReplyContext task;
+  task.asked = Asked::kTask;
+  EXPECT_EQ(acts(task, "can you tidy up in here? I just showered and it's a disaster"), "task tidy bathroom");
+  EXPECT_EQ(acts(task, "clean up the bathroom after my shower"), "task clean bathroom");
+  EXPECT_EQ(acts(task, "ugh, the bathroom's a total mess. can you tidy it up for me?"), "task tidy bathroom");
+}
+
+TEST_F(ReplyActsTest, TakingEverythingOffAPlaceClearsOrEmptiesIt) {
+  ReplyContext step;
+  step.asked = Asked::kTaskStep;
+  EXPECT_EQ(acts(step, "first get everything off the floor"), "subtask clear on floor1");
+  EXPECT_EQ(acts(step, "take all the stuff off the counter"), "subtask clear on counter1");
+  // A place that holds nothing is not a part of the task.
+  EXPECT_EQ(acts(step, "take everything out of the hamper"), "unusable");
+}
+
+}  // namespace
+}  // namespace apprentice::language
