@@ -8,7 +8,10 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "agent/concept_source.h"
 #include "agent/explanation.h"
+#include "agent/goal_proposals.h"
+#include "agent/understanding.h"
 #include "experiment/experiment.h"
 #include "experiment/runner.h"
 #include "instructor/terminal_instructor.h"
@@ -422,6 +425,15 @@ CommandResult run_knowledge(const KnowledgeOptions& options, const std::string& 
   int number = 0;
   for (const Rule& r : knowledge->rules.rules())
     out << "  " << ++number << ". " << explain_rule(*domain, r) << "\n     (" << explain_provenance(r.provenance) << ")\n";
+  // The classes the goals support (induced anew from them: forgetting a
+  // goal changes them), for things never taught.
+  Understanding understanding;
+  LexicalConcepts concepts(understanding.lexicon(), understanding.vectors());
+  std::vector<std::string> preferences = explain_preferences(*knowledge, concepts);
+  if (!preferences.empty()) {
+    out << "\nFor things I was never taught, I generalize:\n";
+    for (const std::string& line : preferences) out << "  " << line << "\n";
+  }
   return Outcome::kSuccess;
 }
 

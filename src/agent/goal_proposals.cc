@@ -152,4 +152,42 @@ std::string evidence_phrase(const World& world, std::span<const DestinationPropo
   return "";
 }
 
+std::string say_class_rule(const ClassRule& rule) {
+  std::string what = rule.class_name;
+  if (!rule.modifiers.empty()) what = join(rule.modifiers, " ") + (what.empty() ? " things" : " " + what);
+  if (what.empty()) what = rule.rest ? "everything else" : "everything";
+  else if (rule.rest) what = "other " + what;
+  std::string place = rule.destination.place.category;
+  for (auto p = rule.destination.place.properties.rbegin(); p != rule.destination.place.properties.rend(); ++p)
+    place = *p + " " + place;
+  std::string out = what + " " + (language::is_plural_category(what) ? "go " : "goes ") + rule.destination.relation +
+                    " the " + language::spoken_category(place);
+  for (const GoalTemplateLiteral& door : rule.destination.doors)
+    if (door.predicate == "closed" && door.positive) out += ", and the " + language::spoken_category(place) + " ends closed";
+  if (!rule.exceptions.empty()) {
+    std::vector<std::string> but;
+    for (const std::string& kind : rule.exceptions) but.push_back("the " + language::spoken_category(kind));
+    out += ", except " + language::list_phrase(but);
+  }
+  std::vector<std::string> from;
+  for (const std::string& kind : rule.evidence) from.push_back("the " + language::spoken_category(kind));
+  const int sure = static_cast<int>(rule.confidence * 100 + 0.5);
+  switch (rule.source) {
+    case RuleSource::kInduced:
+      out += ", from " + language::list_phrase(from) + " (induced from the examples, " + std::to_string(sure) + "% sure)";
+      break;
+    case RuleSource::kPerson: out += ", as said: \"" + rule.said + "\""; break;
+    case RuleSource::kLlm: out += ", as the language model summed up: \"" + rule.said + "\""; break;
+    case RuleSource::kFleet: out += ", as other robots learned"; break;
+  }
+  return out;
+}
+
+std::vector<std::string> explain_preferences(const Knowledge& knowledge, const ConceptSource& concepts) {
+  GoalProposer proposer(concepts, knowledge.goals.all());
+  std::vector<std::string> out;
+  for (const ClassRule& rule : proposer.all_induced()) out.push_back(say_class_rule(rule));
+  return out;
+}
+
 }  // namespace apprentice

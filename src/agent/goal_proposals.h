@@ -25,6 +25,7 @@
 #include "knowledge/decision.h"
 #include "knowledge/goal_memory.h"
 #include "knowledge/induction.h"
+#include "knowledge/store_engine.h"
 #include "knowledge/likeness.h"
 #include "world/goal.h"
 #include "world/scenario.h"
@@ -81,5 +82,16 @@ std::size_t place_count(const World& world, std::span<const ObjectId> away_from)
 // "like the banana and the apple", "as you said: fruits on the coffee
 // table", "as the language model placed it". "" when there is none.
 std::string evidence_phrase(const World& world, std::span<const DestinationProposal> support);
+
+// A class rule in English, with its evidence and source: "edible fruit
+// goes on the coffee table, from the banana and the apple (induced from the
+// examples, 83% sure)"; "other clothes go on the bed, as said: \"...\"".
+std::string say_class_rule(const ClassRule& rule);
+
+// What the agent generalizes from the goals in `knowledge`, one English
+// line per induced rule, scope by scope (the rules are induced anew from
+// the goals, so forgetting a goal changes them): what `apprentice
+// knowledge` shows.
+std::vector<std::string> explain_preferences(const Knowledge& knowledge, const ConceptSource& concepts);
 
 }  // namespace apprentice

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "agent/concept_source.h"
+#include "agent/goal_proposals.h"
 #include "common/paths.h"
 #include "knowledge/induction.h"
 
@@ -91,6 +92,30 @@ TEST_F(ConceptSourceTest, TheBananaAndTheAppleGiveFruitNotFood) {
   EXPECT_EQ(orange.front().destination, on("coffee-table"));
   auto bear = rule_proposals(rules, concepts_.profile("teddy bear"), RuleSource::kInduced);
   for (const DestinationProposal& p : bear) EXPECT_NE(p.destination, on("coffee-table"));
+}
+
+// What `apprentice knowledge` says of the goals taught: the class each
+// destination's examples support, in English, with its evidence; induced
+// anew from the goals, so a forgotten goal takes its evidence away.
+TEST_F(ConceptSourceTest, TheGeneralizationsAreSaidInEnglishWithTheirEvidence) {
+  Knowledge knowledge;
+  auto taught = [&](const std::string& kind, const Destination& d) {
+    GoalKnowledge g;
+    g.key = GoalKey{"tidy living room", "clear", kind, "cart"};
+    g.literals = destination_literals(d);
+    knowledge.goals.add(g);
+  };
+  taught("banana", on("coffee-table"));
+  taught("apple", on("coffee-table"));
+  taught("lego-brick", in("storage-box"));
+  taught("toy-car", in("storage-box"));
+  std::vector<std::string> lines = explain_preferences(knowledge, concepts_);
+  EXPECT_THAT(lines, ::testing::Contains(::testing::AllOf(
+                         ::testing::StartsWith("edible fruit goes on the coffee table, from the banana and the apple"),
+                         ::testing::HasSubstr("induced from the examples"))));
+  knowledge.goals.remove(GoalKey{"tidy living room", "clear", "apple", "cart"});
+  for (const std::string& line : explain_preferences(knowledge, concepts_))
+    EXPECT_THAT(line, ::testing::Not(::testing::HasSubstr("the apple")));
 }
 
 }  // namespace
