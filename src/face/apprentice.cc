@@ -295,7 +295,7 @@ Result<SessionReport> AgentSession::learn(Instructor& instructor) {
 }
 
 Result<SessionReport> AgentSession::perform(const std::string& task, const Scenario* elsewhere) {
-  const std::string holder = parts_->store_label.empty() ? "the agent" : parts_->store_label;
+  const std::string holder = parts_->store ? parts_->store->location() : std::string("the agent");
   if (auto missing = unknown_task(parts_->agent->knowledge(), task, holder)) return tl::unexpected(*missing);
   const Scenario& scenario = elsewhere != nullptr ? *elsewhere : parts_->scenario;
   Simulator simulator(scenario.world);
