@@ -9,7 +9,7 @@
 #include <thread>
 #include <vector>
 
-#include "knowledge/store.h"
+#include "knowledge/store_location.h"
 #include "knowledge/store_codec.h"
 #include "knowledge/store_creation.h"
 

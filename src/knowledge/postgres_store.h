@@ -20,7 +20,7 @@
 //
 // Credentials: a password comes from the URL, PGPASSWORD or PGPASSFILE, as
 // libpq reads them. No message names it: stores are named by the URL
-// without its password (scrub_store_location, knowledge/store.h).
+// without its password (scrub_store_location, knowledge/store_location.h).
 #pragma once
 
 #include <memory>

@@ -17,6 +17,7 @@
 #include <string_view>
 
 #include "knowledge/store_engine.h"
+#include "knowledge/store_location.h"
 #include "util/result.h"
 #include "world/domain.h"
 
@@ -90,15 +91,6 @@ struct KnowledgeCopy {
 // leaves `to` with a prefix of the copy, and running it again completes
 // it. Errors: those of open, load and each save.
 Result<KnowledgeCopy> copy_knowledge(const std::string& from, const std::string& to, const Domain& domain);
-
-// Whether `location` names a PostgreSQL database (postgresql:// or
-// postgres://) rather than an SQLite file.
-bool is_postgres_location(std::string_view location);
-
-// `location` as messages may show it: a PostgreSQL URL without the
-// password (user:password@ becomes user@, a password=... parameter is
-// dropped); a path as it is.
-std::string scrub_store_location(std::string_view location);
 
 // The knowledge in the store at `location`, read once and read-only (what
 // `experiment --knowledge-in` and the Python module's knowledge_in start

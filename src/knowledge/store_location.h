@@ -1,0 +1,20 @@
+// Where a knowledge store is, as a location string: an SQLite file's path
+// or a PostgreSQL URL. Apart from knowledge/store.h so that the engines can
+// name a store in messages without depending on the store that opens them.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace apprentice {
+
+// Whether `location` names a PostgreSQL database (postgresql:// or
+// postgres://) rather than an SQLite file.
+bool is_postgres_location(std::string_view location);
+
+// `location` as messages may show it: a PostgreSQL URL without the
+// password (user:password@ becomes user@, a password=... parameter is
+// dropped); a path as it is.
+std::string scrub_store_location(std::string_view location);
+
+}  // namespace apprentice
