@@ -161,7 +161,7 @@ CommandResult run_experiment(const ExperimentOptions& options, const std::string
         << scenario->goal_assertions().size() << " goal assertions; the floor (task structure and one goal per goal "
         << "type) is " << floor.instructions << " instructions, " << floor.words << " words";
     if (request.options.knowledge_in)
-      out << "; every condition starts from the knowledge in " << options.knowledge_in << " ("
+      out << "; every condition starts from the knowledge in " << scrub_store_location(options.knowledge_in) << " ("
           << request.options.knowledge_in->goals.size() << " goals, " << request.options.knowledge_in->rules.size() << " rules)";
     out << llm_sources(results);
     out << "\n" << format_results_table(results, scenario->reference == "table3") << "\n" << kTableLegend;
@@ -334,7 +334,7 @@ CommandResult run_run(const RunOptions& options, std::ostream& out) {
   if (!store) return tl::unexpected(store.error());
   auto knowledge = store->load(*scenario->world.domain);
   if (!knowledge) return tl::unexpected(knowledge.error());
-  if (auto missing = unknown_task(*knowledge, options.task, options.knowledge)) return tl::unexpected(*missing);
+  if (auto missing = unknown_task(*knowledge, options.task, store->location())) return tl::unexpected(*missing);
   AgentOptions agent_options;
   agent_options.condition = Condition{"knowledge-only", false, 0, false};
   TaskLearningAgent agent(agent_options, std::move(*knowledge), Understanding(), nullptr, nullptr);
@@ -373,12 +373,45 @@ CommandResult run_run(const RunOptions& options, std::ostream& out) {
   return (!measured || achieved == total) && report->help_needed.empty() ? Outcome::kSuccess : Outcome::kGoalNotReached;
 }
 
+namespace {
+
+// `knowledge export --to OTHER` and `knowledge import --from OTHER`.
+CommandResult copy_between_stores(const KnowledgeOptions& options, const Domain& domain, std::ostream& out) {
+  const bool exporting = options.action == "export";
+  const std::string& other = exporting ? options.to : options.from;
+  if (other.empty() || !(exporting ? options.from : options.to).empty())
+    return make_error(ErrorCode::kInvalidInput, "knowledge " + options.action + " takes " +
+                                                    (exporting ? "--to STORE, the store to copy into"
+                                                               : "--from STORE, the store to copy from"));
+  const std::string& from = exporting ? options.knowledge : other;
+  const std::string& to = exporting ? other : options.knowledge;
+  auto copied = copy_knowledge(from, to, domain);
+  if (!copied) return tl::unexpected(copied.error());
+  if (options.json) {
+    out << dump_json(nlohmann::json{{"from", scrub_store_location(from)}, {"to", scrub_store_location(to)},
+                                    {"tasks", copied->tasks}, {"goals", copied->goals}, {"rules", copied->rules}},
+                     2)
+        << "\n";
+    return Outcome::kSuccess;
+  }
+  out << "Copied " << language::count_phrase(static_cast<long long>(copied->tasks), "task") << ", "
+      << language::count_phrase(static_cast<long long>(copied->goals), "goal") << " and "
+      << language::count_phrase(static_cast<long long>(copied->rules), "rule") << " from " << scrub_store_location(from)
+      << " to " << scrub_store_location(to) << ".\n";
+  return Outcome::kSuccess;
+}
+
+}  // namespace
+
 CommandResult run_knowledge(const KnowledgeOptions& options, const std::string& program, std::ostream& out) {
   (void)program;
   std::filesystem::path domain_path =
       options.domain.empty() ? data_dir() / "domains" / "kitchen.pddl" : std::filesystem::path(options.domain);
   auto domain = read_domain_file(domain_path);
   if (!domain) return tl::unexpected(domain.error());
+  if (!options.action.empty()) return copy_between_stores(options, *domain, out);
+  if (!options.to.empty() || !options.from.empty())
+    return make_error(ErrorCode::kInvalidInput, "--to is for 'knowledge export' and --from for 'knowledge import'");
   auto store = KnowledgeStore::open(options.knowledge, StoreAccess::kReadOnly);
   if (!store) return tl::unexpected(store.error());
   auto knowledge = store->load(*domain);

@@ -68,6 +68,10 @@ struct RunOptions {
 CommandResult run_run(const RunOptions& options, std::ostream& out);
 
 struct KnowledgeOptions {
+  // "" (print what was learned), "export" (copy into `to`) or "import"
+  // (copy from `from`).
+  std::string action;
+  std::string to, from;
   std::string knowledge;
   std::string domain;  // empty: the shipped kitchen domain
   bool json = false;

@@ -290,7 +290,7 @@ int run(int argc, char** argv) {
   experiment_cmd->add_option("--transcript", experiment.transcript_dir, "Write each condition's dialogue to DIR/<condition>.txt");
   experiment_cmd->add_option("--knowledge-out", experiment.knowledge_out, "Keep each condition's knowledge in DIR/<condition>.sqlite");
   experiment_cmd->add_option("--knowledge-in", experiment.knowledge_in,
-                             "Start every condition from a copy of this knowledge store (never modified)");
+                             "Start every condition from a copy of this knowledge store, an SQLite file or postgresql://... (never modified)");
   experiment_cmd->add_option("--generalization", experiment.generalization, "Rule generalization: full or paper")
       ->capture_default_str();
   experiment_cmd->add_flag("--no-rules", experiment.no_rules, "Do not use learned policy rules");
@@ -308,7 +308,7 @@ int run(int argc, char** argv) {
   TeachOptions teach;
   auto* teach_cmd = app.add_subcommand("teach", "Teach the agent at the terminal: it asks, you answer");
   teach_cmd->add_option("--scenario", teach.scenario, "Scenario file (YAML)")->required();
-  teach_cmd->add_option("--knowledge", teach.knowledge, "Knowledge store to load and extend (SQLite)");
+  teach_cmd->add_option("--knowledge", teach.knowledge, "Knowledge store to load and extend: an SQLite file, or postgresql://USER@HOST:PORT/DB");
   teach_cmd->add_option("--condition", teach.condition, "Sources besides you: inst, inst+search4, inst+llm, ...")
       ->capture_default_str();
   teach_cmd->add_option("--generalization", teach.generalization, "Rule generalization: full or paper")
@@ -323,14 +323,20 @@ int run(int argc, char** argv) {
   RunOptions run_options;
   auto* run_cmd = app.add_subcommand("run", "Perform a learned task with learned knowledge alone");
   run_cmd->add_option("--scenario", run_options.scenario, "Scenario file (YAML)")->required();
-  run_cmd->add_option("--knowledge", run_options.knowledge, "Knowledge store (SQLite)")->required();
+  run_cmd->add_option("--knowledge", run_options.knowledge, "Knowledge store: an SQLite file, or postgresql://USER@HOST:PORT/DB")->required();
   run_cmd->add_option("--task", run_options.task, "Task name (default: the only one learned)");
   run_cmd->add_flag("--json", run_options.json, "Machine-readable output");
   on_run(run_cmd, [&] { result = run_run(run_options, std::cout); });
 
   KnowledgeOptions knowledge;
   auto* knowledge_cmd = app.add_subcommand("knowledge", "Print what was learned (tasks, goals, rules) in English, with where each came from");
-  knowledge_cmd->add_option("--knowledge", knowledge.knowledge, "Knowledge store (SQLite)")->required();
+  knowledge_cmd->add_option("action", knowledge.action,
+                            "export: copy the store into --to STORE; import: copy --from STORE into it (SQLite or "
+                            "PostgreSQL, either way)")
+      ->check(CLI::IsMember({"export", "import"}));
+  knowledge_cmd->add_option("--knowledge", knowledge.knowledge, "Knowledge store: an SQLite file, or postgresql://USER@HOST:PORT/DB")->required();
+  knowledge_cmd->add_option("--to", knowledge.to, "With export: the store to copy into (created if missing)");
+  knowledge_cmd->add_option("--from", knowledge.from, "With import: the store to copy from (only read)");
   knowledge_cmd->add_option("--domain", knowledge.domain, "PDDL domain the rules use (default: the kitchen)");
   knowledge_cmd->add_flag("--json", knowledge.json, "Machine-readable output");
   knowledge_cmd->add_flag("--pddl", knowledge.pddl, "Goals and rules in PDDL terms instead of English");

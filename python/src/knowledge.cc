@@ -14,8 +14,8 @@ std::string template_literal_text(const GoalTemplateLiteral& l) {
   return l.positive ? text : "(not " + text + ")";
 }
 
-// A store opened read-only: the file must exist and hold a store; nothing
-// is ever written to it.
+// A store opened read-only: the file (or PostgreSQL database, by its URL)
+// must exist and hold a store; nothing is ever written to it.
 struct StoreView : KnowledgeView {
   std::string path;
 };
@@ -29,19 +29,20 @@ StoreView open_store(const py::object& path_like, const py::object& domain_path_
   Result<StoreView> view = [&]() -> Result<StoreView> {
     py::gil_scoped_release release;
     std::error_code ec;
-    if (!std::filesystem::exists(path, ec))
+    const bool file = !is_postgres_location(path.string());
+    if (file && !std::filesystem::exists(path, ec))
       return make_error(ErrorCode::kNotFound, path.string() + ": no such knowledge store");
-    if (std::filesystem::file_size(path, ec) == 0)
+    if (file && std::filesystem::file_size(path, ec) == 0)
       return make_error(ErrorCode::kFailedPrecondition, path.string() + " is empty, not a knowledge store");
     auto domain = read_domain_file(domain_path);
     if (!domain) return tl::unexpected(domain.error());
-    auto store = KnowledgeStore::open(path);
+    auto store = KnowledgeStore::open(path, StoreAccess::kReadOnly);
     if (!store) return tl::unexpected(store.error());
     auto knowledge = store->load(*domain);
     if (!knowledge) return tl::unexpected(knowledge.error());
     StoreView out;
     static_cast<KnowledgeView&>(out) = view_of(*knowledge, *domain);
-    out.path = path.string();
+    out.path = store->location();
     return out;
   }();
   return unwrap(std::move(view));

@@ -2,6 +2,8 @@
 // learned, with where each came from, kept by one of two engines chosen by
 // the form of the location:
 //   - a path: an SQLite file, the embedded default (knowledge/sqlite_store.h);
+//   - a URL, postgresql://USER@HOST:PORT/DB or postgres://...: a PostgreSQL
+//     database a fleet of robots shares (knowledge/postgres_store.h).
 // Every engine keeps the promises of knowledge/store_engine.h: each piece
 // is written in its own transaction the moment it is learned or confirmed,
 // so killing the process loses nothing already confirmed; a store written
@@ -12,6 +14,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <string_view>
 
 #include "knowledge/store_engine.h"
 #include "util/result.h"
@@ -34,7 +37,9 @@ class KnowledgeStore {
   //   kDataLoss            damaged: SQLite's quick_check fails, or a table
   //                        is missing
   //   kIo                  in use by another process (store_engine.h); it
-  //                        cannot be created, opened or written
+  //                        cannot be created, opened or written; the
+  //                        PostgreSQL server cannot be reached
+  // Messages name a PostgreSQL store by its URL without the password.
   static Result<KnowledgeStore> open(const std::string& location, StoreAccess access = StoreAccess::kReadWrite);
 
   KnowledgeStore(KnowledgeStore&&) noexcept;
@@ -60,8 +65,10 @@ class KnowledgeStore {
   // number where a name belongs) is kDataLoss.
   Result<Knowledge> load(const Domain& domain) const { return engine_->load(domain); }
 
-  // Where the store is, as messages name it: the SQLite file's path.
+  // Where the store is, as messages name it: the SQLite file's path, or
+  // the PostgreSQL URL without its password.
   const std::filesystem::path& path() const { return location_; }
+  std::string location() const { return location_.string(); }
 
  private:
   KnowledgeStore(std::filesystem::path location, std::unique_ptr<StoreEngine> engine);
@@ -69,6 +76,30 @@ class KnowledgeStore {
   std::filesystem::path location_;
   std::unique_ptr<StoreEngine> engine_;
 };
+
+// How much copy_knowledge copied.
+struct KnowledgeCopy {
+  std::size_t tasks = 0, goals = 0, rules = 0;
+};
+
+// Copies everything in the store at `from` (opened read-only, left as it
+// was) into the store at `to` (created if missing), in the order it was
+// learned, each entry its own durable save: what `to` held stays, except
+// that a goal under the same key, or a task of the same name, is replaced
+// (a rule already there is kept). The engines may differ: this is how
+// knowledge moves between SQLite and PostgreSQL. Stopped part way, it
+// leaves `to` with a prefix of the copy, and running it again completes
+// it. Errors: those of open, load and each save.
+Result<KnowledgeCopy> copy_knowledge(const std::string& from, const std::string& to, const Domain& domain);
+
+// Whether `location` names a PostgreSQL database (postgresql:// or
+// postgres://) rather than an SQLite file.
+bool is_postgres_location(std::string_view location);
+
+// `location` as messages may show it: a PostgreSQL URL without the
+// password (user:password@ becomes user@, a password=... parameter is
+// dropped); a path as it is.
+std::string scrub_store_location(std::string_view location);
 
 // The knowledge in the store at `location`, read once and read-only (what
 // `experiment --knowledge-in` and the Python module's knowledge_in start

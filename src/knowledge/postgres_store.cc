@@ -1,0 +1,402 @@
+#include "knowledge/postgres_store.h"
+
+#include <libpq-fe.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <cstring>
+#include <optional>
+#include <thread>
+#include <vector>
+
+#include "knowledge/store.h"
+#include "knowledge/store_codec.h"
+#include "knowledge/store_creation.h"
+
+namespace apprentice {
+
+namespace {
+
+// Advisory lock keys: (class, hash of the schema). The class spells "appr".
+constexpr int kLockClass = 0x61707072;
+// Held inside the transaction that creates a store's tables.
+constexpr int kCreationLockClass = 0x61707073;
+// How long to wait after a lost connection before each new try: about 10 s
+// in all, longer than a PostgreSQL restart takes.
+constexpr int kReconnectDelaysMs[] = {100, 250, 500, 1000, 2000, 2000, 2000, 2000};
+// How many times one call makes its connection again before it gives up.
+constexpr int kMostReconnects = 3;
+
+using Texts = std::vector<std::string>;
+
+struct ResultDeleter {
+  void operator()(PGresult* r) const { PQclear(r); }
+};
+using PgResult = std::unique_ptr<PGresult, ResultDeleter>;
+struct ConnectionDeleter {
+  void operator()(PGconn* c) const { PQfinish(c); }
+};
+using PgConnection = std::unique_ptr<PGconn, ConnectionDeleter>;
+
+bool succeeded(const PGresult* r) {
+  const ExecStatusType status = r ? PQresultStatus(r) : PGRES_FATAL_ERROR;
+  return status == PGRES_COMMAND_OK || status == PGRES_TUPLES_OK;
+}
+
+// The first line of libpq's message, without its "ERROR:  " or "FATAL:  ",
+// with `secret` (the password) cut out wherever it appears.
+std::string one_line(const char* message, const std::string& secret) {
+  std::string text = message ? message : "";
+  while (!text.empty() && (text.front() == '\n' || text.front() == ' ')) text.erase(0, 1);
+  if (auto end = text.find('\n'); end != std::string::npos) text.resize(end);
+  for (const char* prefix : {"ERROR:  ", "FATAL:  "})
+    for (auto at = text.find(prefix); at != std::string::npos; at = text.find(prefix)) text.erase(at, std::strlen(prefix));
+  if (secret.size() >= 3)
+    for (auto at = text.find(secret); at != std::string::npos; at = text.find(secret, at))
+      text.replace(at, secret.size(), "***");
+  return text.empty() ? "no reason given" : text;
+}
+
+// What a failed statement means to the user, by its SQLSTATE.
+Error statement_error(const std::string& where, const PGresult* r, PGconn* connection, const std::string& secret) {
+  const char* state = r ? PQresultErrorField(r, PG_DIAG_SQLSTATE) : nullptr;
+  const std::string code = state ? state : "";
+  const std::string why = one_line(r ? PQresultErrorMessage(r) : PQerrorMessage(connection), secret);
+  if (code == "42P01" || code == "42703")
+    return Error{ErrorCode::kDataLoss, where + ": the knowledge store is damaged: a table or column is missing (" + why + ")"};
+  if (code == "53100") return Error{ErrorCode::kIo, where + ": the server's disk is full (" + why + ")"};
+  if (code == "25006") return Error{ErrorCode::kIo, where + ": the database is read-only (" + why + ")"};
+  if (code.rfind("08", 0) == 0 || (!state && PQstatus(connection) == CONNECTION_BAD))
+    return Error{ErrorCode::kIo, where + ": the connection to the PostgreSQL server was lost and could not be made again (" + why + ")"};
+  return Error{ErrorCode::kIo, where + ": " + why};
+}
+
+class PostgresStore final : public StoreEngine {
+ public:
+  PostgresStore(std::string url, std::string where, std::string secret, StoreAccess access)
+      : url_(std::move(url)), where_(std::move(where)), secret_(std::move(secret)), access_(access) {}
+
+  Status connect();
+  Status check_or_create_schema();
+  Status start_over();
+
+  Status save_goal(const GoalKnowledge& goal) override;
+  Status save_rule(const Domain& domain, const Rule& rule) override;
+  Status save_task(const TaskKnowledge& task) override;
+  Status remove_goal(const GoalKey& key) override;
+  Status remove_rule(const Domain& domain, const Rule& rule) override;
+  Status remove_task(const std::string& name) override;
+  Result<Knowledge> load(const Domain& domain) const override;
+
+ private:
+  PgResult run(const std::string& sql, const Texts& values = {}) const;
+  // Runs `sql`, which must succeed, or gives its error.
+  Status must(const std::string& sql, const Texts& values = {}) const;
+  Status take_session_lock() const;
+  // After a failure: whether the connection was lost and has been made again.
+  bool reconnected() const;
+  // One write, retried on a connection made again.
+  template <typename Parameters>
+  Status write(const char* sql, Parameters parameters);
+  Result<Knowledge> load_once(const Domain& domain) const;
+  Status check_schema() const;
+
+  // The URL as given (it may hold the password): for libpq only.
+  std::string url_;
+  // The store's name in messages: the URL without its password.
+  std::string where_;
+  std::string secret_;
+  StoreAccess access_;
+  PgConnection connection_;
+};
+
+PgResult PostgresStore::run(const std::string& sql, const Texts& values) const {
+  // Without parameters, the simple protocol: `sql` may be several statements.
+  if (values.empty()) return PgResult(PQexec(connection_.get(), sql.c_str()));
+  std::vector<const char*> pointers;
+  for (const std::string& v : values) pointers.push_back(v.c_str());
+  return PgResult(PQexecParams(connection_.get(), sql.c_str(), static_cast<int>(values.size()), nullptr,
+                               pointers.data(), nullptr, nullptr, 0));
+}
+
+Status PostgresStore::must(const std::string& sql, const Texts& values) const {
+  PgResult r = run(sql, values);
+  if (succeeded(r.get())) return {};
+  return tl::unexpected(statement_error(where_, r.get(), connection_.get(), secret_));
+}
+
+Status PostgresStore::take_session_lock() const {
+  // Durable once a statement returns, whatever the server's default; a
+  // reader writes nothing.
+  if (auto s = must("SET synchronous_commit = on"); !s) return s;
+  if (access_ == StoreAccess::kReadOnly)
+    if (auto s = must("SET default_transaction_read_only = on"); !s) return s;
+  const bool exclusive = access_ == StoreAccess::kFresh;
+  PgResult locked = run(std::string("SELECT ") + (exclusive ? "pg_try_advisory_lock" : "pg_try_advisory_lock_shared") +
+                        "($1::int, hashtext(coalesce(current_schema(), '')))",
+                        {std::to_string(kLockClass)});
+  if (!succeeded(locked.get())) return tl::unexpected(statement_error(where_, locked.get(), connection_.get(), secret_));
+  if (std::string(PQgetvalue(locked.get(), 0, 0)) == "t") return {};
+  return make_error(ErrorCode::kIo,
+                    where_ + ": the knowledge store is in use by another process" +
+                        (exclusive ? "; an experiment starts a store over only when nobody else has it open. Wait for "
+                                     "the other process, or choose another store."
+                                   : ", which is starting it over (experiment --knowledge-out); wait until it finishes."));
+}
+
+Status PostgresStore::connect() {
+  // connect_timeout first, so that one in the URL overrides it.
+  const char* keys[] = {"connect_timeout", "fallback_application_name", "dbname", nullptr};
+  const char* values[] = {"5", "apprentice", url_.c_str(), nullptr};
+  connection_.reset(PQconnectdbParams(keys, values, 1));
+  if (!connection_) return make_error(ErrorCode::kIo, where_ + ": out of memory connecting to PostgreSQL");
+  if (PQstatus(connection_.get()) != CONNECTION_OK) {
+    const char* host = PQhost(connection_.get());
+    const char* port = PQport(connection_.get());
+    const char* db = PQdb(connection_.get());
+    const std::string server = std::string(host ? host : "") + ":" + (port ? port : "") + "/" + (db ? db : "");
+    const std::string why = one_line(PQerrorMessage(connection_.get()), secret_);
+    if (why.find("database \"") != std::string::npos && why.find("does not exist") != std::string::npos)
+      return make_error(ErrorCode::kNotFound, server + ": no such database on the PostgreSQL server (" + why +
+                                                  "); create it first, for example with createdb");
+    return make_error(ErrorCode::kIo, server + ": cannot connect to the PostgreSQL server of the knowledge store (" + why + ")");
+  }
+  return take_session_lock();
+}
+
+bool PostgresStore::reconnected() const {
+  if (PQstatus(connection_.get()) != CONNECTION_BAD) return false;
+  for (int delay : kReconnectDelaysMs) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(delay));
+    PQreset(connection_.get());
+    if (PQstatus(connection_.get()) == CONNECTION_OK) return take_session_lock().has_value();
+  }
+  return false;
+}
+
+// The columns load() reads: a store without them is damaged.
+constexpr const char* kTasksQuery = "SELECT name, structure FROM tasks ORDER BY name";
+constexpr const char* kGoalsQuery = "SELECT task, subtask, category, place, literals, object, source FROM goals ORDER BY id";
+constexpr const char* kRulesQuery = "SELECT body, object, source FROM rules ORDER BY id";
+
+constexpr const char* kSchema =
+    "CREATE TABLE meta(key TEXT PRIMARY KEY, value TEXT NOT NULL);"
+    "CREATE TABLE goals(id BIGSERIAL PRIMARY KEY, task TEXT NOT NULL, subtask TEXT NOT NULL, category TEXT NOT NULL, "
+    "place TEXT NOT NULL, literals TEXT NOT NULL, object TEXT NOT NULL, source TEXT NOT NULL, "
+    "UNIQUE(task, subtask, category, place));"
+    "CREATE TABLE tasks(name TEXT PRIMARY KEY, structure TEXT NOT NULL);"
+    "CREATE TABLE rules(id BIGSERIAL PRIMARY KEY, signature TEXT NOT NULL UNIQUE, body TEXT NOT NULL, "
+    "object TEXT NOT NULL, source TEXT NOT NULL);";
+
+Status PostgresStore::check_or_create_schema() {
+  auto tables = [&]() -> Result<std::pair<bool, long>> {
+    PgResult r = run(
+        "SELECT count(*) FILTER (WHERE tablename = 'meta'), count(*) FROM pg_catalog.pg_tables "
+        "WHERE schemaname = current_schema()");
+    if (!succeeded(r.get())) return tl::unexpected(statement_error(where_, r.get(), connection_.get(), secret_));
+    return std::pair{std::string(PQgetvalue(r.get(), 0, 0)) != "0", std::strtol(PQgetvalue(r.get(), 0, 1), nullptr, 10)};
+  };
+  auto found = tables();
+  if (!found) return tl::unexpected(found.error());
+  auto foreign = [&] {
+    return make_error(ErrorCode::kFailedPrecondition,
+                      where_ + " is a PostgreSQL database of another program, not an apprentice knowledge store");
+  };
+  if (!found->first && found->second > 0) return foreign();
+  if (!found->first && access_ == StoreAccess::kReadOnly)
+    return make_error(ErrorCode::kNotFound, where_ + ": no such knowledge store (the database holds no tables)");
+  if (!found->first) {
+    if (auto s = must("BEGIN"); !s) return s;
+    auto created = [&]() -> Status {
+      if (auto s = must("SELECT pg_advisory_xact_lock($1::int, hashtext(coalesce(current_schema(), '')))",
+                        {std::to_string(kCreationLockClass)});
+          !s)
+        return s;
+      auto again = tables();
+      if (!again) return tl::unexpected(again.error());
+      if (again->first) return {};
+      if (again->second > 0) return foreign();
+      if (auto s = must(kSchema); !s) return s;
+      return must("INSERT INTO meta(key, value) VALUES ('format', $1), ('schema_version', $2)",
+                  {kKnowledgeFormatName, std::to_string(kKnowledgeSchemaVersion)});
+    }();
+    if (!created) {
+      (void)run("ROLLBACK");
+      return created;
+    }
+    if (auto s = must("COMMIT"); !s) return s;
+  }
+  return check_schema();
+}
+
+Status PostgresStore::check_schema() const {
+  PgResult meta = run("SELECT key, value FROM meta");
+  if (!succeeded(meta.get())) return tl::unexpected(statement_error(where_, meta.get(), connection_.get(), secret_));
+  std::string format, version;
+  for (int row = 0; row < PQntuples(meta.get()); ++row) {
+    const std::string key = PQgetvalue(meta.get(), row, 0);
+    if (key == "format") format = PQgetvalue(meta.get(), row, 1);
+    if (key == "schema_version") version = PQgetvalue(meta.get(), row, 1);
+  }
+  if (format != kKnowledgeFormatName)
+    return make_error(ErrorCode::kFailedPrecondition, where_ + " is not an apprentice knowledge store");
+  if (version != std::to_string(kKnowledgeSchemaVersion))
+    return make_error(ErrorCode::kFailedPrecondition,
+                      where_ + " was written with knowledge schema version " + version + "; this apprentice reads version " +
+                          std::to_string(kKnowledgeSchemaVersion) +
+                          ". Relearn into a new store, or use the apprentice version that wrote it.");
+  for (const char* query : {kTasksQuery, kGoalsQuery, kRulesQuery}) {
+    PgResult r = run(std::string(query) + " LIMIT 0");
+    if (succeeded(r.get())) continue;
+    Error e = statement_error(where_, r.get(), connection_.get(), secret_);
+    return tl::unexpected(e);
+  }
+  return {};
+}
+
+Status PostgresStore::start_over() {
+  return must("BEGIN; DELETE FROM goals; DELETE FROM tasks; DELETE FROM rules; COMMIT");
+}
+
+template <typename Parameters>
+Status PostgresStore::write(const char* sql, Parameters parameters) {
+  const Texts values = parameters();
+  for (int attempt = 0;; ++attempt) {
+    PgResult r = run(sql, values);
+    if (succeeded(r.get())) return {};
+    Error e = statement_error(where_, r.get(), connection_.get(), secret_);
+    if (attempt == kMostReconnects || !reconnected()) return tl::unexpected(e);
+  }
+}
+
+Status PostgresStore::save_goal(const GoalKnowledge& goal) {
+  // A goal saved again under its key is replaced and moves to the end, as
+  // SQLite's INSERT OR REPLACE does.
+  return write(
+      "INSERT INTO goals(task, subtask, category, place, literals, object, source) VALUES ($1, $2, $3, $4, $5, $6, $7) "
+      "ON CONFLICT (task, subtask, category, place) DO UPDATE SET literals = EXCLUDED.literals, object = "
+      "EXCLUDED.object, source = EXCLUDED.source, id = nextval(pg_get_serial_sequence('goals', 'id'))",
+      [&] {
+        return Texts{goal.key.task, goal.key.subtask, goal.key.category, goal.key.place,
+                     store_codec::encode_goal_literals(goal), goal.provenance.object, goal.provenance.source};
+      });
+}
+
+Status PostgresStore::save_rule(const Domain& domain, const Rule& rule) {
+  return write("INSERT INTO rules(signature, body, object, source) VALUES ($1, $2, $3, $4) ON CONFLICT (signature) DO NOTHING",
+               [&] {
+                 return Texts{rule_signature(domain, rule), store_codec::encode_rule(domain, rule), rule.provenance.object,
+                              rule.provenance.source};
+               });
+}
+
+Status PostgresStore::save_task(const TaskKnowledge& task) {
+  return write("INSERT INTO tasks(name, structure) VALUES ($1, $2) ON CONFLICT (name) DO UPDATE SET structure = EXCLUDED.structure",
+               [&] { return Texts{task.name, store_codec::encode_subtasks(task)}; });
+}
+
+Status PostgresStore::remove_goal(const GoalKey& key) {
+  return write("DELETE FROM goals WHERE task = $1 AND subtask = $2 AND category = $3 AND place = $4",
+               [&] { return Texts{key.task, key.subtask, key.category, key.place}; });
+}
+
+Status PostgresStore::remove_rule(const Domain& domain, const Rule& rule) {
+  return write("DELETE FROM rules WHERE signature = $1", [&] { return Texts{rule_signature(domain, rule)}; });
+}
+
+Status PostgresStore::remove_task(const std::string& name) {
+  return write("DELETE FROM tasks WHERE name = $1", [&] { return Texts{name}; });
+}
+
+Result<Knowledge> PostgresStore::load(const Domain& domain) const {
+  for (int attempt = 0;; ++attempt) {
+    auto knowledge = load_once(domain);
+    if (knowledge || knowledge.error().code != ErrorCode::kIo || attempt == kMostReconnects || !reconnected())
+      return knowledge;
+  }
+}
+
+Result<Knowledge> PostgresStore::load_once(const Domain& domain) const {
+  auto located = [&](const Error& error) { return tl::unexpected(prefix_error(error, where_)); };
+  auto failed = [&](const PgResult& r) {
+    Error e = statement_error(where_, r.get(), connection_.get(), secret_);
+    (void)run("ROLLBACK");
+    return tl::unexpected(e);
+  };
+  // The text of a cell, or the entry's error.
+  auto text = [](const PGresult* r, int row, int column, const std::string& entry) -> Result<std::string> {
+    if (PQgetisnull(r, row, column)) return tl::unexpected(store_codec::unreadable(entry, "no value"));
+    return std::string(PQgetvalue(r, row, column), static_cast<std::size_t>(PQgetlength(r, row, column)));
+  };
+  // One transaction: a consistent snapshot while writers go on.
+  if (PgResult begin = run("BEGIN ISOLATION LEVEL REPEATABLE READ READ ONLY"); !succeeded(begin.get())) return failed(begin);
+  PgResult tasks = run(kTasksQuery);
+  if (!succeeded(tasks.get())) return failed(tasks);
+  PgResult goals = run(kGoalsQuery);
+  if (!succeeded(goals.get())) return failed(goals);
+  PgResult rules = run(kRulesQuery);
+  if (!succeeded(rules.get())) return failed(rules);
+  (void)run("COMMIT");
+  Knowledge knowledge;
+  for (int row = 0; row < PQntuples(tasks.get()); ++row) {
+    const std::string name = PQgetvalue(tasks.get(), row, 0);
+    auto structure = text(tasks.get(), row, 1, store_codec::task_entry(name));
+    if (!structure) return located(structure.error());
+    auto task = store_codec::decode_task(name, *structure);
+    if (!task) return located(task.error());
+    knowledge.tasks.push_back(std::move(*task));
+  }
+  const PGresult* g = goals.get();
+  for (int row = 0; row < PQntuples(g); ++row) {
+    GoalKey key{PQgetvalue(g, row, 0), PQgetvalue(g, row, 1), PQgetvalue(g, row, 2), PQgetvalue(g, row, 3)};
+    auto literals = text(g, row, 4, store_codec::goal_entry(key));
+    if (!literals) return located(literals.error());
+    auto goal = store_codec::decode_goal(domain, std::move(key), *literals, Provenance{PQgetvalue(g, row, 5), PQgetvalue(g, row, 6)});
+    if (!goal) return located(goal.error());
+    knowledge.goals.add(std::move(*goal));
+  }
+  const PGresult* r = rules.get();
+  for (int row = 0; row < PQntuples(r); ++row) {
+    auto body = text(r, row, 0, store_codec::kRuleEntry);
+    if (!body) return located(body.error());
+    auto rule = store_codec::decode_rule(domain, *body, Provenance{PQgetvalue(r, row, 1), PQgetvalue(r, row, 2)});
+    if (!rule) return located(rule.error());
+    knowledge.rules.add(domain, std::move(*rule));
+  }
+  return knowledge;
+}
+
+// The password the URL gives, if any (to keep it out of messages);
+// nullopt if libpq cannot read the URL (its reason may quote the URL, so it
+// is not passed on).
+std::optional<std::string> password_in(const std::string& url) {
+  char* error = nullptr;
+  PQconninfoOption* options = PQconninfoParse(url.c_str(), &error);
+  if (!options) {
+    PQfreemem(error);
+    return std::nullopt;
+  }
+  std::string password;
+  for (PQconninfoOption* o = options; o->keyword; ++o)
+    if (std::strcmp(o->keyword, "password") == 0 && o->val) password = o->val;
+  PQconninfoFree(options);
+  return password;
+}
+
+}  // namespace
+
+Result<std::unique_ptr<StoreEngine>> open_postgres_store(const std::string& url, StoreAccess access) {
+  const std::string where = scrub_store_location(url);
+  auto secret = password_in(url);
+  if (!secret)
+    return make_error(ErrorCode::kInvalidInput,
+                      where + ": not a PostgreSQL URL that can be read; the form is postgresql://USER@HOST:PORT/DATABASE");
+  auto store = std::make_unique<PostgresStore>(url, where, *secret, access);
+  if (auto s = store->connect(); !s) return tl::unexpected(s.error());
+  if (auto s = store->check_or_create_schema(); !s) return tl::unexpected(s.error());
+  if (access == StoreAccess::kFresh)
+    if (auto s = store->start_over(); !s) return tl::unexpected(s.error());
+  return std::unique_ptr<StoreEngine>(std::move(store));
+}
+
+}  // namespace apprentice
