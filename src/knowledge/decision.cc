@@ -56,6 +56,16 @@ std::string_view proposal_source_name(ProposalSource source) {
   return "similarity";
 }
 
+ProposalSource proposal_source_of(RuleSource source) {
+  switch (source) {
+    case RuleSource::kInduced: return ProposalSource::kInducedRule;
+    case RuleSource::kPerson: return ProposalSource::kPersonRule;
+    case RuleSource::kLlm: return ProposalSource::kLlmRule;
+    case RuleSource::kFleet: return ProposalSource::kFleet;
+  }
+  return ProposalSource::kInducedRule;
+}
+
 double DecisionPolicy::weight(ProposalSource source) const {
   auto found = weights.find(source);
   return found == weights.end() ? 1.0 : found->second;

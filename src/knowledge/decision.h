@@ -40,6 +40,9 @@ enum class ProposalSource {
 // "memory", "similarity", "analogy", "induced rule", "person's rule", "llm placement",
 // "llm summary", "fleet".
 std::string_view proposal_source_name(ProposalSource source);
+// The source a class rule's proposals come from: induced, the person's, the
+// LLM's summary, the fleet's.
+ProposalSource proposal_source_of(RuleSource source);
 
 struct DestinationProposal {
   Destination destination;

@@ -222,10 +222,7 @@ std::vector<DestinationProposal> rule_proposals(std::span<const ClassRule> rules
     // its strongest rule is of its class (one destination alone is not
     // certain).
     p.confidence = s.score / total * strongest->confidence;
-    p.source = source == RuleSource::kPerson ? ProposalSource::kPersonRule
-               : source == RuleSource::kLlm  ? ProposalSource::kLlmRule
-               : source == RuleSource::kFleet ? ProposalSource::kFleet
-                                              : ProposalSource::kInducedRule;
+    p.source = proposal_source_of(source);
     p.rule = *strongest;
     p.evidence = strongest->evidence;
     p.reason = format_class_rule(*strongest);

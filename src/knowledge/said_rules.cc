@@ -101,10 +101,7 @@ std::vector<DestinationProposal> said_rule_proposals(std::span<const ClassRule> 
     DestinationProposal p;
     p.destination = rule.destination;
     p.confidence = share * rule.confidence;
-    p.source = source == RuleSource::kPerson ? ProposalSource::kPersonRule
-               : source == RuleSource::kLlm  ? ProposalSource::kLlmRule
-               : source == RuleSource::kFleet ? ProposalSource::kFleet
-                                              : ProposalSource::kInducedRule;
+    p.source = proposal_source_of(source);
     p.rule = rule;
     p.evidence = rule.evidence;
     p.reason = format_class_rule(rule);
