@@ -192,8 +192,9 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
       report_.analogies.push_back("took the goal of the " + top.evidence.front() + " for " + describe_object(object) +
                                   ", " + how);
     else
-      report_.analogies.push_back("decided that " + describe_object(object) + " goes " +
-                                  format_destination(*decision.destination) + as + ", " + how);
+      report_.analogies.push_back("decided that " +
+                                  language::goal_outcome(w, object, *goal, language::spoken_name_and_location(w, object)) +
+                                  as + " (" + w.universe->name(object) + ", " + how + ")");
     if (learning_) {
       std::string source = by_analogy ? top.reason : "decision: " + top.reason;
       if (decision.kind == Decision::Kind::kConfirm) source += " (confirmed)";

@@ -236,7 +236,7 @@ TEST(TransferInTheAgent, PerformsTheRenamedKitchenWithTheKitchensKnowledge) {
   EXPECT_TRUE(saltines->achieved);
   EXPECT_EQ(saltines->goal, "(and (in saltines1 larder1) (closed larder1))");
   EXPECT_GE(saltines->belief, default_decision_policy().act_at);
-  EXPECT_THAT(report->analogies, ::testing::Contains(HasSubstr("saltines1 (saltines) goes in the larder")));
+  EXPECT_THAT(report->analogies, ::testing::Contains(HasSubstr("decided that the saltines on the sideboard go in the larder, and the larder ends closed, like")));
   // The cream is like the half-and-half (WordNet: the refrigerator) and
   // like the granola bars (the examples' classes: the larder): in doubt, it
   // is left as needing help, saying what it might do.
