@@ -1,4 +1,5 @@
 #include "cmd_agent.h"
+#include "cmd_rules.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -234,14 +235,20 @@ CommandResult copy_between_stores(const KnowledgeOptions& options, const Domain&
   if (!copied) return tl::unexpected(copied.error());
   if (options.json) {
     out << dump_json(nlohmann::json{{"from", scrub_store_location(from)}, {"to", scrub_store_location(to)},
-                                    {"tasks", copied->tasks}, {"goals", copied->goals}, {"rules", copied->rules}},
+                                    {"tasks", copied->tasks}, {"goals", copied->goals}, {"rules", copied->rules},
+                                    {"class_rules", copied->class_rules}, {"forgotten_rules", copied->forgotten_rules}},
                      2)
         << "\n";
     return Outcome::kSuccess;
   }
   out << "Copied " << language::count_phrase(static_cast<long long>(copied->tasks), "task") << ", "
       << language::count_phrase(static_cast<long long>(copied->goals), "goal") << " and "
-      << language::count_phrase(static_cast<long long>(copied->rules), "rule") << " from " << scrub_store_location(from)
+      << language::count_phrase(static_cast<long long>(copied->rules), "rule");
+  if (copied->class_rules + copied->forgotten_rules > 0)
+    out << " (and " << language::count_phrase(static_cast<long long>(copied->class_rules), "rule")
+        << " about classes of things, and " << language::count_phrase(static_cast<long long>(copied->forgotten_rules), "rule")
+        << " forgotten)";
+  out << " from " << scrub_store_location(from)
       << " to " << scrub_store_location(to) << ".\n";
   return Outcome::kSuccess;
 }
@@ -254,6 +261,9 @@ CommandResult run_knowledge(const KnowledgeOptions& options, const std::string& 
       options.domain.empty() ? data_dir() / "domains" / "kitchen.pddl" : std::filesystem::path(options.domain);
   auto domain = read_domain_file(domain_path);
   if (!domain) return tl::unexpected(domain.error());
+  if (options.action == "forget") return forget_class_rules(options, *domain, out);
+  if (!options.what.empty())
+    return make_error(ErrorCode::kInvalidInput, "only 'knowledge forget' takes words after it: " + join(options.what, " "));
   if (!options.action.empty()) return copy_between_stores(options, *domain, out);
   if (!options.to.empty() || !options.from.empty())
     return make_error(ErrorCode::kInvalidInput, "--to is for 'knowledge export' and --from for 'knowledge import'");
@@ -273,7 +283,11 @@ CommandResult run_knowledge(const KnowledgeOptions& options, const std::string& 
       goals.push_back({{"text", format_goal_knowledge(g)}, {"object", g.provenance.object}, {"source", g.provenance.source}});
     for (const Rule& r : knowledge->rules.rules())
       rules.push_back({{"signature", rule_signature(*domain, r)}, {"object", r.provenance.object}, {"source", r.provenance.source}});
-    out << dump_json(nlohmann::json{{"tasks", tasks}, {"goals", goals}, {"rules", rules}}, 2) << "\n";
+    Understanding understanding;
+    LexicalConcepts concepts(understanding.lexicon(), understanding.vectors());
+    nlohmann::json all{{"tasks", tasks}, {"goals", goals}, {"rules", rules}};
+    all.update(class_rules_json(*knowledge, concepts));
+    out << dump_json(all, 2) << "\n";
     return Outcome::kSuccess;
   }
   if (options.pddl) {
@@ -290,7 +304,8 @@ CommandResult run_knowledge(const KnowledgeOptions& options, const std::string& 
       out << format_rule(*domain, r) << "  (learned on " << r.provenance.object << " from " << r.provenance.source << ")\n\n";
     return Outcome::kSuccess;
   }
-  if (knowledge->tasks.empty() && knowledge->goals.size() == 0 && knowledge->rules.size() == 0) {
+  if (knowledge->tasks.empty() && knowledge->goals.size() == 0 && knowledge->rules.size() == 0 &&
+      knowledge->class_rules.empty() && knowledge->forgotten_rules.empty()) {
     out << "Nothing has been learned yet.\n";
     return Outcome::kSuccess;
   }
@@ -303,15 +318,12 @@ CommandResult run_knowledge(const KnowledgeOptions& options, const std::string& 
   int number = 0;
   for (const Rule& r : knowledge->rules.rules())
     out << "  " << ++number << ". " << explain_rule(*domain, r) << "\n     (" << explain_provenance(r.provenance) << ")\n";
-  // The classes the goals support (induced anew from them: forgetting a
-  // goal changes them), for things never taught.
+  // The classes a person said and the goals support, for things never
+  // taught (induced anew from the goals: forgetting a goal changes them),
+  // and the rules forgotten.
   Understanding understanding;
   LexicalConcepts concepts(understanding.lexicon(), understanding.vectors());
-  std::vector<std::string> preferences = explain_preferences(*knowledge, concepts);
-  if (!preferences.empty()) {
-    out << "\nFor things I was never taught, I generalize:\n";
-    for (const std::string& line : preferences) out << "  " << line << "\n";
-  }
+  print_class_rules(*knowledge, concepts, out);
   return Outcome::kSuccess;
 }
 

@@ -70,7 +70,9 @@ CommandResult run_run(const RunOptions& options, std::ostream& out);
 struct KnowledgeOptions {
   // "" (print what was learned), "export" (copy into `to`) or "import"
   // (copy from `from`).
+  // "forget": forget the class rule `what` names, for good.
   std::string action;
+  std::vector<std::string> what;
   std::string to, from;
   std::string knowledge;
   std::string domain;  // empty: the shipped kitchen domain

@@ -372,8 +372,11 @@ int run(int argc, char** argv) {
   auto* knowledge_cmd = app.add_subcommand("knowledge", "Print what was learned (tasks, goals, rules) in English, with where each came from");
   knowledge_cmd->add_option("action", knowledge.action,
                             "export: copy the store into --to STORE; import: copy --from STORE into it (SQLite or "
-                            "PostgreSQL, either way)")
-      ->check(CLI::IsMember({"export", "import"}));
+                            "PostgreSQL, either way); forget WHAT: forget the rule about WHAT (\"fruit\", \"fruit on "
+                            "the coffee table\"), for good")
+      ->check(CLI::IsMember({"export", "import", "forget"}));
+  knowledge_cmd->add_option("what", knowledge.what, "With forget: what the rule is about, and where it sends things if "
+                                                    "several rules are about it");
   knowledge_cmd->add_option("--knowledge", knowledge.knowledge, "Knowledge store: an SQLite file, or postgresql://USER@HOST:PORT/DB")->required();
   knowledge_cmd->add_option("--to", knowledge.to, "With export: the store to copy into (created if missing)");
   knowledge_cmd->add_option("--from", knowledge.from, "With import: the store to copy from (only read)");

@@ -17,6 +17,7 @@ import os as _os
 
 from ._apprentice import (  # noqa: F401  (re-exported)
     Agent,
+    ClassRule,
     Error,
     Goal,
     Knowledge,
@@ -30,13 +31,14 @@ from ._apprentice import (  # noqa: F401  (re-exported)
     TaskKnowledge,
     __version__,
     condition_names,
+    forget_rule,
     paper_row,
 )
 from ._apprentice import _experiment_json
 
 __all__ = [
-    "Agent", "Question", "Error", "Goal", "Knowledge", "KnowledgeStore", "LearnedSubtask", "Object", "Rule", "Scenario",
-    "Subtask", "Task", "TaskKnowledge", "condition_names", "experiment", "paper_row",
+    "Agent", "ClassRule", "Question", "Error", "Goal", "Knowledge", "KnowledgeStore", "LearnedSubtask", "Object", "Rule",
+    "Scenario", "Subtask", "Task", "TaskKnowledge", "condition_names", "experiment", "forget_rule", "paper_row",
 ]
 
 

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "face/apprentice.h"
+#include "knowledge/concepts.h"
 #include "knowledge/store.h"
 #include "util/result.h"
 #include "world/scenario.h"
@@ -69,6 +70,18 @@ struct RuleView {
   std::string signature;  // rule_signature: one line
   std::string learned_on, source;
 };
+// A class rule (apprentice.ClassRule): what it is about, where it sends
+// things, and why (agent/class_rule_knowledge.h).
+struct ClassRuleView {
+  std::string text;         // say_class_rule: the English of `apprentice knowledge`
+  std::string subject;      // "edible fruit", "other clothes"
+  std::string destination;  // "on the coffee table"
+  std::vector<std::string> evidence, exceptions;
+  std::string source;  // "induced", "person", "llm", "fleet"
+  std::string said;    // the sentence it was read from; "" when induced
+  double confidence = 0;
+  std::string task;  // where it holds; "" for any task
+};
 struct SubtaskKnowledgeView {
   std::string verb, relation, place;
 };
@@ -80,8 +93,11 @@ struct KnowledgeView {
   std::vector<TaskKnowledgeView> tasks;
   std::vector<GoalView> goals;
   std::vector<RuleView> rules;
+  // The class rules in use (a person's, and those the goals induce, when
+  // `concepts` is given; else those stored), and those forgotten.
+  std::vector<ClassRuleView> class_rules, forgotten_rules;
 };
-KnowledgeView view_of(const Knowledge& knowledge, const Domain& domain);
+KnowledgeView view_of(const Knowledge& knowledge, const Domain& domain, const ConceptSource* concepts = nullptr);
 
 void bind_errors(py::module_& m);
 void bind_scenario(py::module_& m);

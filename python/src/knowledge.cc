@@ -1,5 +1,9 @@
 // apprentice.Knowledge and apprentice.KnowledgeStore: learned goals, rules
 // and task structure as Python objects, read-only.
+#include "agent/class_rule_knowledge.h"
+#include "agent/concept_source.h"
+#include "agent/goal_proposals.h"
+#include "agent/understanding.h"
 #include "bindings.h"
 #include "world/pddl.h"
 
@@ -14,6 +18,46 @@ std::string template_literal_text(const GoalTemplateLiteral& l) {
   return l.positive ? text : "(not " + text + ")";
 }
 
+ClassRuleView class_rule_view(const ClassRule& rule) {
+  return ClassRuleView{say_class_rule(rule),
+                       rule_subject(rule),
+                       rule_destination(rule),
+                       rule.evidence,
+                       rule.exceptions,
+                       std::string(rule_source_name(rule.source)),
+                       rule.said,
+                       rule.confidence,
+                       rule.scope.task};
+}
+
+std::filesystem::path domain_path_of(const py::object& domain_path_like) {
+  py::object fspath = py::module_::import("os").attr("fspath");
+  return domain_path_like.is_none() ? data_dir() / "domains" / "kitchen.pddl"
+                                    : std::filesystem::path(py::str(fspath(domain_path_like)).cast<std::string>());
+}
+
+// apprentice.forget_rule: the one call of this module that writes a store.
+std::vector<ClassRuleView> forget_rule(const py::object& path_like, const std::string& what,
+                                       const py::object& domain_path_like) {
+  const std::string path = py::str(py::module_::import("os").attr("fspath")(path_like)).cast<std::string>();
+  const std::filesystem::path domain_path = domain_path_of(domain_path_like);
+  Result<std::vector<ClassRuleView>> forgotten = [&]() -> Result<std::vector<ClassRuleView>> {
+    py::gil_scoped_release release;
+    if (!is_postgres_location(path) && !std::filesystem::exists(path))
+      return make_error(ErrorCode::kNotFound, path + ": no such knowledge store");
+    auto domain = read_domain_file(domain_path);
+    if (!domain) return tl::unexpected(domain.error());
+    Understanding understanding;
+    LexicalConcepts concepts(understanding.lexicon(), understanding.vectors());
+    auto rules = forget_rules_named(path, *domain, what, concepts);
+    if (!rules) return tl::unexpected(rules.error());
+    std::vector<ClassRuleView> out;
+    for (const ClassRule& rule : *rules) out.push_back(class_rule_view(rule));
+    return out;
+  }();
+  return unwrap(std::move(forgotten));
+}
+
 // A store opened read-only: the file (or PostgreSQL database, by its URL)
 // must exist and hold a store; nothing is ever written to it.
 struct StoreView : KnowledgeView {
@@ -23,9 +67,7 @@ struct StoreView : KnowledgeView {
 StoreView open_store(const py::object& path_like, const py::object& domain_path_like) {
   py::object fspath = py::module_::import("os").attr("fspath");
   std::filesystem::path path = py::str(fspath(path_like)).cast<std::string>();
-  std::filesystem::path domain_path = domain_path_like.is_none()
-                                          ? data_dir() / "domains" / "kitchen.pddl"
-                                          : std::filesystem::path(py::str(fspath(domain_path_like)).cast<std::string>());
+  std::filesystem::path domain_path = domain_path_of(domain_path_like);
   Result<StoreView> view = [&]() -> Result<StoreView> {
     py::gil_scoped_release release;
     std::error_code ec;
@@ -41,7 +83,11 @@ StoreView open_store(const py::object& path_like, const py::object& domain_path_
     auto knowledge = store->load(*domain);
     if (!knowledge) return tl::unexpected(knowledge.error());
     StoreView out;
-    static_cast<KnowledgeView&>(out) = view_of(*knowledge, *domain);
+    // The class rules as `apprentice knowledge` lists them: induced anew
+    // from the goals (WordNet and the word vectors), and a person's.
+    Understanding understanding;
+    LexicalConcepts concepts(understanding.lexicon(), understanding.vectors());
+    static_cast<KnowledgeView&>(out) = view_of(*knowledge, *domain, &concepts);
     out.path = store->location();
     return out;
   }();
@@ -55,8 +101,15 @@ std::string count_text(const KnowledgeView& k) {
 
 }  // namespace
 
-KnowledgeView view_of(const Knowledge& knowledge, const Domain& domain) {
+KnowledgeView view_of(const Knowledge& knowledge, const Domain& domain, const ConceptSource* concepts) {
   KnowledgeView out;
+  if (concepts != nullptr) {
+    for (const ClassRule& rule : class_rules_in_use(knowledge, *concepts)) out.class_rules.push_back(class_rule_view(rule));
+  } else {
+    for (const ClassRule& rule : knowledge.class_rules.all())
+      if (!knowledge.forgot(rule)) out.class_rules.push_back(class_rule_view(rule));
+  }
+  for (const ClassRule& rule : knowledge.forgotten_rules.all()) out.forgotten_rules.push_back(class_rule_view(rule));
   for (const TaskKnowledge& t : knowledge.tasks) {
     TaskKnowledgeView task{t.name, {}};
     for (const LearnedSubtask& s : t.subtasks) task.subtasks.push_back({s.verb, s.relation, s.place_category});
@@ -102,6 +155,28 @@ void bind_knowledge(py::module_& m) {
       .def_readonly("source", &RuleView::source)
       .def("__repr__", [](const RuleView& r) { return "Rule(" + r.signature + ")"; });
 
+  py::class_<ClassRuleView>(m, "ClassRule",
+                            "A rule about a class of things: `subject` goes `destination`, from `evidence` (the kinds "
+                            "it was induced from or confirmed on), said by `source` ('induced', 'person', 'llm').")
+      .def_readonly("text", &ClassRuleView::text, "In English, as `apprentice knowledge` says it.")
+      .def_readonly("subject", &ClassRuleView::subject, "What it is about: 'edible fruit', 'other clothes'.")
+      .def_readonly("destination", &ClassRuleView::destination, "Where it sends things: 'on the coffee table'.")
+      .def_readonly("evidence", &ClassRuleView::evidence)
+      .def_readonly("exceptions", &ClassRuleView::exceptions, "Kinds of the class that go elsewhere.")
+      .def_readonly("source", &ClassRuleView::source)
+      .def_readonly("said", &ClassRuleView::said, "The sentence it was read from; '' when induced.")
+      .def_readonly("confidence", &ClassRuleView::confidence, "How sure its source is, 0 to 1.")
+      .def_readonly("task", &ClassRuleView::task, "The task it holds for; '' for any.")
+      .def("__repr__", [](const ClassRuleView& r) {
+        return "ClassRule(" + r.subject + " " + r.destination + ", " + r.source + ")";
+      });
+
+  m.def("forget_rule", &forget_rule, py::arg("store"), py::arg("what"), py::arg("domain") = py::none(),
+        "Forgets, for good, the class rule `what` names in the knowledge store at `store` (what it is about, "
+        "optionally with where it sends things: 'fruit', 'fruit on the coffee table'), as `apprentice knowledge "
+        "forget` does: the store keeps it as forgotten, and the agent no longer uses it. Returns the rules "
+        "forgotten. Raises apprentice.Error: 'invalid input' when `what` names no rule, or rules that differ.");
+
   py::class_<SubtaskKnowledgeView>(m, "LearnedSubtask",
                                    "A step of a learned task: while an object is `relation` a `place`, `verb` it.")
       .def_readonly("verb", &SubtaskKnowledgeView::verb)
@@ -122,6 +197,9 @@ void bind_knowledge(py::module_& m) {
       .def_readonly("tasks", &KnowledgeView::tasks)
       .def_readonly("goals", &KnowledgeView::goals)
       .def_readonly("rules", &KnowledgeView::rules)
+      .def_readonly("class_rules", &KnowledgeView::class_rules,
+                    "The rules about classes of things in use, with their evidence (apprentice.ClassRule).")
+      .def_readonly("forgotten_rules", &KnowledgeView::forgotten_rules, "The class rules forgotten, never used.")
       .def("__repr__", [](const KnowledgeView& k) { return "<Knowledge: " + count_text(k) + ">"; });
 
   py::class_<StoreView, KnowledgeView>(

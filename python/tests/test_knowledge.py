@@ -73,3 +73,42 @@ def test_a_file_that_is_not_a_store_is_refused(tmp_path):
     empty.write_bytes(b"")
     with pytest.raises(apprentice.Error, match="empty"):
         apprentice.KnowledgeStore(empty)
+
+
+def test_class_rules_as_the_knowledge_command_says_them_and_forgetting_one(kitchen_store, tmp_path):
+    import json
+    import shutil
+    store_path = tmp_path / "copy.sqlite"
+    shutil.copy(kitchen_store, store_path)
+    store = apprentice.KnowledgeStore(store_path)
+    cli = json.loads(subprocess.run([str(BINARY), "knowledge", "--knowledge", str(store_path), "--json"],
+                                    check=True, capture_output=True, text=True).stdout)
+    assert [r.text for r in store.class_rules] == [r["text"] for r in cli["class_rules"]]
+    assert store.class_rules and not store.forgotten_rules
+    induced = [r for r in store.class_rules if r.source == "induced" and len(r.evidence) >= 2]
+    assert induced
+    rule = max(induced, key=lambda r: r.confidence)
+    assert 0 < rule.confidence <= 1
+    assert rule.text.startswith(rule.subject + " go")
+    assert rule.destination in rule.text
+    assert rule.said == "" and rule.task == "tidy kitchen"
+    assert repr(rule) == "ClassRule(%s %s, induced)" % (rule.subject, rule.destination)
+
+    forgotten = apprentice.forget_rule(store_path, rule.subject + " " + rule.destination)
+    assert [r.text for r in forgotten] == [rule.text]
+    again = apprentice.KnowledgeStore(store_path)
+    assert [r.text for r in again.forgotten_rules] == [rule.text]
+    assert rule.text not in [r.text for r in again.class_rules]
+    assert len(again.class_rules) == len(store.class_rules) - 1
+    cli = json.loads(subprocess.run([str(BINARY), "knowledge", "--knowledge", str(store_path), "--json"],
+                                    check=True, capture_output=True, text=True).stdout)
+    assert [r.text for r in again.class_rules] == [r["text"] for r in cli["class_rules"]]
+
+    with pytest.raises(apprentice.Error) as raised:
+        apprentice.forget_rule(store_path, "unicorns")
+    assert raised.value.code == "invalid input"
+    assert 'I hold no rule about "unicorns"' in str(raised.value)
+    with pytest.raises(apprentice.Error) as raised:
+        apprentice.forget_rule(tmp_path / "none.sqlite", "fruit")
+    assert raised.value.code == "not found"
+    assert not (tmp_path / "none.sqlite").exists()

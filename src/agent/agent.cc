@@ -14,6 +14,7 @@
 #include "agent/agent.h"
 
 #include <algorithm>
+#include <set>
 
 #include "agent/session.h"
 #include "language/narration.h"
@@ -21,6 +22,16 @@
 #include "util/text.h"
 
 namespace apprentice {
+
+namespace {
+
+std::set<std::string> forgotten_keys(const Knowledge& knowledge) {
+  std::set<std::string> keys;
+  for (const ClassRule& rule : knowledge.forgotten_rules.all()) keys.insert(class_rule_key(rule));
+  return keys;
+}
+
+}  // namespace
 
 TaskLearningAgent::TaskLearningAgent(AgentOptions options, Knowledge knowledge, Understanding understanding,
                                      KnowledgeStore* store, LlmAdvisor* llm)
@@ -48,9 +59,13 @@ TaskLearningAgent::Session::Session(TaskLearningAgent& agent, Simulator& simulat
     : agent_(agent), simulator_(simulator), dialogue_(dialogue), learning_(learning),
       transfer_(agent.knowledge_, simulator.world(), agent.understanding_.lexicon()),
       concepts_(agent.understanding_.lexicon(), agent.understanding_.vectors()),
-      proposer_(concepts_, transfer_.prior_goals()) {
+      proposer_(concepts_, transfer_.prior_goals(), forgotten_keys(agent.knowledge_)) {
   for (const CategoryMatch& m : transfer_.matches())
     report_.renamed.push_back("took the " + m.world + " for the " + m.learned + " (" + m.reason + ")");
+  // A person's rules said in earlier sessions hold here too (for the same
+  // task, or any task when said before one).
+  for (const ClassRule& rule : agent.knowledge_.class_rules.all())
+    if (rule.source == RuleSource::kPerson) said_rules_.add(rule);
 }
 
 std::string TaskLearningAgent::Session::describe_object(ObjectId object) const {
@@ -63,8 +78,14 @@ Result<AgentReport> TaskLearningAgent::Session::learn_task() {
     Step step = next_step();
     // An undo has put everything back as it was before the last lesson:
     // the loop goes on from there.
-    if (!step && step.error().error) return tl::unexpected(*step.error().error);
+    if (!step && step.error().error) {
+      // Stopped (quit, end of input): what was learned is kept, its
+      // induced rules too.
+      if (auto kept = keep_induced_rules_learned(); !kept) spdlog::warn("{}", kept.error().message);
+      return tl::unexpected(*step.error().error);
+    }
   }
+  if (auto kept = keep_induced_rules_learned(); !kept) return tl::unexpected(kept.error());
   report_.objects = progress_.objects;
   report_.goals_learned = progress_.goals_learned;
   report_.rules_learned = progress_.rules_learned;

@@ -6,6 +6,8 @@
 // that would work, and asks again).
 #include <algorithm>
 
+#include "agent/class_rule_knowledge.h"
+#include "agent/goal_proposals.h"
 #include "agent/session.h"
 #include "knowledge/goal_memory.h"
 #include "language/generation.h"
@@ -424,6 +426,9 @@ Status TaskLearningAgent::Session::forget(const std::string& kind) {
     for (const GoalKnowledge& g : agent_.knowledge_.goals.all())
       if (g.key.category == *category) keys.push_back(g.key);
   if (keys.empty()) {
+    auto rule = forget_rule_named(kind);
+    if (!rule) return tl::unexpected(rule.error());
+    if (*rule) return {};
     say("I have not learned where to put " +
             (category ? "the " + language::spoken_category(*category) : std::string(trim(kind))) +
             ", so there is nothing to forget.",
@@ -441,6 +446,38 @@ Status TaskLearningAgent::Session::forget(const std::string& kind) {
   say("I forgot where " + language::kind_goes(*category) + "; I will ask when I meet one.",
       Voice::kResponse);
   return {};
+}
+
+Result<bool> TaskLearningAgent::Session::forget_rule_named(const std::string& what) {
+  std::vector<ClassRule> in_use;
+  for (const ClassRule& rule : said_rules_.all())
+    if (rule.source == RuleSource::kPerson) in_use.push_back(rule);
+  for (const ClassRule& rule : proposer_.all_induced()) in_use.push_back(rule);
+  std::vector<ClassRule> named = rules_named(in_use, what);
+  if (named.empty()) return false;
+  std::vector<std::string> said;
+  for (const ClassRule& rule : named)
+    if (std::find(said.begin(), said.end(), say_class_rule(rule)) == said.end()) said.push_back(say_class_rule(rule));
+  if (said.size() > 1) {
+    std::vector<std::string> subjects;
+    for (const ClassRule& rule : named) subjects.push_back("\"forget " + rule_subject(rule) + " " + rule_destination(rule) + "\"");
+    say("I have several rules about " + std::string(trim(what)) + ": " + join(said, "; ") + ". Say which, for example " +
+            subjects.front() + ".",
+        Voice::kResponse);
+    return true;
+  }
+  for (const ClassRule& rule : named) {
+    if (auto s = forget_rule(agent_.knowledge_, agent_.store_, rule); !s) return tl::unexpected(s.error());
+    // An undo must not bring it back either.
+    for (Lesson& lesson : lessons_) {
+      lesson.knowledge.class_rules.remove(rule);
+      lesson.knowledge.forgotten_rules.add(rule);
+    }
+    said_rules_.remove(rule);
+    proposer_.forget(rule);
+  }
+  say("I forgot that " + said.front() + "; I will ask where such things go.", Voice::kResponse);
+  return true;
 }
 
 }  // namespace apprentice

@@ -2,6 +2,7 @@
 // (language/rule_reader.h), kept, read back.
 #include <algorithm>
 
+#include "agent/class_rule_knowledge.h"
 #include "agent/person_rule.h"
 #include "agent/session.h"
 #include "language/generation.h"
@@ -56,8 +57,10 @@ GoalScope TaskLearningAgent::Session::said_scope() const {
 
 void TaskLearningAgent::Session::hear_rule(const language::RuleReading& rule, const std::string& text) {
   rules_said_.push_back(text);
+  // A lesson of its own: "undo" takes the rule back.
+  begin_lesson(text);
   for (ClassRule& said : class_rules_of(world(), rule, RuleSource::kPerson, text, said_scope(), kPersonRuleConfidence))
-    said_rules_.add(std::move(said));
+    if (auto kept = store_class_rule(said); !kept) spdlog::warn("{}", kept.error().message);
   say(language::read_back_rule(world(), rule));
   if (!rule.not_understood.empty()) {
     std::vector<std::string> parts;
@@ -65,6 +68,27 @@ void TaskLearningAgent::Session::hear_rule(const language::RuleReading& rule, co
     say("I did not follow " + language::list_phrase(parts) + "; I will ask about those things when I come to them.");
   }
   spdlog::info("a person's rule: {}", language::read_back_rule(world(), rule));
+}
+
+Status TaskLearningAgent::Session::store_class_rule(const ClassRule& rule) {
+  said_rules_.add(rule);
+  agent_.knowledge_.class_rules.add(rule);
+  agent_.knowledge_.forgotten_rules.remove(rule);
+  if (!lessons_.empty()) {
+    StoreWrite write;
+    write.kind = StoreWrite::Kind::kClassRule;
+    write.class_rule = rule;
+    lessons_.back().writes.push_back(std::move(write));
+  }
+  if (!agent_.store_) return {};
+  return agent_.store_->save_class_rule(rule);
+}
+
+Status TaskLearningAgent::Session::keep_induced_rules_learned() {
+  // Without a store there is nothing to keep: the rules are induced anew
+  // from the goals whenever they are asked for.
+  if (!learning_ || !agent_.store_) return {};
+  return keep_induced_rules(agent_.knowledge_, agent_.store_, concepts_);
 }
 
 }  // namespace apprentice

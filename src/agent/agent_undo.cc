@@ -95,6 +95,8 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::undo() {
   Lesson lesson = std::move(lessons_.back());
   lessons_.pop_back();
   KnowledgeStore* store = agent_.store_;
+  for (const StoreWrite& write : lesson.writes)
+    if (write.kind == StoreWrite::Kind::kClassRule) said_rules_.remove(*write.class_rule);
   for (auto write = lesson.writes.rbegin(); store != nullptr && write != lesson.writes.rend(); ++write) {
     Status status;
     switch (write->kind) {
@@ -105,6 +107,7 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::undo() {
       case StoreWrite::Kind::kTask:
         status = write->previous_task ? store->save_task(*write->previous_task) : store->remove_task(write->task_name);
         break;
+      case StoreWrite::Kind::kClassRule: status = store->remove_class_rule(*write->class_rule); break;
     }
     if (!status) return stop(status.error());
   }

@@ -21,8 +21,8 @@ DecisionPolicy default_decision_policy() {
   return policy;
 }
 
-GoalProposer::GoalProposer(const ConceptSource& concepts, std::vector<GoalKnowledge> prior)
-    : concepts_(&concepts), prior_(std::move(prior)) {}
+GoalProposer::GoalProposer(const ConceptSource& concepts, std::vector<GoalKnowledge> prior, std::set<std::string> forgotten)
+    : concepts_(&concepts), prior_(std::move(prior)), forgotten_(std::move(forgotten)) {}
 
 std::vector<const GoalKnowledge*> GoalProposer::prior_for(const GoalKey& key) const {
   auto pick = [&](auto&& fits) {
@@ -68,7 +68,14 @@ const std::vector<ClassRule>& GoalProposer::induced_for(const GoalKey& key) cons
   if (auto known = induced_.find(scope); known != induced_.end()) return known->second;
   GoalScope where;
   if (!prior.empty()) where = GoalScope{prior.front()->key.task, prior.front()->key.subtask, prior.front()->key.place};
-  return induced_.emplace(scope, induce_rules(examples_for(key), where)).first->second;
+  std::vector<ClassRule> rules = induce_rules(examples_for(key), where);
+  std::erase_if(rules, [&](const ClassRule& rule) { return forgotten_.contains(class_rule_key(rule)); });
+  return induced_.emplace(scope, std::move(rules)).first->second;
+}
+
+void GoalProposer::forget(const ClassRule& rule) {
+  forgotten_.insert(class_rule_key(rule));
+  induced_.clear();
 }
 
 std::vector<ClassRule> GoalProposer::all_induced() const {

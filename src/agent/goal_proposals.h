@@ -17,6 +17,7 @@
 
 #include <map>
 #include <optional>
+#include <set>
 #include <span>
 #include <string>
 #include <vector>
@@ -40,8 +41,10 @@ DecisionPolicy default_decision_policy();
 class GoalProposer {
  public:
   // `concepts` must outlive this object; `prior` are the goals known when
-  // the session began, in the world's words.
-  GoalProposer(const ConceptSource& concepts, std::vector<GoalKnowledge> prior);
+  // the session began, in the world's words. Induced rules whose
+  // class_rule_key is in `forgotten` are never proposed (the person said
+  // to forget them).
+  GoalProposer(const ConceptSource& concepts, std::vector<GoalKnowledge> prior, std::set<std::string> forgotten = {});
 
   // The proposals of the similarity and induced-rule sources, and of
   // `said` (the person's and the LLM's rules), for a thing of `key`
@@ -57,6 +60,9 @@ class GoalProposer {
   // The rules induced from those examples (computed once per scope).
   const std::vector<ClassRule>& induced_for(const GoalKey& key) const;
 
+  // Never proposes `rule` (by class_rule_key) again.
+  void forget(const ClassRule& rule);
+
   // Every rule induced from the prior goals, scope by scope, for
   // `knowledge` and reports.
   std::vector<ClassRule> all_induced() const;
@@ -66,6 +72,7 @@ class GoalProposer {
 
   const ConceptSource* concepts_;
   std::vector<GoalKnowledge> prior_;
+  std::set<std::string> forgotten_;
   mutable std::map<std::string, std::vector<ClassRule>> induced_;  // by scope
 };
 

@@ -95,10 +95,11 @@ class TaskLearningAgent::Session {
   // it: the progress, knowledge and world before it, and the writes to the
   // store since.
   struct StoreWrite {
-    enum class Kind { kGoal, kRule, kTask } kind = Kind::kGoal;
+    enum class Kind { kGoal, kRule, kTask, kClassRule } kind = Kind::kGoal;
     GoalKey goal_key;
     std::optional<GoalKnowledge> previous_goal;
     std::optional<Rule> rule;
+    std::optional<ClassRule> class_rule;  // a person's rule, said in the lesson
     std::optional<TaskKnowledge> previous_task;
     std::string task_name;
   };
@@ -157,6 +158,10 @@ class TaskLearningAgent::Session {
   void help(const Question& question, const language::ReplyContext& context);
   void status(const Question& question);
   Status forget(const std::string& kind);
+  // "forget fruit" where no goal is known for such a kind: the rule about
+  // that class (agent/class_rule_knowledge.h), for good. Whether a rule was
+  // named (and something said).
+  Result<bool> forget_rule_named(const std::string& what);
   // The kinds of object with a learned goal that `phrase` names: exactly,
   // by a plural, or by the last word ("plates": ceramic-plate, paper-plate).
   std::vector<std::string> known_kinds(std::string_view phrase) const;
@@ -173,6 +178,11 @@ class TaskLearningAgent::Session {
   Status store_goal(const GoalKnowledge& goal, std::optional<GoalKnowledge> previous);
   Status store_rule(const Rule& rule);
   Status store_task(std::optional<TaskKnowledge> previous);
+  // A person's rule, kept in the knowledge and the store, and said_rules_.
+  Status store_class_rule(const ClassRule& rule);
+  // The rules the goals induce, kept in the store with their evidence when
+  // a session that learns ends (agent/class_rule_knowledge.h).
+  Status keep_induced_rules_learned();
   Step undo();
   void put_world_back(const State& before, std::size_t history_size);
 

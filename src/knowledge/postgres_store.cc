@@ -86,6 +86,9 @@ class PostgresStore final : public StoreEngine {
   Status remove_goal(const GoalKey& key) override;
   Status remove_rule(const Domain& domain, const Rule& rule) override;
   Status remove_task(const std::string& name) override;
+  Status save_class_rule(const ClassRule& rule) override;
+  Status remove_class_rule(const ClassRule& rule) override;
+  Status forget_class_rule(const ClassRule& rule) override;
   Result<Knowledge> load(const Domain& domain) const override;
 
  private:
@@ -99,7 +102,13 @@ class PostgresStore final : public StoreEngine {
   template <typename Parameters>
   Status write(const char* sql, Parameters parameters);
   Result<Knowledge> load_once(const Domain& domain) const;
-  Status check_schema() const;
+  // The store's schema version from its meta table (0 for none that reads
+  // as a number), after checking that it is an apprentice store.
+  Result<int> stored_version() const;
+  Status check_schema();
+  // Brings the store from `from` up to this version, in the caller's
+  // transaction.
+  Status migrate(int from) const;
 
   // The URL as given (it may hold the password): for libpq only.
   std::string url_;
@@ -108,6 +117,9 @@ class PostgresStore final : public StoreEngine {
   std::string secret_;
   StoreAccess access_;
   PgConnection connection_;
+  // The store's schema version: an older one is only read (opened
+  // read-only), and lacks the tables of later versions.
+  int schema_version_ = kKnowledgeSchemaVersion;
 };
 
 PgResult PostgresStore::run(const std::string& sql, const Texts& values) const {
@@ -178,7 +190,11 @@ bool PostgresStore::reconnected() const {
 constexpr const char* kTasksQuery = "SELECT name, structure FROM tasks ORDER BY name";
 constexpr const char* kGoalsQuery = "SELECT task, subtask, category, place, literals, object, source FROM goals ORDER BY id";
 constexpr const char* kRulesQuery = "SELECT body, object, source FROM rules ORDER BY id";
+constexpr const char* kClassRulesQuery = "SELECT body FROM class_rules ORDER BY id";
+constexpr const char* kForgottenRulesQuery = "SELECT body FROM forgotten_rules ORDER BY id";
 
+// Version 1's tables; a new store is then migrated to this version, as an
+// old one is.
 constexpr const char* kSchema =
     "CREATE TABLE meta(key TEXT PRIMARY KEY, value TEXT NOT NULL);"
     "CREATE TABLE goals(id BIGSERIAL PRIMARY KEY, task TEXT NOT NULL, subtask TEXT NOT NULL, category TEXT NOT NULL, "
@@ -217,8 +233,10 @@ Status PostgresStore::check_or_create_schema() {
       if (again->first) return {};
       if (again->second > 0) return foreign();
       if (auto s = must(kSchema); !s) return s;
-      return must("INSERT INTO meta(key, value) VALUES ('format', $1), ('schema_version', $2)",
-                  {kKnowledgeFormatName, std::to_string(kKnowledgeSchemaVersion)});
+      if (auto s = must("INSERT INTO meta(key, value) VALUES ('format', $1), ('schema_version', '1')", {kKnowledgeFormatName});
+          !s)
+        return s;
+      return migrate(1);
     }();
     if (!created) {
       (void)run("ROLLBACK");
@@ -229,7 +247,7 @@ Status PostgresStore::check_or_create_schema() {
   return check_schema();
 }
 
-Status PostgresStore::check_schema() const {
+Result<int> PostgresStore::stored_version() const {
   PgResult meta = run("SELECT key, value FROM meta");
   if (!succeeded(meta.get())) return tl::unexpected(statement_error(where_, meta.get(), connection_.get(), secret_));
   std::string format, version;
@@ -240,12 +258,62 @@ Status PostgresStore::check_schema() const {
   }
   if (format != kKnowledgeFormatName)
     return make_error(ErrorCode::kFailedPrecondition, where_ + " is not an apprentice knowledge store");
-  if (version != std::to_string(kKnowledgeSchemaVersion))
+  int number = 0;
+  for (char c : version) {
+    if (c < '0' || c > '9' || number > 1000) return 0;
+    number = number * 10 + (c - '0');
+  }
+  if (number < kOldestKnowledgeSchemaVersion || number > kKnowledgeSchemaVersion)
     return make_error(ErrorCode::kFailedPrecondition,
                       where_ + " was written with knowledge schema version " + version + "; this apprentice reads version " +
-                          std::to_string(kKnowledgeSchemaVersion) +
+                          std::to_string(kKnowledgeSchemaVersion) + " (and brings earlier ones up to it)" +
                           ". Relearn into a new store, or use the apprentice version that wrote it.");
-  for (const char* query : {kTasksQuery, kGoalsQuery, kRulesQuery}) {
+  return number;
+}
+
+Status PostgresStore::migrate(int from) const {
+  if (from < 2) {
+    // 1 -> 2: class rules with their evidence, and the rules forgotten.
+    if (auto s = must("CREATE TABLE class_rules(id BIGSERIAL PRIMARY KEY, key TEXT NOT NULL UNIQUE, body TEXT NOT NULL, "
+                      "source TEXT NOT NULL);"
+                      "CREATE TABLE forgotten_rules(id BIGSERIAL PRIMARY KEY, key TEXT NOT NULL UNIQUE, body TEXT NOT NULL);");
+        !s)
+      return s;
+  }
+  return must("UPDATE meta SET value = $1 WHERE key = 'schema_version'", {std::to_string(kKnowledgeSchemaVersion)});
+}
+
+Status PostgresStore::check_schema() {
+  auto version = stored_version();
+  if (!version) return tl::unexpected(version.error());
+  if (*version < kKnowledgeSchemaVersion && access_ != StoreAccess::kReadOnly) {
+    // Migrated once, by whichever writer takes the lock first.
+    if (auto s = must("BEGIN"); !s) return s;
+    auto migrated = [&]() -> Result<int> {
+      if (auto s = must("SELECT pg_advisory_xact_lock($1::int, hashtext(coalesce(current_schema(), '')))",
+                        {std::to_string(kCreationLockClass)});
+          !s)
+        return tl::unexpected(s.error());
+      auto again = stored_version();
+      if (!again) return again;
+      if (*again < kKnowledgeSchemaVersion)
+        if (auto s = migrate(*again); !s) return tl::unexpected(s.error());
+      return kKnowledgeSchemaVersion;
+    }();
+    if (!migrated) {
+      (void)run("ROLLBACK");
+      return tl::unexpected(migrated.error());
+    }
+    if (auto s = must("COMMIT"); !s) return s;
+    version = *migrated;
+  }
+  schema_version_ = *version;
+  std::vector<const char*> queries{kTasksQuery, kGoalsQuery, kRulesQuery};
+  if (schema_version_ >= 2) {
+    queries.push_back(kClassRulesQuery);
+    queries.push_back(kForgottenRulesQuery);
+  }
+  for (const char* query : queries) {
     PgResult r = run(std::string(query) + " LIMIT 0");
     if (succeeded(r.get())) continue;
     Error e = statement_error(where_, r.get(), connection_.get(), secret_);
@@ -255,7 +323,8 @@ Status PostgresStore::check_schema() const {
 }
 
 Status PostgresStore::start_over() {
-  return must("BEGIN; DELETE FROM goals; DELETE FROM tasks; DELETE FROM rules; COMMIT");
+  return must("BEGIN; DELETE FROM goals; DELETE FROM tasks; DELETE FROM rules; DELETE FROM class_rules; "
+              "DELETE FROM forgotten_rules; COMMIT");
 }
 
 template <typename Parameters>
@@ -308,6 +377,29 @@ Status PostgresStore::remove_task(const std::string& name) {
   return write("DELETE FROM tasks WHERE name = $1", [&] { return Texts{name}; });
 }
 
+Status PostgresStore::save_class_rule(const ClassRule& rule) {
+  // One statement, so one transaction: the rule, off the forgotten list.
+  // A rule saved again under its key is replaced and moves to the end.
+  return write(
+      "WITH unforgotten AS (DELETE FROM forgotten_rules WHERE key = $1) "
+      "INSERT INTO class_rules(key, body, source) VALUES ($1, $2, $3) ON CONFLICT (key) DO UPDATE SET body = "
+      "EXCLUDED.body, source = EXCLUDED.source, id = nextval(pg_get_serial_sequence('class_rules', 'id'))",
+      [&] {
+        return Texts{class_rule_key(rule), store_codec::encode_class_rule(rule), std::string(rule_source_name(rule.source))};
+      });
+}
+
+Status PostgresStore::remove_class_rule(const ClassRule& rule) {
+  return write("DELETE FROM class_rules WHERE key = $1", [&] { return Texts{class_rule_key(rule)}; });
+}
+
+Status PostgresStore::forget_class_rule(const ClassRule& rule) {
+  return write(
+      "WITH removed AS (DELETE FROM class_rules WHERE key = $1) "
+      "INSERT INTO forgotten_rules(key, body) VALUES ($1, $2) ON CONFLICT (key) DO UPDATE SET body = EXCLUDED.body",
+      [&] { return Texts{class_rule_key(rule), store_codec::encode_class_rule(rule)}; });
+}
+
 Result<Knowledge> PostgresStore::load(const Domain& domain) const {
   for (int attempt = 0;; ++attempt) {
     auto knowledge = load_once(domain);
@@ -336,6 +428,13 @@ Result<Knowledge> PostgresStore::load_once(const Domain& domain) const {
   if (!succeeded(goals.get())) return failed(goals);
   PgResult rules = run(kRulesQuery);
   if (!succeeded(rules.get())) return failed(rules);
+  PgResult class_rules, forgotten_rules;
+  if (schema_version_ >= 2) {
+    class_rules = run(kClassRulesQuery);
+    if (!succeeded(class_rules.get())) return failed(class_rules);
+    forgotten_rules = run(kForgottenRulesQuery);
+    if (!succeeded(forgotten_rules.get())) return failed(forgotten_rules);
+  }
   (void)run("COMMIT");
   Knowledge knowledge;
   for (int row = 0; row < PQntuples(tasks.get()); ++row) {
@@ -362,6 +461,17 @@ Result<Knowledge> PostgresStore::load_once(const Domain& domain) const {
     auto rule = store_codec::decode_rule(domain, *body, Provenance{PQgetvalue(r, row, 1), PQgetvalue(r, row, 2)});
     if (!rule) return located(rule.error());
     knowledge.rules.add(domain, std::move(*rule));
+  }
+  for (auto [rows, into] : {std::pair{class_rules.get(), &knowledge.class_rules},
+                            std::pair{forgotten_rules.get(), &knowledge.forgotten_rules}}) {
+    if (rows == nullptr) continue;
+    for (int row = 0; row < PQntuples(rows); ++row) {
+      auto body = text(rows, row, 0, store_codec::kClassRuleEntry);
+      if (!body) return located(body.error());
+      auto rule = store_codec::decode_class_rule(domain, *body);
+      if (!rule) return located(rule.error());
+      into->add(std::move(*rule));
+    }
   }
   return knowledge;
 }

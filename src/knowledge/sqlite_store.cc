@@ -56,6 +56,19 @@ tl::unexpected<Error> not_a_store(const std::filesystem::path& path, const std::
 constexpr const char* kTasksQuery = "SELECT name, structure FROM tasks ORDER BY name";
 constexpr const char* kGoalsQuery = "SELECT task, subtask, category, place, literals, object, source FROM goals ORDER BY id";
 constexpr const char* kRulesQuery = "SELECT body, object, source FROM rules ORDER BY id";
+constexpr const char* kClassRulesQuery = "SELECT body FROM class_rules ORDER BY id";
+constexpr const char* kForgottenRulesQuery = "SELECT body FROM forgotten_rules ORDER BY id";
+
+// The schema version a store's meta row gives, or 0 when it gives none
+// that reads as a number.
+int version_number(const std::string& version) {
+  int number = 0;
+  for (char c : version) {
+    if (c < '0' || c > '9' || number > 1000) return 0;
+    number = number * 10 + (c - '0');
+  }
+  return number;
+}
 
 int table_count(SQLite::Database& db) {
   SQLite::Statement tables(db, "SELECT count(*) FROM sqlite_master WHERE type='table'");
@@ -63,11 +76,14 @@ int table_count(SQLite::Database& db) {
   return tables.getColumn(0).getInt();
 }
 
-// Checks that the database is a store of this version with every table
+// Checks that the database is a store of a version this program reads with every table
 // load() reads, creating the schema in an empty database when `may_create`.
 // Creation happens in an immediate transaction that checks again, so two
 // processes creating one store at once make one schema.
-Status check_or_create_schema(SQLite::Database& db, const std::filesystem::path& path, bool may_create) {
+// A store of an earlier version is migrated when it may be written (and
+// read as it is otherwise); `schema_version` is set to the version it has
+// then.
+Status check_or_create_schema(SQLite::Database& db, const std::filesystem::path& path, bool may_create, int& schema_version) {
   if (!db.tableExists("meta")) {
     if (table_count(db) > 0)
       return make_error(ErrorCode::kFailedPrecondition,
@@ -83,20 +99,36 @@ Status check_or_create_schema(SQLite::Database& db, const std::filesystem::path&
     transaction.commit();
   }
   std::string format, version;
-  SQLite::Statement meta(db, "SELECT key, value FROM meta");
-  while (meta.executeStep()) {
-    std::string key = meta.getColumn(0).getString();
-    if (key == "format") format = meta.getColumn(1).getString();
-    if (key == "schema_version") version = meta.getColumn(1).getString();
+  {
+    SQLite::Statement meta(db, "SELECT key, value FROM meta");
+    while (meta.executeStep()) {
+      std::string key = meta.getColumn(0).getString();
+      if (key == "format") format = meta.getColumn(1).getString();
+      if (key == "schema_version") version = meta.getColumn(1).getString();
+    }
   }
   if (format != kKnowledgeFormatName)
     return make_error(ErrorCode::kFailedPrecondition, path.string() + " is not an apprentice knowledge store");
-  if (version != std::to_string(kKnowledgeSchemaVersion))
+  const int number = version_number(version);
+  if (number < kOldestKnowledgeSchemaVersion || number > kKnowledgeSchemaVersion)
     return make_error(ErrorCode::kFailedPrecondition,
                       path.string() + " was written with knowledge schema version " + version +
-                          "; this apprentice reads version " + std::to_string(kKnowledgeSchemaVersion) +
+                          "; this apprentice reads version " +
+                          std::to_string(kKnowledgeSchemaVersion) + " (and brings earlier ones up to it)" +
                           ". Relearn into a new file, or use the apprentice version that wrote it.");
-  for (auto [table, query] : {std::pair{"tasks", kTasksQuery}, {"goals", kGoalsQuery}, {"rules", kRulesQuery}}) {
+  if (number < kKnowledgeSchemaVersion && may_create) {
+    SQLite::Transaction transaction(db, SQLite::TransactionBehavior::IMMEDIATE);
+    migrate_knowledge_schema(db, number);
+    transaction.commit();
+    version = std::to_string(kKnowledgeSchemaVersion);
+  }
+  schema_version = version_number(version);
+  std::vector<std::pair<const char*, const char*>> tables{{"tasks", kTasksQuery}, {"goals", kGoalsQuery}, {"rules", kRulesQuery}};
+  if (schema_version >= 2) {
+    tables.emplace_back("class_rules", kClassRulesQuery);
+    tables.emplace_back("forgotten_rules", kForgottenRulesQuery);
+  }
+  for (auto [table, query] : tables) {
     try {
       SQLite::Statement check(db, query);
     } catch (const SQLite::Exception& e) {
@@ -118,8 +150,8 @@ Status quick_check(SQLite::Database& db, const std::filesystem::path& path) {
 
 class SqliteStore final : public StoreEngine {
  public:
-  SqliteStore(std::filesystem::path path, FileDescriptor lock, std::unique_ptr<SQLite::Database> db)
-      : path_(std::move(path)), lock_(std::move(lock)), db_(std::move(db)) {}
+  SqliteStore(std::filesystem::path path, FileDescriptor lock, std::unique_ptr<SQLite::Database> db, int schema_version)
+      : path_(std::move(path)), lock_(std::move(lock)), db_(std::move(db)), schema_version_(schema_version) {}
   // The database first, then its lock (see lock_).
   ~SqliteStore() override { db_.reset(); }
 
@@ -129,9 +161,15 @@ class SqliteStore final : public StoreEngine {
   Status remove_goal(const GoalKey& key) override;
   Status remove_rule(const Domain& domain, const Rule& rule) override;
   Status remove_task(const std::string& name) override;
+  Status save_class_rule(const ClassRule& rule) override;
+  Status remove_class_rule(const ClassRule& rule) override;
+  Status forget_class_rule(const ClassRule& rule) override;
   Result<Knowledge> load(const Domain& domain) const override;
 
  private:
+  // Runs statements in one transaction, each with its text parameters.
+  Status write_all(const std::vector<std::pair<const char*, Texts>>& statements);
+
   // Runs one statement in its own transaction, with the text parameters
   // `parameters()` gives (encoding inside the try: nothing escapes).
   template <typename Parameters>
@@ -143,7 +181,43 @@ class SqliteStore final : public StoreEngine {
   // process's POSIX locks on it, SQLite's among them.
   FileDescriptor lock_;
   std::unique_ptr<SQLite::Database> db_;
+  // The store's schema version: an older one is only read (opened
+  // read-only), and lacks the tables of later versions.
+  int schema_version_;
 };
+
+Status SqliteStore::write_all(const std::vector<std::pair<const char*, Texts>>& statements) {
+  try {
+    SQLite::Transaction transaction(*db_);
+    for (const auto& [sql, values] : statements) {
+      SQLite::Statement statement(*db_, sql);
+      for (std::size_t i = 0; i < values.size(); ++i) statement.bind(static_cast<int>(i + 1), values[i]);
+      statement.exec();
+    }
+    transaction.commit();
+    return {};
+  } catch (const std::exception& e) {
+    return tl::unexpected(sqlite_error(path_, e));
+  }
+}
+
+Status SqliteStore::save_class_rule(const ClassRule& rule) {
+  const std::string key = class_rule_key(rule);
+  return write_all({{"DELETE FROM forgotten_rules WHERE key = ?", Texts{key}},
+                    {"INSERT OR REPLACE INTO class_rules(key, body, source) VALUES (?, ?, ?)",
+                     Texts{key, store_codec::encode_class_rule(rule), std::string(rule_source_name(rule.source))}}});
+}
+
+Status SqliteStore::remove_class_rule(const ClassRule& rule) {
+  return write_all({{"DELETE FROM class_rules WHERE key = ?", Texts{class_rule_key(rule)}}});
+}
+
+Status SqliteStore::forget_class_rule(const ClassRule& rule) {
+  const std::string key = class_rule_key(rule);
+  return write_all({{"DELETE FROM class_rules WHERE key = ?", Texts{key}},
+                    {"INSERT OR REPLACE INTO forgotten_rules(key, body) VALUES (?, ?)",
+                     Texts{key, store_codec::encode_class_rule(rule)}}});
+}
 
 template <typename Parameters>
 Status SqliteStore::write(const char* sql, Parameters parameters) {
@@ -226,6 +300,19 @@ Result<Knowledge> SqliteStore::load(const Domain& domain) const {
                                            Provenance{rules.getColumn(1).getString(), rules.getColumn(2).getString()});
       if (!rule) return located(rule.error());
       knowledge.rules.add(domain, std::move(*rule));
+    }
+    if (schema_version_ >= 2) {
+      for (auto [query, into] : {std::pair{kClassRulesQuery, &knowledge.class_rules},
+                                 std::pair{kForgottenRulesQuery, &knowledge.forgotten_rules}}) {
+        SQLite::Statement rows(*db_, query);
+        while (rows.executeStep()) {
+          auto body = text(rows.getColumn(0), store_codec::kClassRuleEntry);
+          if (!body) return located(body.error());
+          auto rule = store_codec::decode_class_rule(domain, *body);
+          if (!rule) return located(rule.error());
+          into->add(std::move(*rule));
+        }
+      }
     }
   } catch (const std::exception& e) {
     return tl::unexpected(sqlite_error(path_, e));
@@ -316,15 +403,20 @@ Result<std::unique_ptr<StoreEngine>> open_sqlite_store(const std::filesystem::pa
       db->exec("PRAGMA synchronous = FULL");
       if (auto status = quick_check(*db, path); !status) return tl::unexpected(status.error());
     }
-    if (auto status = check_or_create_schema(*db, path, !read_only); !status) return tl::unexpected(status.error());
+    int schema_version = 0;
+    if (auto status = check_or_create_schema(*db, path, !read_only, schema_version); !status)
+      return tl::unexpected(status.error());
     if (access == StoreAccess::kFresh) {
       SQLite::Transaction transaction(*db, SQLite::TransactionBehavior::IMMEDIATE);
       db->exec("DELETE FROM goals");
       db->exec("DELETE FROM tasks");
       db->exec("DELETE FROM rules");
+      db->exec("DELETE FROM class_rules");
+      db->exec("DELETE FROM forgotten_rules");
       transaction.commit();
     }
-    return std::unique_ptr<StoreEngine>(std::make_unique<SqliteStore>(path, std::move(lock), std::move(db)));
+    return std::unique_ptr<StoreEngine>(
+        std::make_unique<SqliteStore>(path, std::move(lock), std::move(db), schema_version));
   } catch (const std::exception& e) {
     return tl::unexpected(sqlite_error(path, e));
   }

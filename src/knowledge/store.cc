@@ -47,6 +47,15 @@ Result<KnowledgeCopy> copy_knowledge(const std::string& from, const std::string&
     if (auto s = store->save_rule(domain, rule); !s) return tl::unexpected(s.error());
     ++copied.rules;
   }
+  for (const ClassRule& rule : knowledge->class_rules.all()) {
+    if (auto s = store->save_class_rule(rule); !s) return tl::unexpected(s.error());
+    ++copied.class_rules;
+  }
+  // What was forgotten there stays forgotten here.
+  for (const ClassRule& rule : knowledge->forgotten_rules.all()) {
+    if (auto s = store->forget_class_rule(rule); !s) return tl::unexpected(s.error());
+    ++copied.forgotten_rules;
+  }
   return copied;
 }
 

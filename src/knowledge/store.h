@@ -58,6 +58,12 @@ class KnowledgeStore {
   Status remove_rule(const Domain& domain, const Rule& rule) { return engine_->remove_rule(domain, rule); }
   Status remove_task(const std::string& name) { return engine_->remove_task(name); }
 
+  // Class rules (store_engine.h): saved with their evidence; removed; or
+  // forgotten, which is remembered so that the rule is not used again.
+  Status save_class_rule(const ClassRule& rule) { return engine_->save_class_rule(rule); }
+  Status remove_class_rule(const ClassRule& rule) { return engine_->remove_class_rule(rule); }
+  Status forget_class_rule(const ClassRule& rule) { return engine_->forget_class_rule(rule); }
+
   // Reads everything back. Goals and rules name predicates and actions,
   // which must exist in `domain` with the arity stored (kFailedPrecondition
   // otherwise); an entry that is not what this version writes (a task
@@ -79,7 +85,7 @@ class KnowledgeStore {
 
 // How much copy_knowledge copied.
 struct KnowledgeCopy {
-  std::size_t tasks = 0, goals = 0, rules = 0;
+  std::size_t tasks = 0, goals = 0, rules = 0, class_rules = 0, forgotten_rules = 0;
 };
 
 // Copies everything in the store at `from` (opened read-only, left as it

@@ -193,7 +193,73 @@ std::vector<LearnedSubtask> subtasks_from_json(const json& j) {
   return out;
 }
 
+json words_json(const std::vector<std::string>& words) {
+  json out = json::array();
+  for (const std::string& w : words) out.push_back(w);
+  return out;
+}
+
+std::vector<std::string> words_at(const json& j, const char* key) {
+  std::vector<std::string> out;
+  for (const json& w : list_at(j, key)) {
+    if (!w.is_string() || w.get_ref<const std::string&>().empty()) throw BadEntry(std::string("'") + key + "' holds something that is not a word");
+    out.push_back(w.get<std::string>());
+  }
+  return out;
+}
+
+// A string that may be empty (a rule's class, its sentence, its scope).
+std::string maybe_text_at(const json& j, const char* key) {
+  const json& v = member(j, key);
+  if (!v.is_string()) throw BadEntry(std::string("'") + key + "' is not text");
+  return v.get<std::string>();
+}
+
+json class_rule_json(const ClassRule& rule) {
+  GoalKnowledge destination;
+  destination.literals = destination_literals(rule.destination);
+  return json{{"class", rule.class_name},
+              {"class_id", rule.class_id},
+              {"modifiers", words_json(rule.modifiers)},
+              {"rest", rule.rest},
+              {"destination", goal_literals_json(destination)},
+              {"exceptions", words_json(rule.exceptions)},
+              {"source", std::string(rule_source_name(rule.source))},
+              {"said", rule.said},
+              {"evidence", words_json(rule.evidence)},
+              {"confidence", rule.confidence},
+              {"scope", json{{"task", rule.scope.task}, {"subtask", rule.scope.subtask}, {"place", rule.scope.place}}}};
+}
+
+Result<ClassRule> class_rule_from_json(const Domain& domain, const json& j) {
+  ClassRule rule;
+  rule.class_name = maybe_text_at(j, "class");
+  rule.class_id = maybe_text_at(j, "class_id");
+  rule.modifiers = words_at(j, "modifiers");
+  rule.rest = flag_at(j, "rest");
+  auto literals = goal_literals_from_json(domain, member(j, "destination"));
+  if (!literals) return tl::unexpected(literals.error());
+  auto destination = destination_of(*literals);
+  if (!destination) throw BadEntry("its destination is not a place to put a thing");
+  rule.destination = std::move(*destination);
+  rule.exceptions = words_at(j, "exceptions");
+  auto source = rule_source_from_name(text_at(j, "source"));
+  if (!source) throw BadEntry("'source' is not induced, person, llm or fleet");
+  rule.source = *source;
+  rule.said = maybe_text_at(j, "said");
+  rule.evidence = words_at(j, "evidence");
+  const json& confidence = member(j, "confidence");
+  if (!confidence.is_number() || !(confidence.get<double>() >= 0 && confidence.get<double>() <= 1))
+    throw BadEntry("'confidence' is not a number from 0 to 1");
+  rule.confidence = confidence.get<double>();
+  const json& scope = member(j, "scope");
+  rule.scope = GoalScope{maybe_text_at(scope, "task"), maybe_text_at(scope, "subtask"), maybe_text_at(scope, "place")};
+  return rule;
+}
+
 }  // namespace
+
+std::string encode_class_rule(const ClassRule& rule) { return dump_json(class_rule_json(rule)); }
 
 std::string encode_goal_literals(const GoalKnowledge& goal) { return dump_json(goal_literals_json(goal)); }
 
@@ -250,6 +316,10 @@ Result<Rule> decode_rule(const Domain& domain, std::string_view body, Provenance
     rule->provenance = std::move(provenance);
     return rule;
   });
+}
+
+Result<ClassRule> decode_class_rule(const Domain& domain, std::string_view body) {
+  return reading<ClassRule>(kClassRuleEntry, [&]() -> Result<ClassRule> { return class_rule_from_json(domain, json::parse(body)); });
 }
 
 Result<TaskKnowledge> decode_task(const std::string& name, std::string_view structure) {

@@ -106,14 +106,24 @@ void create_knowledge_schema(SQLite::Database& db) {
   db.exec("CREATE TABLE tasks(name TEXT PRIMARY KEY, structure TEXT NOT NULL)");
   db.exec("CREATE TABLE rules(id INTEGER PRIMARY KEY, signature TEXT NOT NULL UNIQUE, body TEXT NOT NULL, "
           "object TEXT NOT NULL, source TEXT NOT NULL)");
-  SQLite::Statement insert(db, "INSERT INTO meta(key, value) VALUES (?, ?)");
-  for (auto [key, value] : {std::pair<std::string, std::string>{"format", kKnowledgeFormatName},
-                            {"schema_version", std::to_string(kKnowledgeSchemaVersion)}}) {
-    insert.bind(1, key);
-    insert.bind(2, value);
-    insert.exec();
-    insert.reset();
+  SQLite::Statement insert(db, "INSERT INTO meta(key, value) VALUES ('format', ?), ('schema_version', '1')");
+  insert.bind(1, kKnowledgeFormatName);
+  insert.exec();
+  // A new store is a store of version 1 brought up to date: one schema,
+  // whichever way a store was made.
+  migrate_knowledge_schema(db, 1);
+}
+
+void migrate_knowledge_schema(SQLite::Database& db, int from) {
+  if (from < 2) {
+    // 1 -> 2: class rules with their evidence, and the rules forgotten.
+    db.exec("CREATE TABLE class_rules(id INTEGER PRIMARY KEY, key TEXT NOT NULL UNIQUE, body TEXT NOT NULL, "
+            "source TEXT NOT NULL)");
+    db.exec("CREATE TABLE forgotten_rules(id INTEGER PRIMARY KEY, key TEXT NOT NULL UNIQUE, body TEXT NOT NULL)");
   }
+  SQLite::Statement version(db, "UPDATE meta SET value = ? WHERE key = 'schema_version'");
+  version.bind(1, std::to_string(kKnowledgeSchemaVersion));
+  version.exec();
 }
 
 bool is_creation_file_of(const std::string& file_name, const std::string& store_name) {

@@ -31,6 +31,11 @@ inline constexpr const char* kKnowledgeFormatName = "apprentice-knowledge";
 // in the caller's transaction. Throws SQLite::Exception.
 void create_knowledge_schema(SQLite::Database& db);
 
+// Brings a store of schema version `from` (earlier than
+// kKnowledgeSchemaVersion) up to this version, step by step, and records
+// the version, in the caller's transaction. Throws SQLite::Exception.
+void migrate_knowledge_schema(SQLite::Database& db, int from);
+
 // The steps of create_store_file, in order, for tests that kill a creation
 // part way.
 enum class StoreCreationStep {

@@ -21,6 +21,7 @@
 
 #include "knowledge/goal_memory.h"
 #include "knowledge/matcher.h"
+#include "knowledge/preferences.h"
 #include "knowledge/store_access.h"
 #include "knowledge/rule.h"
 #include "knowledge/task_knowledge.h"
@@ -29,16 +30,32 @@
 
 namespace apprentice {
 
-// The version of the stores' schema this program reads and writes.
-inline constexpr int kKnowledgeSchemaVersion = 1;
+// The version of the stores' schema this program reads and writes. A store
+// of an earlier version is brought up to this one when opened for writing
+// (each engine's migration steps), and read as it is when opened read-only.
+//   1  tasks, goals, rules
+//   2  class_rules and forgotten_rules (a person's and induced class rules,
+//      with their evidence; the rules forgotten)
+inline constexpr int kKnowledgeSchemaVersion = 2;
+// The earliest version still read.
+inline constexpr int kOldestKnowledgeSchemaVersion = 1;
 
 // Everything the agent knows, in memory.
 struct Knowledge {
   std::vector<TaskKnowledge> tasks;
   GoalMemory goals;
   RuleMatcher rules;
+  // Class rules (knowledge/preferences.h) with their evidence: a person's,
+  // kept when said, and those induced from the goals, kept when a session
+  // ends. In the order learned.
+  ClassRules class_rules;
+  // The rules the person told the agent to forget: never used again, even
+  // where the goals would induce them anew, until said again.
+  ClassRules forgotten_rules;
 
   const TaskKnowledge* find_task(const std::string& name) const;
+  // Whether `rule` (by class_rule_key) was forgotten.
+  bool forgot(const ClassRule& rule) const { return forgotten_rules.find(rule) != nullptr; }
 };
 
 class StoreEngine {
@@ -56,6 +73,15 @@ class StoreEngine {
   virtual Status remove_goal(const GoalKey& key) = 0;
   virtual Status remove_rule(const Domain& domain, const Rule& rule) = 0;
   virtual Status remove_task(const std::string& name) = 0;
+
+  // Class rules, by class_rule_key. save_class_rule replaces the rule
+  // under the same key and takes it off the forgotten list (a rule said
+  // again is meant); remove_class_rule removes it (undo); forget_class_rule
+  // removes it and puts it on the forgotten list, so that it is not used
+  // again after a reload.
+  virtual Status save_class_rule(const ClassRule& rule) = 0;
+  virtual Status remove_class_rule(const ClassRule& rule) = 0;
+  virtual Status forget_class_rule(const ClassRule& rule) = 0;
 
   // Everything stored, read against `domain` (store_codec.h says which
   // entries are refused, and how).

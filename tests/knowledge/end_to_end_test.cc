@@ -233,5 +233,79 @@ TEST(KnowledgeCommand, PrintsTheCeramicPlatesRulesAsLearned) {
   }
 }
 
+// `knowledge` lists the class rules with their evidence and source, and
+// `knowledge forget` forgets one for good: it is no longer listed among
+// those in use after a reload (though the goals still induce it), and is
+// listed as forgotten. A phrase that names no rule, or several, is exit 2.
+TEST(KnowledgeCommand, ForgetsAClassRuleForGood) {
+  Learned& l = learned("inst+search4", "full");
+  ASSERT_EQ(l.exit_code, 0) << l.err;
+  ScratchDir dir;
+  const fs::path store = dir / "copy.sqlite";
+  fs::copy_file(l.store, store);
+  auto listed = [&] {
+    Invocation r = run_cli(dir.path(), {"knowledge", "--knowledge", store.string(), "--json"});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return nlohmann::json::parse(r.out, nullptr, false);
+  };
+  nlohmann::json before = listed();
+  ASSERT_FALSE(before.is_discarded());
+  ASSERT_GE(before["class_rules"].size(), 2u);
+  EXPECT_TRUE(before["forgotten_rules"].empty());
+  // The most believed rule induced from two examples or more.
+  nlohmann::json chosen;
+  for (const nlohmann::json& rule : before["class_rules"])
+    if (rule["source"] == "induced" && rule["evidence"].size() >= 2 &&
+        (chosen.is_null() || rule["confidence"].get<double>() > chosen["confidence"].get<double>()))
+      chosen = rule;
+  ASSERT_FALSE(chosen.is_null());
+  const std::string subject = chosen["subject"], destination = chosen["destination"];
+  const std::string text = chosen["text"];
+  EXPECT_THAT(text, HasSubstr("induced from the examples"));
+  Invocation plain = run_cli(dir.path(), {"knowledge", "--knowledge", store.string()});
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  EXPECT_THAT(plain.out, HasSubstr("For things I was never taught, I generalize:\n"));
+  EXPECT_THAT(plain.out, HasSubstr("  " + text + "\n"));
+
+  Invocation forgot = run_cli(dir.path(), {"knowledge", "forget", subject, destination, "--knowledge", store.string()});
+  ASSERT_EQ(forgot.exit_code, 0) << forgot.err;
+  EXPECT_THAT(forgot.out, HasSubstr("I forgot that " + text));
+
+  nlohmann::json after = listed();
+  ASSERT_EQ(after["forgotten_rules"].size(), 1u);
+  EXPECT_EQ(after["forgotten_rules"][0]["text"], text);
+  EXPECT_EQ(after["forgotten_rules"][0]["evidence"], chosen["evidence"]);
+  EXPECT_EQ(after["class_rules"].size(), before["class_rules"].size() - 1);
+  for (const nlohmann::json& rule : after["class_rules"]) EXPECT_NE(rule["text"], text);
+  Invocation plain_after = run_cli(dir.path(), {"knowledge", "--knowledge", store.string()});
+  const std::size_t forgotten_at = plain_after.out.find("You told me to forget these, and I do not use them:\n  " + text);
+  ASSERT_NE(forgotten_at, std::string::npos) << plain_after.out;
+  EXPECT_EQ(plain_after.out.find(text), forgotten_at + std::string("You told me to forget these, and I do not use them:\n  ").size());
+
+  Invocation unknown = run_cli(dir.path(), {"knowledge", "forget", "unicorns", "--knowledge", store.string()});
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_THAT(unknown.err, HasSubstr("I hold no rule about \"unicorns\"."));
+  Invocation nothing = run_cli(dir.path(), {"knowledge", "forget", "--knowledge", store.string()});
+  EXPECT_EQ(nothing.exit_code, 2);
+  EXPECT_THAT(nothing.err, HasSubstr("knowledge forget takes what the rule is about"));
+  // Forgetting it again: it is no longer held.
+  Invocation again = run_cli(dir.path(), {"knowledge", "forget", subject, destination, "--knowledge", store.string()});
+  EXPECT_EQ(again.exit_code, 2);
+  // A rule and "the rest" of its class ("container", "other container")
+  // are two rules: the person is asked to say which.
+  for (const nlohmann::json& rule : after["class_rules"]) {
+    const std::string s = rule["subject"];
+    if (s.rfind("other ", 0) != 0) continue;
+    const std::string bare = s.substr(6);
+    bool both = false;
+    for (const nlohmann::json& other : after["class_rules"]) both = both || other["subject"] == bare;
+    if (!both) continue;
+    Invocation which = run_cli(dir.path(), {"knowledge", "forget", bare, "--knowledge", store.string()});
+    EXPECT_EQ(which.exit_code, 2);
+    EXPECT_THAT(which.err, HasSubstr("Say which, for example: forget \""));
+    break;
+  }
+}
+
 }  // namespace
 }  // namespace apprentice

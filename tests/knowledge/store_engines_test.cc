@@ -255,6 +255,126 @@ TEST_P(StoreEngines, AStoreInUseIsNeverStartedOver) {
   EXPECT_TRUE(after.save_goal(plate_goal()));
 }
 
+ClassRule induced_fruit_rule() {
+  ClassRule rule;
+  rule.class_name = "edible fruit";
+  rule.class_id = "wordnet:07705931";
+  rule.destination = Destination{"in", GoalTemplateArgument{false, "fridge", {}},
+                                 {GoalTemplateLiteral{"closed", true, {GoalTemplateArgument{false, "fridge", {}}}}}};
+  rule.exceptions = {"pear"};
+  rule.evidence = {"banana", "apple"};
+  rule.confidence = 0.8312345678901234;
+  rule.scope = GoalScope{"tidy kitchen", "clear", "table"};
+  return rule;
+}
+
+ClassRule said_plastic_rule() {
+  ClassRule rule;
+  rule.class_name = "toys";
+  rule.modifiers = {"plastic"};
+  rule.rest = true;
+  rule.destination = Destination{"on", GoalTemplateArgument{false, "counter", {"left"}}, {}};
+  rule.source = RuleSource::kPerson;
+  rule.said = "Put the other plastic toys on the left counter";
+  rule.confidence = 0.95;
+  return rule;
+}
+
+TEST_P(StoreEngines, ClassRulesAreKeptWithTheirEvidenceAndAForgottenOneStaysForgotten) {
+  {
+    KnowledgeStore store = open_or_die();
+    fill(store);
+    ASSERT_TRUE(store.save_class_rule(induced_fruit_rule()));
+    ASSERT_TRUE(store.save_class_rule(said_plastic_rule()));
+  }
+  Knowledge k = load();
+  expect_filled(k);
+  EXPECT_EQ(k.class_rules.all(), (std::vector<ClassRule>{induced_fruit_rule(), said_plastic_rule()}));
+  EXPECT_TRUE(k.forgotten_rules.empty());
+  {
+    // Saved again with more evidence: replaced, and last.
+    KnowledgeStore store = open_or_die();
+    ClassRule more = induced_fruit_rule();
+    more.evidence.push_back("orange");
+    more.confidence = 0.9;
+    ASSERT_TRUE(store.save_class_rule(more));
+    EXPECT_EQ(load().class_rules.all(), (std::vector<ClassRule>{said_plastic_rule(), more}));
+    ASSERT_TRUE(store.forget_class_rule(more));
+    ASSERT_TRUE(store.remove_class_rule(said_plastic_rule()));
+    ASSERT_TRUE(store.remove_class_rule(said_plastic_rule()));  // not there: no error
+  }
+  k = load();
+  EXPECT_TRUE(k.class_rules.empty());
+  ASSERT_EQ(k.forgotten_rules.size(), 1u);
+  EXPECT_EQ(k.forgotten_rules.all().front().evidence, (std::vector<std::string>{"banana", "apple", "orange"}));
+  EXPECT_TRUE(k.forgot(induced_fruit_rule()));  // by its key, whatever its evidence
+  EXPECT_FALSE(k.forgot(said_plastic_rule()));
+  {
+    // Said again, it is meant again.
+    KnowledgeStore store = open_or_die();
+    ASSERT_TRUE(store.save_class_rule(induced_fruit_rule()));
+  }
+  k = load();
+  EXPECT_TRUE(k.forgotten_rules.empty());
+  EXPECT_EQ(k.class_rules.all(), std::vector<ClassRule>{induced_fruit_rule()});
+  // Started over, none are left.
+  {
+    KnowledgeStore store = open_or_die();
+    ASSERT_TRUE(store.forget_class_rule(said_plastic_rule()));
+  }
+  {
+    KnowledgeStore fresh = open_or_die(StoreAccess::kFresh);
+    auto loaded = fresh.load(domain_);
+    ASSERT_TRUE(loaded.has_value());
+    EXPECT_TRUE(loaded->class_rules.empty());
+    EXPECT_TRUE(loaded->forgotten_rules.empty());
+  }
+}
+
+TEST_P(StoreEngines, AClassRuleThatDoesNotReadIsDataLossWhenLoaded) {
+  {
+    KnowledgeStore store = open_or_die();
+    ASSERT_TRUE(store.save_class_rule(induced_fruit_rule()));
+  }
+  exec("UPDATE class_rules SET body = '{\"class\": \"fruit\", \"confidence\": 7}'");
+  KnowledgeStore store = open_or_die(StoreAccess::kReadOnly);
+  auto loaded = store.load(domain_);
+  ASSERT_FALSE(loaded.has_value());
+  EXPECT_EQ(loaded.error().code, ErrorCode::kDataLoss);
+  EXPECT_THAT(loaded.error().message, HasSubstr("a class rule"));
+}
+
+// A store of schema version 1 (before class rules): read as it is by a
+// reader; brought up to this version by a writer,
+// keeping everything in it.
+TEST_P(StoreEngines, AStoreOfVersionOneIsReadAsItIsAndMigratedByAWriter) {
+  {
+    KnowledgeStore store = open_or_die();
+    fill(store);
+  }
+  exec("DROP TABLE class_rules");
+  exec("DROP TABLE forgotten_rules");
+  exec("UPDATE meta SET value = '1' WHERE key = 'schema_version'");
+  {
+    KnowledgeStore reader = open_or_die(StoreAccess::kReadOnly);
+    auto loaded = reader.load(domain_);
+    ASSERT_TRUE(loaded.has_value()) << loaded.error().describe();
+    expect_filled(*loaded);
+    EXPECT_TRUE(loaded->class_rules.empty());
+  }
+  {
+    KnowledgeStore writer = open_or_die();
+    ASSERT_TRUE(writer.save_class_rule(said_plastic_rule()));
+  }
+  Knowledge k = load();
+  expect_filled(k);
+  EXPECT_EQ(k.class_rules.all(), std::vector<ClassRule>{said_plastic_rule()});
+  // The migration recorded the version: opening again migrates nothing
+  // (a second CREATE TABLE would fail).
+  KnowledgeStore again = open_or_die();
+  EXPECT_TRUE(again.save_class_rule(induced_fruit_rule()));
+}
+
 std::string engine_name(const ::testing::TestParamInfo<Engine>& info) {
   return info.param == Engine::kSqlite ? "sqlite" : "postgres";
 }
