@@ -24,6 +24,7 @@ namespace {
 constexpr int kBusyTimeoutMs = 5000;
 
 using Texts = std::vector<std::string>;
+using Statements = std::vector<std::pair<const char*, Texts>>;
 
 // What an SQLite failure means to the user, by SQLite's result code.
 Error sqlite_error(const std::filesystem::path& path, const std::exception& e) {
@@ -167,8 +168,10 @@ class SqliteStore final : public StoreEngine {
   Result<Knowledge> load(const Domain& domain) const override;
 
  private:
-  // Runs statements in one transaction, each with its text parameters.
-  Status write_all(const std::vector<std::pair<const char*, Texts>>& statements);
+  // Runs the statements `statements()` gives in one transaction, each with
+  // its text parameters (made inside the try: nothing escapes).
+  template <typename Make>
+  Status write_all(Make statements);
 
   // Runs one statement in its own transaction, with the text parameters
   // `parameters()` gives (encoding inside the try: nothing escapes).
@@ -186,10 +189,12 @@ class SqliteStore final : public StoreEngine {
   int schema_version_;
 };
 
-Status SqliteStore::write_all(const std::vector<std::pair<const char*, Texts>>& statements) {
+template <typename Make>
+Status SqliteStore::write_all(Make statements) {
   try {
+    const Statements made = statements();
     SQLite::Transaction transaction(*db_);
-    for (const auto& [sql, values] : statements) {
+    for (const auto& [sql, values] : made) {
       SQLite::Statement statement(*db_, sql);
       for (std::size_t i = 0; i < values.size(); ++i) statement.bind(static_cast<int>(i + 1), values[i]);
       statement.exec();
@@ -203,35 +208,29 @@ Status SqliteStore::write_all(const std::vector<std::pair<const char*, Texts>>& 
 
 Status SqliteStore::save_class_rule(const ClassRule& rule) {
   const std::string key = class_rule_key(rule);
-  return write_all({{"DELETE FROM forgotten_rules WHERE key = ?", Texts{key}},
-                    {"INSERT OR REPLACE INTO class_rules(key, body, source) VALUES (?, ?, ?)",
-                     Texts{key, store_codec::encode_class_rule(rule), std::string(rule_source_name(rule.source))}}});
+  return write_all([&] {
+    return Statements{{"DELETE FROM forgotten_rules WHERE key = ?", Texts{key}},
+                      {"INSERT OR REPLACE INTO class_rules(key, body, source) VALUES (?, ?, ?)",
+                       Texts{key, store_codec::encode_class_rule(rule), std::string(rule_source_name(rule.source))}}};
+  });
 }
 
 Status SqliteStore::remove_class_rule(const ClassRule& rule) {
-  return write_all({{"DELETE FROM class_rules WHERE key = ?", Texts{class_rule_key(rule)}}});
+  return write("DELETE FROM class_rules WHERE key = ?", [&] { return Texts{class_rule_key(rule)}; });
 }
 
 Status SqliteStore::forget_class_rule(const ClassRule& rule) {
   const std::string key = class_rule_key(rule);
-  return write_all({{"DELETE FROM class_rules WHERE key = ?", Texts{key}},
-                    {"INSERT OR REPLACE INTO forgotten_rules(key, body) VALUES (?, ?)",
-                     Texts{key, store_codec::encode_class_rule(rule)}}});
+  return write_all([&] {
+    return Statements{{"DELETE FROM class_rules WHERE key = ?", Texts{key}},
+                      {"INSERT OR REPLACE INTO forgotten_rules(key, body) VALUES (?, ?)",
+                       Texts{key, store_codec::encode_class_rule(rule)}}};
+  });
 }
 
 template <typename Parameters>
 Status SqliteStore::write(const char* sql, Parameters parameters) {
-  try {
-    const std::vector<std::string> values = parameters();
-    SQLite::Transaction transaction(*db_);
-    SQLite::Statement statement(*db_, sql);
-    for (std::size_t i = 0; i < values.size(); ++i) statement.bind(static_cast<int>(i + 1), values[i]);
-    statement.exec();
-    transaction.commit();
-    return {};
-  } catch (const std::exception& e) {
-    return tl::unexpected(sqlite_error(path_, e));
-  }
+  return write_all([&] { return Statements{{sql, parameters()}}; });
 }
 
 Status SqliteStore::save_goal(const GoalKnowledge& goal) {
