@@ -100,7 +100,7 @@ CommandResult run_experiment(const ExperimentOptions& options, const std::string
   if (!generalization) return tl::unexpected(generalization.error());
   ExperimentRequest request;
   if (!options.knowledge_in.empty()) {
-    auto knowledge = load_knowledge_read_only(options.knowledge_in, *scenario->world.domain);
+    auto knowledge = load_knowledge_read_only(options.knowledge_in, *scenario->world.domain, options.household);
     if (!knowledge) return tl::unexpected(knowledge.error());
     request.options.knowledge_in = std::move(*knowledge);
   }
@@ -166,6 +166,7 @@ CommandResult run_teach(const TeachOptions& options, const std::string& program,
   spec.instructed_always = true;  // a person is teaching
   spec.generalization = options.generalization;
   spec.knowledge = options.knowledge;
+  spec.household = options.household;
   spec.goal_repair = options.llm.goal_repair;
   spec.offer_ungrounded = options.llm.offer_ungrounded;
   spec.llm = llm_spec(options.llm);
@@ -208,6 +209,7 @@ CommandResult run_run(const RunOptions& options, std::ostream& out) {
   AgentSpec spec = default_agent_spec();
   spec.condition = "knowledge-only";
   spec.knowledge = options.knowledge;
+  spec.household = options.household;
   spec.store_access = StoreAccess::kReadOnly;
   auto session = make_agent_session(spec, *scenario);
   if (!session) return tl::unexpected(session.error());
@@ -229,6 +231,9 @@ CommandResult copy_between_stores(const KnowledgeOptions& options, const Domain&
     return make_error(ErrorCode::kInvalidInput, "knowledge " + options.action + " takes " +
                                                     (exporting ? "--to STORE, the store to copy into"
                                                                : "--from STORE, the store to copy from"));
+  if (!options.household.empty())
+    return make_error(ErrorCode::kInvalidInput, "knowledge " + options.action +
+                                                    " copies every household of the store; --household is for printing one");
   const std::string& from = exporting ? options.knowledge : other;
   const std::string& to = exporting ? other : options.knowledge;
   auto copied = copy_knowledge(from, to, domain);
@@ -236,7 +241,8 @@ CommandResult copy_between_stores(const KnowledgeOptions& options, const Domain&
   if (options.json) {
     out << dump_json(nlohmann::json{{"from", scrub_store_location(from)}, {"to", scrub_store_location(to)},
                                     {"tasks", copied->tasks}, {"goals", copied->goals}, {"rules", copied->rules},
-                                    {"class_rules", copied->class_rules}, {"forgotten_rules", copied->forgotten_rules}},
+                                    {"households", copied->households}, {"class_rules", copied->class_rules},
+                                    {"forgotten_rules", copied->forgotten_rules}},
                      2)
         << "\n";
     return Outcome::kSuccess;
@@ -267,7 +273,8 @@ CommandResult run_knowledge(const KnowledgeOptions& options, const std::string& 
   if (!options.action.empty()) return copy_between_stores(options, *domain, out);
   if (!options.to.empty() || !options.from.empty())
     return make_error(ErrorCode::kInvalidInput, "--to is for 'knowledge export' and --from for 'knowledge import'");
-  auto store = KnowledgeStore::open(options.knowledge, StoreAccess::kReadOnly);
+  const std::string household = options.household.empty() ? std::string(kDefaultHousehold) : options.household;
+  auto store = KnowledgeStore::open(options.knowledge, StoreAccess::kReadOnly, household);
   if (!store) return tl::unexpected(store.error());
   auto knowledge = store->load(*domain);
   if (!knowledge) return tl::unexpected(knowledge.error());
@@ -285,7 +292,7 @@ CommandResult run_knowledge(const KnowledgeOptions& options, const std::string& 
       rules.push_back({{"signature", rule_signature(*domain, r)}, {"object", r.provenance.object}, {"source", r.provenance.source}});
     Understanding understanding;
     LexicalConcepts concepts(understanding.lexicon(), understanding.vectors());
-    nlohmann::json all{{"tasks", tasks}, {"goals", goals}, {"rules", rules}};
+    nlohmann::json all{{"household", household}, {"tasks", tasks}, {"goals", goals}, {"rules", rules}};
     all.update(class_rules_json(*knowledge, concepts));
     out << dump_json(all, 2) << "\n";
     return Outcome::kSuccess;
@@ -304,6 +311,7 @@ CommandResult run_knowledge(const KnowledgeOptions& options, const std::string& 
       out << format_rule(*domain, r) << "  (learned on " << r.provenance.object << " from " << r.provenance.source << ")\n\n";
     return Outcome::kSuccess;
   }
+  if (!options.household.empty()) out << "Household " << household << " (the rules are shared by every household):\n";
   if (knowledge->tasks.empty() && knowledge->goals.size() == 0 && knowledge->rules.size() == 0 &&
       knowledge->class_rules.empty() && knowledge->forgotten_rules.empty()) {
     out << "Nothing has been learned yet.\n";

@@ -52,7 +52,8 @@ CommandResult forget_class_rules(const KnowledgeOptions& options, const Domain& 
     return make_error(ErrorCode::kInvalidInput, "--to is for 'knowledge export' and --from for 'knowledge import'");
   Understanding understanding;
   LexicalConcepts concepts(understanding.lexicon(), understanding.vectors());
-  auto forgotten = forget_rules_named(options.knowledge, domain, join(options.what, " "), concepts);
+  const std::string household = options.household.empty() ? std::string(kDefaultHousehold) : options.household;
+  auto forgotten = forget_rules_named(options.knowledge, household, domain, join(options.what, " "), concepts);
   if (!forgotten) return tl::unexpected(forgotten.error());
   if (options.json) {
     nlohmann::json rules = nlohmann::json::array();

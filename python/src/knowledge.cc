@@ -38,7 +38,7 @@ std::filesystem::path domain_path_of(const py::object& domain_path_like) {
 
 // apprentice.forget_rule: the one call of this module that writes a store.
 std::vector<ClassRuleView> forget_rule(const py::object& path_like, const std::string& what,
-                                       const py::object& domain_path_like) {
+                                       const py::object& domain_path_like, const std::string& household) {
   const std::string path = py::str(py::module_::import("os").attr("fspath")(path_like)).cast<std::string>();
   const std::filesystem::path domain_path = domain_path_of(domain_path_like);
   Result<std::vector<ClassRuleView>> forgotten = [&]() -> Result<std::vector<ClassRuleView>> {
@@ -49,7 +49,7 @@ std::vector<ClassRuleView> forget_rule(const py::object& path_like, const std::s
     if (!domain) return tl::unexpected(domain.error());
     Understanding understanding;
     LexicalConcepts concepts(understanding.lexicon(), understanding.vectors());
-    auto rules = forget_rules_named(path, *domain, what, concepts);
+    auto rules = forget_rules_named(path, household, *domain, what, concepts);
     if (!rules) return tl::unexpected(rules.error());
     std::vector<ClassRuleView> out;
     for (const ClassRule& rule : *rules) out.push_back(class_rule_view(rule));
@@ -62,9 +62,10 @@ std::vector<ClassRuleView> forget_rule(const py::object& path_like, const std::s
 // must exist and hold a store; nothing is ever written to it.
 struct StoreView : KnowledgeView {
   std::string path;
+  std::string household;
 };
 
-StoreView open_store(const py::object& path_like, const py::object& domain_path_like) {
+StoreView open_store(const py::object& path_like, const py::object& domain_path_like, const std::string& household) {
   py::object fspath = py::module_::import("os").attr("fspath");
   std::filesystem::path path = py::str(fspath(path_like)).cast<std::string>();
   std::filesystem::path domain_path = domain_path_of(domain_path_like);
@@ -78,7 +79,7 @@ StoreView open_store(const py::object& path_like, const py::object& domain_path_
       return make_error(ErrorCode::kFailedPrecondition, path.string() + " is empty, not a knowledge store");
     auto domain = read_domain_file(domain_path);
     if (!domain) return tl::unexpected(domain.error());
-    auto store = KnowledgeStore::open(path, StoreAccess::kReadOnly);
+    auto store = KnowledgeStore::open(path, StoreAccess::kReadOnly, household);
     if (!store) return tl::unexpected(store.error());
     auto knowledge = store->load(*domain);
     if (!knowledge) return tl::unexpected(knowledge.error());
@@ -89,6 +90,7 @@ StoreView open_store(const py::object& path_like, const py::object& domain_path_
     LexicalConcepts concepts(understanding.lexicon(), understanding.vectors());
     static_cast<KnowledgeView&>(out) = view_of(*knowledge, *domain, &concepts);
     out.path = store->location();
+    out.household = store->household();
     return out;
   }();
   return unwrap(std::move(view));
@@ -172,6 +174,7 @@ void bind_knowledge(py::module_& m) {
       });
 
   m.def("forget_rule", &forget_rule, py::arg("store"), py::arg("what"), py::arg("domain") = py::none(),
+        py::arg("household") = kDefaultHousehold,
         "Forgets, for good, the class rule `what` names in the knowledge store at `store` (what it is about, "
         "optionally with where it sends things: 'fruit', 'fruit on the coffee table'), as `apprentice knowledge "
         "forget` does: the store keeps it as forgotten, and the agent no longer uses it. Returns the rules "
@@ -204,12 +207,14 @@ void bind_knowledge(py::module_& m) {
 
   py::class_<StoreView, KnowledgeView>(
       m, "KnowledgeStore",
-      "A knowledge store (SQLite) written by `apprentice teach` or an Agent, read into memory; never written. "
-      "`domain` is the PDDL domain its rules use (default: the shipped kitchen).")
-      .def(py::init(&open_store), py::arg("path"), py::arg("domain") = py::none(),
+      "A knowledge store (an SQLite file or a postgresql:// URL) written by `apprentice teach` or an Agent, read "
+      "into memory; never written. `domain` is the PDDL domain its rules use (default: the shipped kitchen); "
+      "`household` whose goals and tasks are read (the rules are shared by every household).")
+      .def(py::init(&open_store), py::arg("path"), py::arg("domain") = py::none(), py::arg("household") = kDefaultHousehold,
            "Raises apprentice.Error: 'not found' for a missing file, 'failed precondition' for a file that is not "
            "a store of this version, 'data loss' for an unreadable one.")
       .def_readonly("path", &StoreView::path)
+      .def_readonly("household", &StoreView::household)
       .def("__repr__", [](const StoreView& k) { return "<KnowledgeStore " + k.path + ": " + count_text(k) + ">"; });
 }
 

@@ -149,13 +149,14 @@ Status forget_rule(Knowledge& knowledge, KnowledgeStore* store, const ClassRule&
   return {};
 }
 
-Result<std::vector<ClassRule>> forget_rules_named(const std::string& location, const Domain& domain, std::string_view what,
+Result<std::vector<ClassRule>> forget_rules_named(const std::string& location, const std::string& household,
+                                                  const Domain& domain, std::string_view what,
                                                   const ConceptSource& concepts) {
   const std::string said(trim(what));
   if (said.empty())
     return make_error(ErrorCode::kInvalidInput,
                       "knowledge forget takes what the rule is about, for example \"fruit\" or \"fruit on the coffee table\"");
-  auto store = KnowledgeStore::open(location, StoreAccess::kReadWrite);
+  auto store = KnowledgeStore::open(location, StoreAccess::kReadWrite, household);
   if (!store) return tl::unexpected(store.error());
   auto knowledge = store->load(domain);
   if (!knowledge) return tl::unexpected(knowledge.error());

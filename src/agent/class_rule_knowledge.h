@@ -48,7 +48,8 @@ std::string rule_destination(const ClassRule& rule);
 // and in `store` when there is one. Errors: the store's.
 Status forget_rule(Knowledge& knowledge, KnowledgeStore* store, const ClassRule& rule);
 
-// Forgets, in the store at `location` (SQLite or PostgreSQL), the rules in
+// Forgets, in `household` of the store at `location` (SQLite or
+// PostgreSQL), the rules in
 // use that `what` names (rules_named): what `apprentice knowledge forget`
 // and the Python module's forget_rule do. The same rule kept in several
 // scopes is forgotten in each. Returns the rules forgotten. Errors:
@@ -57,7 +58,8 @@ Status forget_rule(Knowledge& knowledge, KnowledgeStore* store, const ClassRule&
 //                  different things (it lists them and says how to say
 //                  which);
 //   those of opening, loading and writing the store.
-Result<std::vector<ClassRule>> forget_rules_named(const std::string& location, const Domain& domain, std::string_view what,
+Result<std::vector<ClassRule>> forget_rules_named(const std::string& location, const std::string& household,
+                                                  const Domain& domain, std::string_view what,
                                                   const ConceptSource& concepts);
 
 // Keeps the rules the goals of `knowledge` induce, with their evidence, in

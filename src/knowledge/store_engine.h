@@ -9,7 +9,15 @@
 //     refused when opened, never misread or half-used;
 //   - a store another process has open is never emptied (StoreAccess::kFresh
 //     is refused "in use" then);
-//   - load() reads one consistent snapshot while writers go on.
+//   - load() reads one consistent snapshot while writers go on;
+//   - an engine is opened for one household (kDefaultHousehold unless
+//     named): its goals and task structures are that household's alone,
+//     saved, removed and loaded under its name, so two households that
+//     want different places for one kind never overwrite each other; its
+//     rules are the fleet's, shared by every household of the store;
+//   - a store of an older schema version is migrated when opened to write
+//     (one step per version, in one transaction), and read as it is when
+//     opened read-only.
 //
 // Adding a kind of stored knowledge: its text form in store_codec.h, its
 // save/remove here, its table in each engine's schema (with a migration
@@ -30,15 +38,16 @@
 
 namespace apprentice {
 
-// The version of the stores' schema this program reads and writes. A store
-// of an earlier version is brought up to this one when opened for writing
-// (each engine's migration steps), and read as it is when opened read-only.
-//   1  tasks, goals, rules
-//   2  class_rules and forgotten_rules (a person's and induced class rules,
-//      with their evidence; the rules forgotten)
-inline constexpr int kKnowledgeSchemaVersion = 2;
-// The earliest version still read.
-inline constexpr int kOldestKnowledgeSchemaVersion = 1;
+// The version of the stores' schema this program reads and writes.
+//   1  tasks, goals, rules (one household)
+//   2  goals and tasks belong to a household (a `household` column, part of
+//      their keys); what version 1 held is the default household's
+//   3  class_rules and forgotten_rules, a household's: its rules about
+//      classes of things with their evidence, and those it forgot
+// Each engine migrates a store one step at a time from the oldest version
+// it still reads, kOldestMigratedSchemaVersion.
+inline constexpr int kKnowledgeSchemaVersion = 3;
+inline constexpr int kOldestMigratedSchemaVersion = 1;
 
 // Everything the agent knows, in memory.
 struct Knowledge {
@@ -47,7 +56,7 @@ struct Knowledge {
   RuleMatcher rules;
   // Class rules (knowledge/preferences.h) with their evidence: a person's,
   // kept when said, and those induced from the goals, kept when a session
-  // ends. In the order learned.
+  // ends; the household's, in the order learned.
   ClassRules class_rules;
   // The rules the person told the agent to forget: never used again, even
   // where the goals would induce them anew, until said again.
@@ -74,11 +83,11 @@ class StoreEngine {
   virtual Status remove_rule(const Domain& domain, const Rule& rule) = 0;
   virtual Status remove_task(const std::string& name) = 0;
 
-  // Class rules, by class_rule_key. save_class_rule replaces the rule
-  // under the same key and takes it off the forgotten list (a rule said
-  // again is meant); remove_class_rule removes it (undo); forget_class_rule
-  // removes it and puts it on the forgotten list, so that it is not used
-  // again after a reload.
+  // Class rules, the household's, by class_rule_key. save_class_rule
+  // replaces the rule under the same key and takes it off the forgotten
+  // list (a rule said again is meant); remove_class_rule removes it (undo);
+  // forget_class_rule removes it and puts it on the forgotten list, so that
+  // it is not used again after a reload.
   virtual Status save_class_rule(const ClassRule& rule) = 0;
   virtual Status remove_class_rule(const ClassRule& rule) = 0;
   virtual Status forget_class_rule(const ClassRule& rule) = 0;
@@ -86,6 +95,9 @@ class StoreEngine {
   // Everything stored, read against `domain` (store_codec.h says which
   // entries are refused, and how).
   virtual Result<Knowledge> load(const Domain& domain) const = 0;
+
+  // The households that have goals or tasks in the store, by name.
+  virtual Result<std::vector<std::string>> households() const = 0;
 };
 
 }  // namespace apprentice
