@@ -26,8 +26,10 @@ struct SessionSetup {
   std::string world_name;  // as the start screen offered it, or the uploaded world's name
   Scenario scenario;       // the agent is given only its world; the intent measures progress
   std::string store_name;  // empty: nothing is kept
-  std::optional<std::filesystem::path> store_path;  // the server's own store of that name
-  std::optional<std::filesystem::path> log_path;    // under --log-dir, if given
+  // The agent, as the server's flags say (server.h); its `knowledge` is the
+  // location of the server's own store of that name, or empty.
+  AgentSpec agent;
+  std::optional<std::filesystem::path> log_path;  // under --log-dir, if given
 };
 
 class TeachingSession {
