@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "catalogue.h"
+#include "knowledge/store_location.h"
 #include "session_registry.h"
 #include "util/file.h"
 #include "util/json.h"
@@ -505,6 +506,8 @@ Status serve(const ServeOptions& given, std::ostream& out, const std::function<b
     std::filesystem::create_directories(*options.log_dir, ec);
     if (ec) return make_error(ErrorCode::kIo, options.log_dir->string() + ": " + ec.message());
   }
+  if (auto s = check_household_name(options.household); !s) return tl::unexpected(s.error());
+  options.agent.household = options.household;
   auto catalogue = Catalogue::make(options.data_dir, options.scenarios, options.knowledge);
   if (!catalogue) return tl::unexpected(catalogue.error());
   auto page = load_page(options.data_dir / "web");

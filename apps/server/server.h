@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "face/apprentice.h"
+#include "knowledge/store_access.h"
 #include "util/result.h"
 
 namespace apprentice::serve {
@@ -47,6 +48,7 @@ struct ServeOptions {
   // Stores offered: an SQLite file, named on the page by its stem, or
   // postgresql://USER@HOST:PORT/DB, named by its database (catalogue.h).
   std::vector<std::string> knowledge;
+  std::string household = kDefaultHousehold;  // whose goals and tasks the sessions read and write
   std::optional<std::filesystem::path> log_dir;  // each session's log as DIR/<session>.jsonl
   std::filesystem::path data_dir;                // the shipped data: scenarios, domains, web
   ServeLimits limits;

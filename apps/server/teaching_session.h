@@ -27,7 +27,8 @@ struct SessionSetup {
   Scenario scenario;       // the agent is given only its world; the intent measures progress
   std::string store_name;  // empty: nothing is kept
   // The agent, as the server's flags say (server.h); its `knowledge` is the
-  // location of the server's own store of that name, or empty.
+  // location of the server's own store of that name, or empty, and its
+  // `household` the server's --household.
   AgentSpec agent;
   std::optional<std::filesystem::path> log_path;  // under --log-dir, if given
 };
