@@ -106,8 +106,8 @@ bool fill(const std::string& location, int goals, const apprentice::World& world
   if (!apprentice::is_postgres_location(location)) {
     SQLite::Database db(location, SQLite::OPEN_READWRITE);
     SQLite::Transaction transaction(db);
-    SQLite::Statement insert(db, "INSERT INTO goals(task, subtask, category, place, literals, object, source) "
-                                 "VALUES ('tidy kitchen', 'clear', ?, 'table', ?, 'ceramic-plate1 (ceramic-plate)', 'bench_store')");
+    SQLite::Statement insert(db, "INSERT INTO goals(household, task, subtask, category, place, literals, object, source) "
+                                 "VALUES ('default', 'tidy kitchen', 'clear', ?, 'table', ?, 'ceramic-plate1 (ceramic-plate)', 'bench_store')");
     for (int n = 0; n < goals; ++n) {
       insert.bind(1, "kind-" + std::to_string(n));
       insert.bind(2, literals);
@@ -120,7 +120,8 @@ bool fill(const std::string& location, int goals, const apprentice::World& world
   PGconn* c = PQconnectdb(location.c_str());
   const char* values[] = {literals.c_str(), nullptr};
   const std::string sql =
-      "INSERT INTO goals(task, subtask, category, place, literals, object, source) SELECT 'tidy kitchen', 'clear', "
+      "INSERT INTO goals(household, task, subtask, category, place, literals, object, source) SELECT 'default', "
+      "'tidy kitchen', 'clear', "
       "'kind-' || n, 'table', $1, 'ceramic-plate1 (ceramic-plate)', 'bench_store' FROM generate_series(0, " +
       std::to_string(goals - 1) + ") AS n";
   PGresult* r = PQexecParams(c, sql.c_str(), 1, nullptr, values, nullptr, nullptr, 0);

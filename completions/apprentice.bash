@@ -26,7 +26,7 @@ _apprentice() {
       case ${COMP_WORDS[i-1]} in
         --scenario|--knowledge|--goal|--out|--transcript|--knowledge-out|--knowledge-in|--conditions|--condition|\
         --generalization|--llm|--llm-model|--llm-api-key|--llm-timeout-ms|--llm-connect-timeout-ms|--llm-seed|\
-        --depth|--max-nodes|--task|--domain|\
+        --depth|--max-nodes|--task|--domain|--household|--to|--from|\
         --object|--subtask|--corpus|--plot|--scenarios|--settings|--only|--host|--port|--token|--log-dir|--max-sessions|\
         --idle-seconds) continue ;;
       esac
@@ -68,7 +68,7 @@ _apprentice() {
       # The schemes of src/llm/factory.cc's list of backends.
       COMPREPLY=($(compgen -W "openai:http:// openai-chat:http:// llama:http:// replay: record: corpus:" -- "$cur")); compopt -o nospace 2>/dev/null
       return ;;
-    --goal|--llm-model|--llm-api-key|--llm-timeout-ms|--llm-connect-timeout-ms|--llm-seed|--depth|--max-nodes|--task|--object|--subtask|--host|--port|--token|--max-sessions|--idle-seconds)
+    --goal|--household|--llm-model|--llm-api-key|--llm-timeout-ms|--llm-connect-timeout-ms|--llm-seed|--depth|--max-nodes|--task|--object|--subtask|--host|--port|--token|--max-sessions|--idle-seconds)
       return ;;
   esac
   local words

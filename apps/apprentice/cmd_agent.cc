@@ -99,7 +99,7 @@ CommandResult run_experiment(const ExperimentOptions& options, const std::string
   if (!generalization) return tl::unexpected(generalization.error());
   ExperimentRequest request;
   if (!options.knowledge_in.empty()) {
-    auto knowledge = load_knowledge_read_only(options.knowledge_in, *scenario->world.domain);
+    auto knowledge = load_knowledge_read_only(options.knowledge_in, *scenario->world.domain, options.household);
     if (!knowledge) return tl::unexpected(knowledge.error());
     request.options.knowledge_in = std::move(*knowledge);
   }
@@ -165,6 +165,7 @@ CommandResult run_teach(const TeachOptions& options, const std::string& program,
   spec.instructed_always = true;  // a person is teaching
   spec.generalization = options.generalization;
   spec.knowledge = options.knowledge;
+  spec.household = options.household;
   spec.goal_repair = options.llm.goal_repair;
   spec.offer_ungrounded = options.llm.offer_ungrounded;
   spec.llm = llm_spec(options.llm);
@@ -207,6 +208,7 @@ CommandResult run_run(const RunOptions& options, std::ostream& out) {
   AgentSpec spec = default_agent_spec();
   spec.condition = "knowledge-only";
   spec.knowledge = options.knowledge;
+  spec.household = options.household;
   spec.store_access = StoreAccess::kReadOnly;
   auto session = make_agent_session(spec, *scenario);
   if (!session) return tl::unexpected(session.error());
@@ -228,13 +230,17 @@ CommandResult copy_between_stores(const KnowledgeOptions& options, const Domain&
     return make_error(ErrorCode::kInvalidInput, "knowledge " + options.action + " takes " +
                                                     (exporting ? "--to STORE, the store to copy into"
                                                                : "--from STORE, the store to copy from"));
+  if (!options.household.empty())
+    return make_error(ErrorCode::kInvalidInput, "knowledge " + options.action +
+                                                    " copies every household of the store; --household is for printing one");
   const std::string& from = exporting ? options.knowledge : other;
   const std::string& to = exporting ? other : options.knowledge;
   auto copied = copy_knowledge(from, to, domain);
   if (!copied) return tl::unexpected(copied.error());
   if (options.json) {
     out << dump_json(nlohmann::json{{"from", scrub_store_location(from)}, {"to", scrub_store_location(to)},
-                                    {"tasks", copied->tasks}, {"goals", copied->goals}, {"rules", copied->rules}},
+                                    {"tasks", copied->tasks}, {"goals", copied->goals}, {"rules", copied->rules},
+                                    {"households", copied->households}},
                      2)
         << "\n";
     return Outcome::kSuccess;
@@ -257,7 +263,8 @@ CommandResult run_knowledge(const KnowledgeOptions& options, const std::string& 
   if (!options.action.empty()) return copy_between_stores(options, *domain, out);
   if (!options.to.empty() || !options.from.empty())
     return make_error(ErrorCode::kInvalidInput, "--to is for 'knowledge export' and --from for 'knowledge import'");
-  auto store = KnowledgeStore::open(options.knowledge, StoreAccess::kReadOnly);
+  const std::string household = options.household.empty() ? std::string(kDefaultHousehold) : options.household;
+  auto store = KnowledgeStore::open(options.knowledge, StoreAccess::kReadOnly, household);
   if (!store) return tl::unexpected(store.error());
   auto knowledge = store->load(*domain);
   if (!knowledge) return tl::unexpected(knowledge.error());
@@ -273,7 +280,8 @@ CommandResult run_knowledge(const KnowledgeOptions& options, const std::string& 
       goals.push_back({{"text", format_goal_knowledge(g)}, {"object", g.provenance.object}, {"source", g.provenance.source}});
     for (const Rule& r : knowledge->rules.rules())
       rules.push_back({{"signature", rule_signature(*domain, r)}, {"object", r.provenance.object}, {"source", r.provenance.source}});
-    out << dump_json(nlohmann::json{{"tasks", tasks}, {"goals", goals}, {"rules", rules}}, 2) << "\n";
+    out << dump_json(nlohmann::json{{"household", household}, {"tasks", tasks}, {"goals", goals}, {"rules", rules}}, 2)
+        << "\n";
     return Outcome::kSuccess;
   }
   if (options.pddl) {
@@ -290,6 +298,7 @@ CommandResult run_knowledge(const KnowledgeOptions& options, const std::string& 
       out << format_rule(*domain, r) << "  (learned on " << r.provenance.object << " from " << r.provenance.source << ")\n\n";
     return Outcome::kSuccess;
   }
+  if (!options.household.empty()) out << "Household " << household << " (the rules are shared by every household):\n";
   if (knowledge->tasks.empty() && knowledge->goals.size() == 0 && knowledge->rules.size() == 0) {
     out << "Nothing has been learned yet.\n";
     return Outcome::kSuccess;

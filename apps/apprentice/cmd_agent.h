@@ -41,6 +41,7 @@ struct ExperimentOptions {
   std::string transcript_dir;
   std::string knowledge_out;
   std::string knowledge_in;  // empty: every condition starts from nothing
+  std::string household = kDefaultHousehold;  // the household of --knowledge-in read
   std::string generalization = "full";
   bool no_rules = false;
   std::string plot;    // --plot FILE.svg|FILE.png: draw the results
@@ -52,6 +53,7 @@ CommandResult run_experiment(const ExperimentOptions& options, const std::string
 struct TeachOptions {
   std::string scenario;
   std::string knowledge;  // empty: nothing kept
+  std::string household = kDefaultHousehold;
   std::string condition = "inst+search4";
   std::string generalization = "full";
   bool quiet = false;  // only the questions and the summary; no progress line
@@ -62,6 +64,7 @@ CommandResult run_teach(const TeachOptions& options, const std::string& program,
 struct RunOptions {
   std::string scenario;
   std::string knowledge;
+  std::string household = kDefaultHousehold;
   std::string task;  // empty: the only task learned
   bool json = false;
 };
@@ -73,6 +76,9 @@ struct KnowledgeOptions {
   std::string action;
   std::string to, from;
   std::string knowledge;
+  // The household printed; empty: the default one (export and import copy
+  // every household and refuse this).
+  std::string household;
   std::string domain;  // empty: the shipped kitchen domain
   bool json = false;
   bool pddl = false;  // goals and rules in PDDL terms, not English

@@ -331,6 +331,8 @@ int run(int argc, char** argv) {
   experiment_cmd->add_option("--knowledge-out", experiment.knowledge_out, "Keep each condition's knowledge in DIR/<condition>.sqlite");
   experiment_cmd->add_option("--knowledge-in", experiment.knowledge_in,
                              "Start every condition from a copy of this knowledge store, an SQLite file or postgresql://... (never modified)");
+  experiment_cmd->add_option("--household", experiment.household, "With --knowledge-in: the household whose goals and tasks to start from")
+      ->capture_default_str();
   experiment_cmd->add_option("--generalization", experiment.generalization, "Rule generalization: full or paper")
       ->capture_default_str();
   experiment_cmd->add_flag("--no-rules", experiment.no_rules, "Do not use learned policy rules");
@@ -349,6 +351,7 @@ int run(int argc, char** argv) {
   auto* teach_cmd = app.add_subcommand("teach", "Teach the agent at the terminal: it asks, you answer");
   teach_cmd->add_option("--scenario", teach.scenario, "Scenario file (YAML)")->required();
   teach_cmd->add_option("--knowledge", teach.knowledge, "Knowledge store to load and extend: an SQLite file, or postgresql://USER@HOST:PORT/DB");
+  teach_cmd->add_option("--household", teach.household, "The household whose goal preferences and task structures are read and written (default: default); rules are shared")->capture_default_str();
   teach_cmd->add_option("--condition", teach.condition, "Sources besides you: inst, inst+search4, inst+llm, ...")
       ->capture_default_str();
   teach_cmd->add_option("--generalization", teach.generalization, "Rule generalization: full or paper")
@@ -364,6 +367,7 @@ int run(int argc, char** argv) {
   auto* run_cmd = app.add_subcommand("run", "Perform a learned task with learned knowledge alone");
   run_cmd->add_option("--scenario", run_options.scenario, "Scenario file (YAML)")->required();
   run_cmd->add_option("--knowledge", run_options.knowledge, "Knowledge store: an SQLite file, or postgresql://USER@HOST:PORT/DB")->required();
+  run_cmd->add_option("--household", run_options.household, "The household whose goal preferences and task structures are read and written (default: default); rules are shared")->capture_default_str();
   run_cmd->add_option("--task", run_options.task, "Task name (default: the only one learned)");
   run_cmd->add_flag("--json", run_options.json, "Machine-readable output");
   on_run(run_cmd, [&] { result = run_run(run_options, std::cout); });
@@ -375,6 +379,8 @@ int run(int argc, char** argv) {
                             "PostgreSQL, either way)")
       ->check(CLI::IsMember({"export", "import"}));
   knowledge_cmd->add_option("--knowledge", knowledge.knowledge, "Knowledge store: an SQLite file, or postgresql://USER@HOST:PORT/DB")->required();
+  knowledge_cmd->add_option("--household", knowledge.household,
+                            "The household whose goals and tasks to print (default: default); the rules are shared");
   knowledge_cmd->add_option("--to", knowledge.to, "With export: the store to copy into (created if missing)");
   knowledge_cmd->add_option("--from", knowledge.from, "With import: the store to copy from (only read)");
   knowledge_cmd->add_option("--domain", knowledge.domain, "PDDL domain the rules use (default: the kitchen)");
@@ -391,6 +397,9 @@ int run(int argc, char** argv) {
                         "A world to offer besides data/scenarios (YAML; repeatable; the first is preselected)");
   serve_cmd->add_option("--knowledge", serve_knowledge,
                         "A knowledge store to offer, by its file name (SQLite; repeatable; created if missing)");
+  serve_cmd->add_option("--household", serve_options.household,
+                        "The household whose goals and tasks every session reads and writes; rules are shared")
+      ->capture_default_str();
   serve_cmd->add_option("--host", serve_options.host, "Address to listen on (other than loopback: needs --token)")
       ->capture_default_str();
   serve_cmd->add_option("--port", serve_options.port, "Port to listen on (0: any free port)")

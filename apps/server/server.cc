@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "catalogue.h"
+#include "knowledge/store_location.h"
 #include "session_registry.h"
 #include "util/file.h"
 #include "util/json.h"
@@ -188,6 +189,7 @@ void WebServer::create_session(const httplib::Request& req, httplib::Response& r
   setup.scenario = std::move(*scenario);
   setup.store_name = store_name;
   setup.store_path = *store;
+  setup.household = options_.household;
   if (options_.log_dir) setup.log_path = *options_.log_dir / (setup.id + ".jsonl");
   auto session = sessions_.start(std::move(setup));
   if (!session) return send_error(res, status_for(session.error()), session.error().message);
@@ -418,6 +420,7 @@ Status serve(const ServeOptions& options, std::ostream& out, const std::function
     std::filesystem::create_directories(*options.log_dir, ec);
     if (ec) return make_error(ErrorCode::kIo, options.log_dir->string() + ": " + ec.message());
   }
+  if (auto s = check_household_name(options.household); !s) return tl::unexpected(s.error());
   auto catalogue = Catalogue::make(options.data_dir, options.scenarios, options.knowledge);
   if (!catalogue) return tl::unexpected(catalogue.error());
   auto page = load_page(options.data_dir / "web");

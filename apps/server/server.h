@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "knowledge/store_access.h"
 #include "util/result.h"
 
 namespace apprentice::serve {
@@ -41,6 +42,7 @@ struct ServeOptions {
   std::string token;
   std::vector<std::filesystem::path> scenarios;  // offered besides data/scenarios; the first is preselected
   std::vector<std::filesystem::path> knowledge;  // stores offered by their file's stem
+  std::string household = kDefaultHousehold;     // whose goals and tasks the sessions read and write
   std::optional<std::filesystem::path> log_dir;  // each session's log as DIR/<session>.jsonl
   std::filesystem::path data_dir;                // the shipped data: scenarios, domains, web
   ServeLimits limits;

@@ -59,6 +59,7 @@ Result<std::unique_ptr<TeachingSession>> TeachingSession::start(SessionSetup set
   AgentSpec spec = default_agent_spec();
   spec.condition = "inst+search4";
   if (setup.store_path) spec.knowledge = setup.store_path->string();
+  spec.household = setup.household;
   auto agent = make_agent_session(spec, setup.scenario);
   if (!agent) return tl::unexpected(agent.error());
   auto events = SessionEvents::open(setup.log_path);

@@ -28,6 +28,7 @@ struct SessionSetup {
   std::string store_name;  // empty: nothing is kept
   std::optional<std::filesystem::path> store_path;  // the server's own store of that name
   std::optional<std::filesystem::path> log_path;    // under --log-dir, if given
+  std::string household = kDefaultHousehold;        // serve --household
 };
 
 class TeachingSession {

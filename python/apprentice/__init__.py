@@ -86,7 +86,8 @@ def experiment(scenario_path, conditions=None, llm=None, generalization="full", 
     options: as the CLI's flags of the same names: max_reprompts,
         goal_repair, offer_ungrounded, llm_model, llm_api_key,
         llm_timeout_ms, llm_connect_timeout_ms, llm_seed, llm_optional,
-        llm_goal_responses.
+        llm_goal_responses; household: the household of knowledge_in
+        whose goals and tasks every condition starts from.
 
     Returns a list with one dict per condition, with the keys that
     `apprentice experiment --json` prints (condition, completion_rate,

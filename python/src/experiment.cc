@@ -22,7 +22,8 @@ std::string experiment_json(const py::object& scenario_path, const std::vector<s
   ExperimentRequest request;
   if (!knowledge_in.is_none())
     request.options.knowledge_in =
-        unwrap(load_knowledge_read_only(py::cast<std::string>(knowledge_in), *scenario.scenario->world.domain));
+        unwrap(load_knowledge_read_only(py::cast<std::string>(knowledge_in), *scenario.scenario->world.domain,
+                                        spec.household));
   if (!knowledge_out.is_none()) request.options.knowledge_out = py::cast<std::string>(knowledge_out);
   request.conditions = conditions;
   request.llm_spec = llm::resolve_llm_spec(llm.value_or(""));

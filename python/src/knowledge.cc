@@ -18,9 +18,10 @@ std::string template_literal_text(const GoalTemplateLiteral& l) {
 // must exist and hold a store; nothing is ever written to it.
 struct StoreView : KnowledgeView {
   std::string path;
+  std::string household;
 };
 
-StoreView open_store(const py::object& path_like, const py::object& domain_path_like) {
+StoreView open_store(const py::object& path_like, const py::object& domain_path_like, const std::string& household) {
   py::object fspath = py::module_::import("os").attr("fspath");
   std::filesystem::path path = py::str(fspath(path_like)).cast<std::string>();
   std::filesystem::path domain_path = domain_path_like.is_none()
@@ -36,13 +37,14 @@ StoreView open_store(const py::object& path_like, const py::object& domain_path_
       return make_error(ErrorCode::kFailedPrecondition, path.string() + " is empty, not a knowledge store");
     auto domain = read_domain_file(domain_path);
     if (!domain) return tl::unexpected(domain.error());
-    auto store = KnowledgeStore::open(path, StoreAccess::kReadOnly);
+    auto store = KnowledgeStore::open(path, StoreAccess::kReadOnly, household);
     if (!store) return tl::unexpected(store.error());
     auto knowledge = store->load(*domain);
     if (!knowledge) return tl::unexpected(knowledge.error());
     StoreView out;
     static_cast<KnowledgeView&>(out) = view_of(*knowledge, *domain);
     out.path = store->location();
+    out.household = store->household();
     return out;
   }();
   return unwrap(std::move(view));
@@ -126,12 +128,14 @@ void bind_knowledge(py::module_& m) {
 
   py::class_<StoreView, KnowledgeView>(
       m, "KnowledgeStore",
-      "A knowledge store (SQLite) written by `apprentice teach` or an Agent, read into memory; never written. "
-      "`domain` is the PDDL domain its rules use (default: the shipped kitchen).")
-      .def(py::init(&open_store), py::arg("path"), py::arg("domain") = py::none(),
+      "A knowledge store (an SQLite file or a postgresql:// URL) written by `apprentice teach` or an Agent, read "
+      "into memory; never written. `domain` is the PDDL domain its rules use (default: the shipped kitchen); "
+      "`household` whose goals and tasks are read (the rules are shared by every household).")
+      .def(py::init(&open_store), py::arg("path"), py::arg("domain") = py::none(), py::arg("household") = kDefaultHousehold,
            "Raises apprentice.Error: 'not found' for a missing file, 'failed precondition' for a file that is not "
            "a store of this version, 'data loss' for an unreadable one.")
       .def_readonly("path", &StoreView::path)
+      .def_readonly("household", &StoreView::household)
       .def("__repr__", [](const StoreView& k) { return "<KnowledgeStore " + k.path + ": " + count_text(k) + ">"; });
 }
 

@@ -174,6 +174,26 @@ def test_a_condition_with_an_llm_needs_one(monkeypatch):
     assert raised.value.code == "invalid input"
 
 
+def test_households_keep_their_own_goals_and_share_the_rules(tmp_path):
+    store = tmp_path / "fleet.sqlite"
+    smiths = apprentice.Agent(str(TWO_OBJECTS), knowledge=store, household="smiths")
+    smiths.learn(KitchenTeacher())
+    joneses = apprentice.Agent(str(TWO_OBJECTS), knowledge=store, household="joneses")
+    assert len(joneses.knowledge.goals) == 0 and not joneses.knowledge.tasks
+    read_smiths = apprentice.KnowledgeStore(store, household="smiths")
+    read_joneses = apprentice.KnowledgeStore(store, household="joneses")
+    assert (read_smiths.household, read_joneses.household) == ("smiths", "joneses")
+    assert sorted(g.category for g in read_smiths.goals) == ["ketchup", "paper-plate"]
+    assert read_joneses.goals == [] and read_joneses.tasks == []
+    assert read_smiths.rules and [r.signature for r in read_joneses.rules] == [r.signature for r in read_smiths.rules]
+    # The default household is another one again.
+    assert apprentice.KnowledgeStore(store).goals == []
+    with pytest.raises(apprentice.Error) as raised:
+        apprentice.Agent(str(TWO_OBJECTS), knowledge=store, household="the smiths")
+    assert raised.value.code == "invalid input"
+    assert "cannot name a household" in str(raised.value)
+
+
 class RefusingTeacher(KitchenTeacher):
     """Teaches the structure and the ketchup, but answers the paper plate's
     goal question only with replies the agent cannot use."""

@@ -32,9 +32,17 @@ std::string fact_words(const std::string& predicate, bool positive, const std::v
 
 std::vector<std::string> template_arguments(const GoalTemplateLiteral& literal, const std::string& category) {
   std::vector<std::string> args;
-  for (const GoalTemplateArgument& a : literal.arguments)
-    args.push_back(a.object_of_interest ? std::string(language::article_for(category)) + " " + spoken_category(category)
-                                        : "the " + spoken_category(a.category));
+  for (const GoalTemplateArgument& a : literal.arguments) {
+    if (a.object_of_interest) {
+      args.push_back(std::string(language::article_for(category)) + " " + spoken_category(category));
+      continue;
+    }
+    // A look-alike keeps what told it apart: "the top drawer", not "the
+    // drawer" when the world had two.
+    std::string name = spoken_category(a.category);
+    for (auto word = a.properties.rbegin(); word != a.properties.rend(); ++word) name = *word + " " + name;
+    args.push_back("the " + name);
+  }
   return args;
 }
 

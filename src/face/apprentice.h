@@ -92,10 +92,14 @@ struct AgentSpec {
   std::string goal_repair = "all";
   int max_reprompts = 1;
   bool offer_ungrounded = false;
-  // The knowledge store (SQLite), as --knowledge names it: loaded at the
+  // The knowledge store (an SQLite file or a postgresql:// URL), as --knowledge names it: loaded at the
   // start and extended as the agent learns. Empty: nothing is kept.
   std::string knowledge;
   StoreAccess store_access = StoreAccess::kReadWrite;
+  // The household whose goal preferences and task structures the session
+  // reads and writes (--household); the store's policy rules are shared by
+  // all its households. 1 to 64 letters, digits, '-', '_' or '.'.
+  std::string household = kDefaultHousehold;
   // Knowledge to start from instead of the store's; with a store it is
   // written into it first (experiment --knowledge-in with --knowledge-out).
   std::shared_ptr<const Knowledge> start_from;

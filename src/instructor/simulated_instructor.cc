@@ -109,7 +109,7 @@ std::string SimulatedInstructor::which(const Question& question, const World& wo
   if (question.choices.empty()) return "You are done.";
   ObjectId chosen = question.choices.front();
   if (question.object) {
-    if (const IntentEntry* entry = scenario_.find_intent(question.subtask, world.universe->info(*question.object).category)) {
+    if (const IntentEntry* entry = scenario_.intent_for(question.subtask, *question.object)) {
       for (ObjectId c : question.choices)
         if (c == entry->place) chosen = c;
     }

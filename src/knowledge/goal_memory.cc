@@ -94,26 +94,28 @@ std::string format_goal_knowledge(const GoalKnowledge& k) {
 }
 
 void GoalMemory::add(GoalKnowledge knowledge) {
-  for (GoalKnowledge& g : goals_) {
-    if (g.key == knowledge.key) {
-      g = std::move(knowledge);
-      return;
-    }
+  auto [at, inserted] = index_.try_emplace(knowledge.key, goals_.size());
+  if (!inserted) {
+    goals_[at->second] = std::move(knowledge);
+    return;
   }
   goals_.push_back(std::move(knowledge));
 }
 
 bool GoalMemory::remove(const GoalKey& key) {
-  auto it = std::find_if(goals_.begin(), goals_.end(), [&](const GoalKnowledge& g) { return g.key == key; });
-  if (it == goals_.end()) return false;
-  goals_.erase(it);
+  auto at = index_.find(key);
+  if (at == index_.end()) return false;
+  const std::size_t removed = at->second;
+  goals_.erase(goals_.begin() + static_cast<std::ptrdiff_t>(removed));
+  index_.erase(at);
+  for (auto& [k, i] : index_)
+    if (i > removed) --i;
   return true;
 }
 
 const GoalKnowledge* GoalMemory::find(const GoalKey& key) const {
-  for (const GoalKnowledge& g : goals_)
-    if (g.key == key) return &g;
-  return nullptr;
+  auto at = index_.find(key);
+  return at == index_.end() ? nullptr : &goals_[at->second];
 }
 
 }  // namespace apprentice

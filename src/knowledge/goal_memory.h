@@ -9,6 +9,7 @@
 #pragma once
 
 #include <optional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,7 @@ struct GoalKey {
   std::string category;  // "ceramic-plate"
   std::string place;     // the category of the subtask's place: "table"
   friend bool operator==(const GoalKey&, const GoalKey&) = default;
+  friend auto operator<=>(const GoalKey&, const GoalKey&) = default;
 };
 
 struct GoalKnowledge {
@@ -78,6 +80,9 @@ class GoalMemory {
 
  private:
   std::vector<GoalKnowledge> goals_;
+  // Where each key's goal is in goals_: add and find in O(log n), so that
+  // loading a store of 100,000 goals is not quadratic.
+  std::map<GoalKey, std::size_t> index_;
 };
 
 }  // namespace apprentice

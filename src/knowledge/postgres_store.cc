@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
+#include <iterator>
 #include <optional>
 #include <thread>
 #include <vector>
@@ -73,8 +74,9 @@ Error statement_error(const std::string& where, const PGresult* r, PGconn* conne
 
 class PostgresStore final : public StoreEngine {
  public:
-  PostgresStore(std::string url, std::string where, std::string secret, StoreAccess access)
-      : url_(std::move(url)), where_(std::move(where)), secret_(std::move(secret)), access_(access) {}
+  PostgresStore(std::string url, std::string where, std::string secret, StoreAccess access, std::string household)
+      : url_(std::move(url)), where_(std::move(where)), secret_(std::move(secret)), access_(access),
+        household_(std::move(household)) {}
 
   Status connect();
   Status check_or_create_schema();
@@ -87,6 +89,7 @@ class PostgresStore final : public StoreEngine {
   Status remove_rule(const Domain& domain, const Rule& rule) override;
   Status remove_task(const std::string& name) override;
   Result<Knowledge> load(const Domain& domain) const override;
+  Result<std::vector<std::string>> households() const override;
 
  private:
   PgResult run(const std::string& sql, const Texts& values = {}) const;
@@ -99,7 +102,16 @@ class PostgresStore final : public StoreEngine {
   template <typename Parameters>
   Status write(const char* sql, Parameters parameters);
   Result<Knowledge> load_once(const Domain& domain) const;
-  Status check_schema() const;
+  // meta's schema version, or the store's error.
+  Result<std::string> read_version() const;
+  // Runs `body` in one transaction holding the creation lock (creating
+  // the tables, migrating them), rolled back if it fails.
+  template <typename Body>
+  Status under_creation_lock(Body body);
+  // Migrates a store of an older version, in one transaction that reads
+  // the version again under the creation lock.
+  Status migrate();
+  Status check_schema();
 
   // The URL as given (it may hold the password): for libpq only.
   std::string url_;
@@ -107,6 +119,10 @@ class PostgresStore final : public StoreEngine {
   std::string where_;
   std::string secret_;
   StoreAccess access_;
+  std::string household_;
+  // The store's schema version: kKnowledgeSchemaVersion, or an older one a
+  // reader reads as it is.
+  int version_ = kKnowledgeSchemaVersion;
   PgConnection connection_;
 };
 
@@ -174,19 +190,55 @@ bool PostgresStore::reconnected() const {
   return false;
 }
 
-// The columns load() reads: a store without them is damaged.
-constexpr const char* kTasksQuery = "SELECT name, structure FROM tasks ORDER BY name";
-constexpr const char* kGoalsQuery = "SELECT task, subtask, category, place, literals, object, source FROM goals ORDER BY id";
+// The columns load() reads: a store without them is damaged. A store of
+// version 1, read as it is (opened read-only), is the default household's.
+constexpr const char* kTasksQuery = "SELECT name, structure FROM tasks WHERE household = $1 ORDER BY name";
+constexpr const char* kGoalsQuery =
+    "SELECT task, subtask, category, place, literals, object, source FROM goals WHERE household = $1 ORDER BY id";
+constexpr const char* kTasksQueryV1 = "SELECT name, structure FROM tasks WHERE $1::text = 'default' ORDER BY name";
+constexpr const char* kGoalsQueryV1 =
+    "SELECT task, subtask, category, place, literals, object, source FROM goals WHERE $1::text = 'default' ORDER BY id";
 constexpr const char* kRulesQuery = "SELECT body, object, source FROM rules ORDER BY id";
+constexpr const char* kHouseholdsQuery = "SELECT household FROM goals UNION SELECT household FROM tasks ORDER BY 1";
+constexpr const char* kHouseholdsQueryV1 =
+    "SELECT 'default' WHERE EXISTS(SELECT 1 FROM goals) OR EXISTS(SELECT 1 FROM tasks)";
+
+// The SQL below names the default household as a literal.
+static_assert(std::string_view(kDefaultHousehold) == "default");
 
 constexpr const char* kSchema =
     "CREATE TABLE meta(key TEXT PRIMARY KEY, value TEXT NOT NULL);"
-    "CREATE TABLE goals(id BIGSERIAL PRIMARY KEY, task TEXT NOT NULL, subtask TEXT NOT NULL, category TEXT NOT NULL, "
-    "place TEXT NOT NULL, literals TEXT NOT NULL, object TEXT NOT NULL, source TEXT NOT NULL, "
-    "UNIQUE(task, subtask, category, place));"
-    "CREATE TABLE tasks(name TEXT PRIMARY KEY, structure TEXT NOT NULL);"
+    "CREATE TABLE goals(id BIGSERIAL PRIMARY KEY, household TEXT NOT NULL, task TEXT NOT NULL, subtask TEXT NOT NULL, "
+    "category TEXT NOT NULL, place TEXT NOT NULL, literals TEXT NOT NULL, object TEXT NOT NULL, source TEXT NOT NULL, "
+    "UNIQUE(household, task, subtask, category, place));"
+    "CREATE TABLE tasks(household TEXT NOT NULL, name TEXT NOT NULL, structure TEXT NOT NULL, PRIMARY KEY(household, name));"
     "CREATE TABLE rules(id BIGSERIAL PRIMARY KEY, signature TEXT NOT NULL UNIQUE, body TEXT NOT NULL, "
     "object TEXT NOT NULL, source TEXT NOT NULL);";
+
+// The steps from each older schema version to the next, in order: entry i
+// goes from version i + kOldestMigratedSchemaVersion. Version 1 to 2: goals
+// and tasks gain a household, part of their keys; what there was is the
+// default household's (the constraints version 1 made have PostgreSQL's
+// default names).
+constexpr const char* kMigrations[] = {
+    "ALTER TABLE goals ADD COLUMN household TEXT NOT NULL DEFAULT 'default';"
+    "ALTER TABLE goals ALTER COLUMN household DROP DEFAULT;"
+    "ALTER TABLE goals DROP CONSTRAINT goals_task_subtask_category_place_key;"
+    "ALTER TABLE goals ADD UNIQUE(household, task, subtask, category, place);"
+    "ALTER TABLE tasks ADD COLUMN household TEXT NOT NULL DEFAULT 'default';"
+    "ALTER TABLE tasks ALTER COLUMN household DROP DEFAULT;"
+    "ALTER TABLE tasks DROP CONSTRAINT tasks_pkey;"
+    "ALTER TABLE tasks ADD PRIMARY KEY(household, name);",
+};
+static_assert(std::size(kMigrations) == kKnowledgeSchemaVersion - kOldestMigratedSchemaVersion);
+
+// What version meta names: kOldestMigratedSchemaVersion ..
+// kKnowledgeSchemaVersion, or 0 for anything else.
+int version_number(const std::string& text) {
+  for (int v = kOldestMigratedSchemaVersion; v <= kKnowledgeSchemaVersion; ++v)
+    if (text == std::to_string(v)) return v;
+  return 0;
+}
 
 Status PostgresStore::check_or_create_schema() {
   auto tables = [&]() -> Result<std::pair<bool, long>> {
@@ -206,12 +258,7 @@ Status PostgresStore::check_or_create_schema() {
   if (!found->first && access_ == StoreAccess::kReadOnly)
     return make_error(ErrorCode::kNotFound, where_ + ": no such knowledge store (the database holds no tables)");
   if (!found->first) {
-    if (auto s = must("BEGIN"); !s) return s;
-    auto created = [&]() -> Status {
-      if (auto s = must("SELECT pg_advisory_xact_lock($1::int, hashtext(coalesce(current_schema(), '')))",
-                        {std::to_string(kCreationLockClass)});
-          !s)
-        return s;
+    auto created = under_creation_lock([&]() -> Status {
       auto again = tables();
       if (!again) return tl::unexpected(again.error());
       if (again->first) return {};
@@ -219,17 +266,13 @@ Status PostgresStore::check_or_create_schema() {
       if (auto s = must(kSchema); !s) return s;
       return must("INSERT INTO meta(key, value) VALUES ('format', $1), ('schema_version', $2)",
                   {kKnowledgeFormatName, std::to_string(kKnowledgeSchemaVersion)});
-    }();
-    if (!created) {
-      (void)run("ROLLBACK");
-      return created;
-    }
-    if (auto s = must("COMMIT"); !s) return s;
+    });
+    if (!created) return created;
   }
   return check_schema();
 }
 
-Status PostgresStore::check_schema() const {
+Result<std::string> PostgresStore::read_version() const {
   PgResult meta = run("SELECT key, value FROM meta");
   if (!succeeded(meta.get())) return tl::unexpected(statement_error(where_, meta.get(), connection_.get(), secret_));
   std::string format, version;
@@ -240,13 +283,48 @@ Status PostgresStore::check_schema() const {
   }
   if (format != kKnowledgeFormatName)
     return make_error(ErrorCode::kFailedPrecondition, where_ + " is not an apprentice knowledge store");
-  if (version != std::to_string(kKnowledgeSchemaVersion))
+  if (version_number(version) == 0)
     return make_error(ErrorCode::kFailedPrecondition,
                       where_ + " was written with knowledge schema version " + version + "; this apprentice reads version " +
                           std::to_string(kKnowledgeSchemaVersion) +
                           ". Relearn into a new store, or use the apprentice version that wrote it.");
-  for (const char* query : {kTasksQuery, kGoalsQuery, kRulesQuery}) {
-    PgResult r = run(std::string(query) + " LIMIT 0");
+  return version;
+}
+
+template <typename Body>
+Status PostgresStore::under_creation_lock(Body body) {
+  if (auto s = must("BEGIN"); !s) return s;
+  Status done = must("SELECT pg_advisory_xact_lock($1::int, hashtext(coalesce(current_schema(), '')))",
+                     {std::to_string(kCreationLockClass)});
+  if (done) done = body();
+  if (!done) {
+    (void)run("ROLLBACK");
+    return done;
+  }
+  return must("COMMIT");
+}
+
+Status PostgresStore::migrate() {
+  return under_creation_lock([&]() -> Status {
+    auto again = read_version();
+    if (!again) return tl::unexpected(again.error());
+    for (int v = version_number(*again); v < kKnowledgeSchemaVersion; ++v)
+      if (auto s = must(kMigrations[v - kOldestMigratedSchemaVersion]); !s) return s;
+    return must("UPDATE meta SET value = $1 WHERE key = 'schema_version'", {std::to_string(kKnowledgeSchemaVersion)});
+  });
+}
+
+Status PostgresStore::check_schema() {
+  auto version = read_version();
+  if (!version) return tl::unexpected(version.error());
+  version_ = version_number(*version);
+  if (version_ < kKnowledgeSchemaVersion && access_ != StoreAccess::kReadOnly) {
+    if (auto s = migrate(); !s) return s;
+    version_ = kKnowledgeSchemaVersion;
+  }
+  const bool v1 = version_ == 1;
+  for (const char* query : {v1 ? kTasksQueryV1 : kTasksQuery, v1 ? kGoalsQueryV1 : kGoalsQuery, kRulesQuery}) {
+    PgResult r = run(std::string(query) + " LIMIT 0", query == kRulesQuery ? Texts{} : Texts{household_});
     if (succeeded(r.get())) continue;
     Error e = statement_error(where_, r.get(), connection_.get(), secret_);
     return tl::unexpected(e);
@@ -273,11 +351,12 @@ Status PostgresStore::save_goal(const GoalKnowledge& goal) {
   // A goal saved again under its key is replaced and moves to the end, as
   // SQLite's INSERT OR REPLACE does.
   return write(
-      "INSERT INTO goals(task, subtask, category, place, literals, object, source) VALUES ($1, $2, $3, $4, $5, $6, $7) "
-      "ON CONFLICT (task, subtask, category, place) DO UPDATE SET literals = EXCLUDED.literals, object = "
+      "INSERT INTO goals(household, task, subtask, category, place, literals, object, source) "
+      "VALUES ($1, $2, $3, $4, $5, $6, $7, $8) "
+      "ON CONFLICT (household, task, subtask, category, place) DO UPDATE SET literals = EXCLUDED.literals, object = "
       "EXCLUDED.object, source = EXCLUDED.source, id = nextval(pg_get_serial_sequence('goals', 'id'))",
       [&] {
-        return Texts{goal.key.task, goal.key.subtask, goal.key.category, goal.key.place,
+        return Texts{household_, goal.key.task, goal.key.subtask, goal.key.category, goal.key.place,
                      store_codec::encode_goal_literals(goal), goal.provenance.object, goal.provenance.source};
       });
 }
@@ -291,13 +370,14 @@ Status PostgresStore::save_rule(const Domain& domain, const Rule& rule) {
 }
 
 Status PostgresStore::save_task(const TaskKnowledge& task) {
-  return write("INSERT INTO tasks(name, structure) VALUES ($1, $2) ON CONFLICT (name) DO UPDATE SET structure = EXCLUDED.structure",
-               [&] { return Texts{task.name, store_codec::encode_subtasks(task)}; });
+  return write("INSERT INTO tasks(household, name, structure) VALUES ($1, $2, $3) ON CONFLICT (household, name) DO UPDATE "
+               "SET structure = EXCLUDED.structure",
+               [&] { return Texts{household_, task.name, store_codec::encode_subtasks(task)}; });
 }
 
 Status PostgresStore::remove_goal(const GoalKey& key) {
-  return write("DELETE FROM goals WHERE task = $1 AND subtask = $2 AND category = $3 AND place = $4",
-               [&] { return Texts{key.task, key.subtask, key.category, key.place}; });
+  return write("DELETE FROM goals WHERE household = $1 AND task = $2 AND subtask = $3 AND category = $4 AND place = $5",
+               [&] { return Texts{household_, key.task, key.subtask, key.category, key.place}; });
 }
 
 Status PostgresStore::remove_rule(const Domain& domain, const Rule& rule) {
@@ -305,7 +385,20 @@ Status PostgresStore::remove_rule(const Domain& domain, const Rule& rule) {
 }
 
 Status PostgresStore::remove_task(const std::string& name) {
-  return write("DELETE FROM tasks WHERE name = $1", [&] { return Texts{name}; });
+  return write("DELETE FROM tasks WHERE household = $1 AND name = $2", [&] { return Texts{household_, name}; });
+}
+
+Result<std::vector<std::string>> PostgresStore::households() const {
+  for (int attempt = 0;; ++attempt) {
+    PgResult r = run(version_ == 1 ? kHouseholdsQueryV1 : kHouseholdsQuery);
+    if (succeeded(r.get())) {
+      std::vector<std::string> out;
+      for (int row = 0; row < PQntuples(r.get()); ++row) out.emplace_back(PQgetvalue(r.get(), row, 0));
+      return out;
+    }
+    Error e = statement_error(where_, r.get(), connection_.get(), secret_);
+    if (attempt == kMostReconnects || !reconnected()) return tl::unexpected(e);
+  }
 }
 
 Result<Knowledge> PostgresStore::load(const Domain& domain) const {
@@ -330,9 +423,12 @@ Result<Knowledge> PostgresStore::load_once(const Domain& domain) const {
   };
   // One transaction: a consistent snapshot while writers go on.
   if (PgResult begin = run("BEGIN ISOLATION LEVEL REPEATABLE READ READ ONLY"); !succeeded(begin.get())) return failed(begin);
-  PgResult tasks = run(kTasksQuery);
+  // A version 1 store holds the default household's goals and tasks alone.
+  const bool v1 = version_ == 1;
+  const Texts household{household_};
+  PgResult tasks = run(v1 ? kTasksQueryV1 : kTasksQuery, household);
   if (!succeeded(tasks.get())) return failed(tasks);
-  PgResult goals = run(kGoalsQuery);
+  PgResult goals = run(v1 ? kGoalsQueryV1 : kGoalsQuery, household);
   if (!succeeded(goals.get())) return failed(goals);
   PgResult rules = run(kRulesQuery);
   if (!succeeded(rules.get())) return failed(rules);
@@ -385,13 +481,14 @@ std::optional<std::string> password_in(const std::string& url) {
 
 }  // namespace
 
-Result<std::unique_ptr<StoreEngine>> open_postgres_store(const std::string& url, StoreAccess access) {
+Result<std::unique_ptr<StoreEngine>> open_postgres_store(const std::string& url, StoreAccess access,
+                                                         const std::string& household) {
   const std::string where = scrub_store_location(url);
   auto secret = password_in(url);
   if (!secret)
     return make_error(ErrorCode::kInvalidInput,
                       where + ": not a PostgreSQL URL that can be read; the form is postgresql://USER@HOST:PORT/DATABASE");
-  auto store = std::make_unique<PostgresStore>(url, where, *secret, access);
+  auto store = std::make_unique<PostgresStore>(url, where, *secret, access, household);
   if (auto s = store->connect(); !s) return tl::unexpected(s.error());
   if (auto s = store->check_or_create_schema(); !s) return tl::unexpected(s.error());
   if (access == StoreAccess::kFresh)

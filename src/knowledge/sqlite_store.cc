@@ -52,10 +52,29 @@ tl::unexpected<Error> not_a_store(const std::filesystem::path& path, const std::
   return make_error(ErrorCode::kFailedPrecondition, path.string() + ": not an apprentice knowledge store (" + why + ")");
 }
 
-// The columns load() reads: a store without them is damaged.
-constexpr const char* kTasksQuery = "SELECT name, structure FROM tasks ORDER BY name";
-constexpr const char* kGoalsQuery = "SELECT task, subtask, category, place, literals, object, source FROM goals ORDER BY id";
+// The columns load() reads: a store without them is damaged. A store of
+// version 1, read as it is (opened read-only), is the default household's.
+constexpr const char* kTasksQuery = "SELECT name, structure FROM tasks WHERE household = ? ORDER BY name";
+constexpr const char* kGoalsQuery =
+    "SELECT task, subtask, category, place, literals, object, source FROM goals WHERE household = ? ORDER BY id";
+constexpr const char* kTasksQueryV1 = "SELECT name, structure FROM tasks ORDER BY name";
+constexpr const char* kGoalsQueryV1 = "SELECT task, subtask, category, place, literals, object, source FROM goals ORDER BY id";
 constexpr const char* kRulesQuery = "SELECT body, object, source FROM rules ORDER BY id";
+constexpr const char* kHouseholdsQuery = "SELECT household FROM goals UNION SELECT household FROM tasks ORDER BY 1";
+
+// What version meta names: kOldestMigratedSchemaVersion ..
+// kKnowledgeSchemaVersion, or 0 for anything else.
+int version_number(const std::string& text) {
+  for (int v = kOldestMigratedSchemaVersion; v <= kKnowledgeSchemaVersion; ++v)
+    if (text == std::to_string(v)) return v;
+  return 0;
+}
+
+tl::unexpected<Error> other_version(const std::string& where, const std::string& version) {
+  return make_error(ErrorCode::kFailedPrecondition,
+                    where + " was written with knowledge schema version " + version + "; this apprentice reads version " +
+                        std::to_string(kKnowledgeSchemaVersion) + ". Relearn into a new file, or use the apprentice version that wrote it.");
+}
 
 int table_count(SQLite::Database& db) {
   SQLite::Statement tables(db, "SELECT count(*) FROM sqlite_master WHERE type='table'");
@@ -63,11 +82,42 @@ int table_count(SQLite::Database& db) {
   return tables.getColumn(0).getInt();
 }
 
-// Checks that the database is a store of this version with every table
-// load() reads, creating the schema in an empty database when `may_create`.
-// Creation happens in an immediate transaction that checks again, so two
-// processes creating one store at once make one schema.
-Status check_or_create_schema(SQLite::Database& db, const std::filesystem::path& path, bool may_create) {
+// The schema version in meta, or the store's error.
+Result<std::string> read_version(SQLite::Database& db, const std::filesystem::path& path) {
+  std::string format, version;
+  SQLite::Statement meta(db, "SELECT key, value FROM meta");
+  while (meta.executeStep()) {
+    std::string key = meta.getColumn(0).getString();
+    if (key == "format") format = meta.getColumn(1).getString();
+    if (key == "schema_version") version = meta.getColumn(1).getString();
+  }
+  if (format != kKnowledgeFormatName)
+    return make_error(ErrorCode::kFailedPrecondition, path.string() + " is not an apprentice knowledge store");
+  return version;
+}
+
+// Migrates a store of an older version (`may_write`), in an immediate
+// transaction that reads the version again, so that two processes opening
+// one old store migrate it once. Returns the version now in the store.
+Result<int> migrate_if_old(SQLite::Database& db, const std::filesystem::path& path, int version, bool may_write) {
+  if (version == kKnowledgeSchemaVersion || !may_write) return version;
+  SQLite::Transaction transaction(db, SQLite::TransactionBehavior::IMMEDIATE);
+  auto again = read_version(db, path);
+  if (!again) return tl::unexpected(again.error());
+  const int now = version_number(*again);
+  if (now == 0) return other_version(path.string(), *again);
+  if (now < kKnowledgeSchemaVersion) migrate_knowledge_schema(db, now);
+  transaction.commit();
+  return kKnowledgeSchemaVersion;
+}
+
+// Checks that the database is a store this version reads with every table
+// load() reads, creating the schema in an empty database when `may_create`
+// and migrating an older one to this version when `may_create` (a reader
+// reads it as it is). Creation happens in an immediate transaction that
+// checks again, so two processes creating one store at once make one
+// schema. Returns the store's schema version.
+Result<int> check_or_create_schema(SQLite::Database& db, const std::filesystem::path& path, bool may_create) {
   if (!db.tableExists("meta")) {
     if (table_count(db) > 0)
       return make_error(ErrorCode::kFailedPrecondition,
@@ -82,21 +132,16 @@ Status check_or_create_schema(SQLite::Database& db, const std::filesystem::path&
     }
     transaction.commit();
   }
-  std::string format, version;
-  SQLite::Statement meta(db, "SELECT key, value FROM meta");
-  while (meta.executeStep()) {
-    std::string key = meta.getColumn(0).getString();
-    if (key == "format") format = meta.getColumn(1).getString();
-    if (key == "schema_version") version = meta.getColumn(1).getString();
-  }
-  if (format != kKnowledgeFormatName)
-    return make_error(ErrorCode::kFailedPrecondition, path.string() + " is not an apprentice knowledge store");
-  if (version != std::to_string(kKnowledgeSchemaVersion))
-    return make_error(ErrorCode::kFailedPrecondition,
-                      path.string() + " was written with knowledge schema version " + version +
-                          "; this apprentice reads version " + std::to_string(kKnowledgeSchemaVersion) +
-                          ". Relearn into a new file, or use the apprentice version that wrote it.");
-  for (auto [table, query] : {std::pair{"tasks", kTasksQuery}, {"goals", kGoalsQuery}, {"rules", kRulesQuery}}) {
+  auto found = read_version(db, path);
+  if (!found) return tl::unexpected(found.error());
+  const int old = version_number(*found);
+  if (old == 0) return other_version(path.string(), *found);
+  auto version = migrate_if_old(db, path, old, may_create);
+  if (!version) return version;
+  const bool v1 = *version == 1;
+  for (auto [table, query] : {std::pair{"tasks", v1 ? kTasksQueryV1 : kTasksQuery},
+                              {"goals", v1 ? kGoalsQueryV1 : kGoalsQuery},
+                              {"rules", kRulesQuery}}) {
     try {
       SQLite::Statement check(db, query);
     } catch (const SQLite::Exception& e) {
@@ -104,7 +149,7 @@ Status check_or_create_schema(SQLite::Database& db, const std::filesystem::path&
       return damaged(path, std::string("its ") + table + " table is missing or incomplete (" + e.what() + ")");
     }
   }
-  return {};
+  return *version;
 }
 
 // SQLite's quick_check: the pages and indexes are consistent.
@@ -118,8 +163,10 @@ Status quick_check(SQLite::Database& db, const std::filesystem::path& path) {
 
 class SqliteStore final : public StoreEngine {
  public:
-  SqliteStore(std::filesystem::path path, FileDescriptor lock, std::unique_ptr<SQLite::Database> db)
-      : path_(std::move(path)), lock_(std::move(lock)), db_(std::move(db)) {}
+  SqliteStore(std::filesystem::path path, std::string household, int version, FileDescriptor lock,
+              std::unique_ptr<SQLite::Database> db)
+      : path_(std::move(path)), household_(std::move(household)), version_(version), lock_(std::move(lock)),
+        db_(std::move(db)) {}
   // The database first, then its lock (see lock_).
   ~SqliteStore() override { db_.reset(); }
 
@@ -130,6 +177,7 @@ class SqliteStore final : public StoreEngine {
   Status remove_rule(const Domain& domain, const Rule& rule) override;
   Status remove_task(const std::string& name) override;
   Result<Knowledge> load(const Domain& domain) const override;
+  Result<std::vector<std::string>> households() const override;
 
  private:
   // Runs one statement in its own transaction, with the text parameters
@@ -138,6 +186,10 @@ class SqliteStore final : public StoreEngine {
   Status write(const char* sql, Parameters parameters);
 
   std::filesystem::path path_;
+  std::string household_;
+  // The schema version of the store: kKnowledgeSchemaVersion, or an older
+  // one a reader reads as it is.
+  int version_;
   // The descriptor holding the flock(2). Declared before db_, so closed
   // after the database: closing any descriptor of a file drops the
   // process's POSIX locks on it, SQLite's among them.
@@ -162,9 +214,10 @@ Status SqliteStore::write(const char* sql, Parameters parameters) {
 
 Status SqliteStore::save_goal(const GoalKnowledge& goal) {
   return write(
-      "INSERT OR REPLACE INTO goals(task, subtask, category, place, literals, object, source) VALUES (?, ?, ?, ?, ?, ?, ?)",
+      "INSERT OR REPLACE INTO goals(household, task, subtask, category, place, literals, object, source) "
+      "VALUES (?, ?, ?, ?, ?, ?, ?, ?)",
       [&] {
-        return Texts{goal.key.task, goal.key.subtask, goal.key.category, goal.key.place, store_codec::encode_goal_literals(goal),
+        return Texts{household_, goal.key.task, goal.key.subtask, goal.key.category, goal.key.place, store_codec::encode_goal_literals(goal),
        goal.provenance.object, goal.provenance.source}; });
 }
 
@@ -174,18 +227,38 @@ Status SqliteStore::save_rule(const Domain& domain, const Rule& rule) {
 }
 
 Status SqliteStore::save_task(const TaskKnowledge& task) {
-  return write("INSERT OR REPLACE INTO tasks(name, structure) VALUES (?, ?)", [&] { return Texts{task.name, store_codec::encode_subtasks(task)}; });
+  return write("INSERT OR REPLACE INTO tasks(household, name, structure) VALUES (?, ?, ?)",
+               [&] { return Texts{household_, task.name, store_codec::encode_subtasks(task)}; });
 }
 
 Status SqliteStore::remove_goal(const GoalKey& key) {
-  return write("DELETE FROM goals WHERE task = ? AND subtask = ? AND category = ? AND place = ?", [&] { return Texts{key.task, key.subtask, key.category, key.place}; });
+  return write("DELETE FROM goals WHERE household = ? AND task = ? AND subtask = ? AND category = ? AND place = ?",
+               [&] { return Texts{household_, key.task, key.subtask, key.category, key.place}; });
 }
 
 Status SqliteStore::remove_rule(const Domain& domain, const Rule& rule) {
   return write("DELETE FROM rules WHERE signature = ?", [&] { return Texts{rule_signature(domain, rule)}; });
 }
 
-Status SqliteStore::remove_task(const std::string& name) { return write("DELETE FROM tasks WHERE name = ?", [&] { return Texts{name}; }); }
+Status SqliteStore::remove_task(const std::string& name) {
+  return write("DELETE FROM tasks WHERE household = ? AND name = ?", [&] { return Texts{household_, name}; });
+}
+
+Result<std::vector<std::string>> SqliteStore::households() const {
+  std::vector<std::string> out;
+  try {
+    if (version_ == 1) {
+      SQLite::Statement any(*db_, "SELECT EXISTS(SELECT 1 FROM goals) OR EXISTS(SELECT 1 FROM tasks)");
+      if (any.executeStep() && any.getColumn(0).getInt() != 0) out.emplace_back(kDefaultHousehold);
+      return out;
+    }
+    SQLite::Statement names(*db_, kHouseholdsQuery);
+    while (names.executeStep()) out.push_back(names.getColumn(0).getString());
+  } catch (const std::exception& e) {
+    return tl::unexpected(sqlite_error(path_, e));
+  }
+  return out;
+}
 
 Result<Knowledge> SqliteStore::load(const Domain& domain) const {
   Knowledge knowledge;
@@ -198,8 +271,12 @@ Result<Knowledge> SqliteStore::load(const Domain& domain) const {
   try {
     // One read transaction: a consistent snapshot while writers go on.
     SQLite::Transaction snapshot(*db_, SQLite::TransactionBehavior::DEFERRED);
-    SQLite::Statement tasks(*db_, kTasksQuery);
-    while (tasks.executeStep()) {
+    // A version 1 store holds the default household's goals and tasks alone.
+    const bool v1 = version_ == 1;
+    const bool own = !v1 || household_ == kDefaultHousehold;
+    SQLite::Statement tasks(*db_, v1 ? kTasksQueryV1 : kTasksQuery);
+    if (!v1) tasks.bind(1, household_);
+    while (own && tasks.executeStep()) {
       const std::string name = tasks.getColumn(0).getString();
       auto structure = text(tasks.getColumn(1), store_codec::task_entry(name));
       if (!structure) return located(structure.error());
@@ -207,8 +284,9 @@ Result<Knowledge> SqliteStore::load(const Domain& domain) const {
       if (!task) return located(task.error());
       knowledge.tasks.push_back(std::move(*task));
     }
-    SQLite::Statement goals(*db_, kGoalsQuery);
-    while (goals.executeStep()) {
+    SQLite::Statement goals(*db_, v1 ? kGoalsQueryV1 : kGoalsQuery);
+    if (!v1) goals.bind(1, household_);
+    while (own && goals.executeStep()) {
       GoalKey key{goals.getColumn(0).getString(), goals.getColumn(1).getString(), goals.getColumn(2).getString(),
                   goals.getColumn(3).getString()};
       auto literals = text(goals.getColumn(4), store_codec::goal_entry(key));
@@ -235,7 +313,8 @@ Result<Knowledge> SqliteStore::load(const Domain& domain) const {
 
 }  // namespace
 
-Result<std::unique_ptr<StoreEngine>> open_sqlite_store(const std::filesystem::path& path, StoreAccess access) {
+Result<std::unique_ptr<StoreEngine>> open_sqlite_store(const std::filesystem::path& path, StoreAccess access,
+                                                       const std::string& household) {
   const bool read_only = access == StoreAccess::kReadOnly;
   // 1. The file, created if absent (unless read-only), and its lock. A new
   // store is created whole under another name and moved into place
@@ -316,7 +395,8 @@ Result<std::unique_ptr<StoreEngine>> open_sqlite_store(const std::filesystem::pa
       db->exec("PRAGMA synchronous = FULL");
       if (auto status = quick_check(*db, path); !status) return tl::unexpected(status.error());
     }
-    if (auto status = check_or_create_schema(*db, path, !read_only); !status) return tl::unexpected(status.error());
+    auto version = check_or_create_schema(*db, path, !read_only);
+    if (!version) return tl::unexpected(version.error());
     if (access == StoreAccess::kFresh) {
       SQLite::Transaction transaction(*db, SQLite::TransactionBehavior::IMMEDIATE);
       db->exec("DELETE FROM goals");
@@ -324,7 +404,8 @@ Result<std::unique_ptr<StoreEngine>> open_sqlite_store(const std::filesystem::pa
       db->exec("DELETE FROM rules");
       transaction.commit();
     }
-    return std::unique_ptr<StoreEngine>(std::make_unique<SqliteStore>(path, std::move(lock), std::move(db)));
+    return std::unique_ptr<StoreEngine>(
+        std::make_unique<SqliteStore>(path, household, *version, std::move(lock), std::move(db)));
   } catch (const std::exception& e) {
     return tl::unexpected(sqlite_error(path, e));
   }

@@ -20,14 +20,18 @@
 
 #include <filesystem>
 #include <memory>
+#include <string>
 
 #include "knowledge/store_engine.h"
 #include "util/result.h"
 
 namespace apprentice {
 
-// Opens (or, unless kReadOnly, creates) the SQLite store at `path`; errors
-// as KnowledgeStore::open lists them, each naming the file.
-Result<std::unique_ptr<StoreEngine>> open_sqlite_store(const std::filesystem::path& path, StoreAccess access);
+// Opens (or, unless kReadOnly, creates) the SQLite store at `path` for
+// `household` (a name check_household_name accepts); a store of an older
+// schema version is migrated unless kReadOnly. Errors as
+// KnowledgeStore::open lists them, each naming the file.
+Result<std::unique_ptr<StoreEngine>> open_sqlite_store(const std::filesystem::path& path, StoreAccess access,
+                                                       const std::string& household);
 
 }  // namespace apprentice

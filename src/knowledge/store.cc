@@ -11,42 +11,73 @@ const TaskKnowledge* Knowledge::find_task(const std::string& name) const {
   return nullptr;
 }
 
-KnowledgeStore::KnowledgeStore(std::filesystem::path location, std::unique_ptr<StoreEngine> engine)
-    : location_(std::move(location)), engine_(std::move(engine)) {}
+KnowledgeStore::KnowledgeStore(std::filesystem::path location, std::string household, std::unique_ptr<StoreEngine> engine)
+    : location_(std::move(location)), household_(std::move(household)), engine_(std::move(engine)) {}
 KnowledgeStore::KnowledgeStore(KnowledgeStore&&) noexcept = default;
 KnowledgeStore& KnowledgeStore::operator=(KnowledgeStore&&) noexcept = default;
 KnowledgeStore::~KnowledgeStore() = default;
 
-Result<KnowledgeStore> KnowledgeStore::open(const std::string& location, StoreAccess access) {
-  auto engine = is_postgres_location(location) ? open_postgres_store(location, access) : open_sqlite_store(location, access);
+Result<KnowledgeStore> KnowledgeStore::open(const std::string& location, StoreAccess access, const std::string& household) {
+  if (auto s = check_household_name(household); !s) return tl::unexpected(s.error());
+  auto engine = is_postgres_location(location) ? open_postgres_store(location, access, household)
+                                               : open_sqlite_store(location, access, household);
   if (!engine) return tl::unexpected(engine.error());
-  return KnowledgeStore(scrub_store_location(location), std::move(*engine));
+  return KnowledgeStore(scrub_store_location(location), household, std::move(*engine));
 }
 
-Result<Knowledge> load_knowledge_read_only(const std::string& location, const Domain& domain) {
-  auto store = KnowledgeStore::open(location, StoreAccess::kReadOnly);
+Result<Knowledge> load_knowledge_read_only(const std::string& location, const Domain& domain, const std::string& household) {
+  auto store = KnowledgeStore::open(location, StoreAccess::kReadOnly, household);
   if (!store) return tl::unexpected(store.error());
   return store->load(domain);
 }
 
-Result<KnowledgeCopy> copy_knowledge(const std::string& from, const std::string& to, const Domain& domain) {
-  auto knowledge = load_knowledge_read_only(from, domain);
+namespace {
+
+// Copies one household's tasks and goals (and, with `rules`, the shared
+// rules) from `from` into `to`.
+Status copy_household(const KnowledgeStore& from, KnowledgeStore& to, const Domain& domain, bool rules,
+                      KnowledgeCopy& copied) {
+  auto knowledge = from.load(domain);
   if (!knowledge) return tl::unexpected(knowledge.error());
-  auto store = KnowledgeStore::open(to, StoreAccess::kReadWrite);
-  if (!store) return tl::unexpected(store.error());
-  KnowledgeCopy copied;
   for (const TaskKnowledge& task : knowledge->tasks) {
-    if (auto s = store->save_task(task); !s) return tl::unexpected(s.error());
+    if (auto s = to.save_task(task); !s) return s;
     ++copied.tasks;
   }
   for (const GoalKnowledge& goal : knowledge->goals.all()) {
-    if (auto s = store->save_goal(goal); !s) return tl::unexpected(s.error());
+    if (auto s = to.save_goal(goal); !s) return s;
     ++copied.goals;
   }
+  if (!rules) return {};
   for (const Rule& rule : knowledge->rules.rules()) {
-    if (auto s = store->save_rule(domain, rule); !s) return tl::unexpected(s.error());
+    if (auto s = to.save_rule(domain, rule); !s) return s;
     ++copied.rules;
   }
+  return {};
+}
+
+}  // namespace
+
+Result<KnowledgeCopy> copy_knowledge(const std::string& from, const std::string& to, const Domain& domain) {
+  auto source = KnowledgeStore::open(from, StoreAccess::kReadOnly);
+  if (!source) return tl::unexpected(source.error());
+  auto households = source->households();
+  if (!households) return tl::unexpected(households.error());
+  KnowledgeCopy copied;
+  // The default household first, with the shared rules, even when it has
+  // nothing of its own.
+  auto target = KnowledgeStore::open(to, StoreAccess::kReadWrite);
+  if (!target) return tl::unexpected(target.error());
+  if (auto s = copy_household(*source, *target, domain, true, copied); !s) return tl::unexpected(s.error());
+  for (const std::string& household : *households) {
+    if (household == kDefaultHousehold) continue;
+    auto from_household = KnowledgeStore::open(from, StoreAccess::kReadOnly, household);
+    if (!from_household) return tl::unexpected(from_household.error());
+    auto to_household = KnowledgeStore::open(to, StoreAccess::kReadWrite, household);
+    if (!to_household) return tl::unexpected(to_household.error());
+    if (auto s = copy_household(*from_household, *to_household, domain, false, copied); !s)
+      return tl::unexpected(s.error());
+  }
+  copied.households = households->size();
   return copied;
 }
 

@@ -40,7 +40,12 @@ class KnowledgeStore {
   //                        cannot be created, opened or written; the
   //                        PostgreSQL server cannot be reached
   // Messages name a PostgreSQL store by its URL without the password.
-  static Result<KnowledgeStore> open(const std::string& location, StoreAccess access = StoreAccess::kReadWrite);
+  //   kInvalidInput        also: `household` cannot name a household
+  //                        (check_household_name)
+  // The store is opened for `household`: its goals and tasks are saved,
+  // removed and loaded under that name; rules are shared (store_engine.h).
+  static Result<KnowledgeStore> open(const std::string& location, StoreAccess access = StoreAccess::kReadWrite,
+                                     const std::string& household = kDefaultHousehold);
 
   KnowledgeStore(KnowledgeStore&&) noexcept;
   KnowledgeStore& operator=(KnowledgeStore&&) noexcept;
@@ -64,6 +69,9 @@ class KnowledgeStore {
   // structure that is not a list of subtasks, a goal with no literals, a
   // number where a name belongs) is kDataLoss.
   Result<Knowledge> load(const Domain& domain) const { return engine_->load(domain); }
+  // Every household with goals or tasks in the store.
+  Result<std::vector<std::string>> households() const { return engine_->households(); }
+  const std::string& household() const { return household_; }
 
   // Where the store is, as messages name it: the SQLite file's path, or
   // the PostgreSQL URL without its password.
@@ -71,30 +79,33 @@ class KnowledgeStore {
   std::string location() const { return location_.string(); }
 
  private:
-  KnowledgeStore(std::filesystem::path location, std::unique_ptr<StoreEngine> engine);
+  KnowledgeStore(std::filesystem::path location, std::string household, std::unique_ptr<StoreEngine> engine);
 
   std::filesystem::path location_;
+  std::string household_;
   std::unique_ptr<StoreEngine> engine_;
 };
 
 // How much copy_knowledge copied.
 struct KnowledgeCopy {
-  std::size_t tasks = 0, goals = 0, rules = 0;
+  std::size_t tasks = 0, goals = 0, rules = 0, households = 0;
 };
 
 // Copies everything in the store at `from` (opened read-only, left as it
-// was) into the store at `to` (created if missing), in the order it was
-// learned, each entry its own durable save: what `to` held stays, except
-// that a goal under the same key, or a task of the same name, is replaced
+// was) into the store at `to` (created if missing), every household into
+// the household of the same name, in the order it was learned, each entry
+// its own durable save: what `to` held stays, except that a goal under the
+// same key, or a task of the same name, in the same household, is replaced
 // (a rule already there is kept). The engines may differ: this is how
 // knowledge moves between SQLite and PostgreSQL. Stopped part way, it
 // leaves `to` with a prefix of the copy, and running it again completes
 // it. Errors: those of open, load and each save.
 Result<KnowledgeCopy> copy_knowledge(const std::string& from, const std::string& to, const Domain& domain);
 
-// The knowledge in the store at `location`, read once and read-only (what
+// The knowledge of `household` in the store at `location`, read once and read-only (what
 // `experiment --knowledge-in` and the Python module's knowledge_in start
 // from); the store is left as it was. Errors: those of open and load.
-Result<Knowledge> load_knowledge_read_only(const std::string& location, const Domain& domain);
+Result<Knowledge> load_knowledge_read_only(const std::string& location, const Domain& domain,
+                                            const std::string& household = kDefaultHousehold);
 
 }  // namespace apprentice

@@ -4,6 +4,11 @@
 
 namespace apprentice {
 
+// The household a store is opened for when none is named (--household).
+// Goal preferences and task structures belong to a household; policy
+// rules are shared by every household of the store (the fleet).
+inline constexpr const char* kDefaultHousehold = "default";
+
 // How a command uses a store.
 enum class StoreAccess {
   // Read and write (teach): a missing or empty store becomes a new one.

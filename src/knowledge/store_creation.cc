@@ -10,6 +10,7 @@
 #include <cerrno>
 #include <chrono>
 #include <cstring>
+#include <iterator>
 #include <string>
 
 #include <fmt/format.h>
@@ -98,14 +99,51 @@ int move_without_replacing(const std::filesystem::path& from, const std::filesys
 
 }  // namespace
 
+namespace {
+
+constexpr const char* kGoalsTable =
+    "CREATE TABLE goals(id INTEGER PRIMARY KEY AUTOINCREMENT, household TEXT NOT NULL, task TEXT NOT NULL, subtask TEXT NOT NULL, "
+    "category TEXT NOT NULL, place TEXT NOT NULL, literals TEXT NOT NULL, object TEXT NOT NULL, "
+    "source TEXT NOT NULL, UNIQUE(household, task, subtask, category, place))";
+constexpr const char* kRulesTable =
+    "CREATE TABLE rules(id INTEGER PRIMARY KEY AUTOINCREMENT, signature TEXT NOT NULL UNIQUE, body TEXT NOT NULL, "
+    "object TEXT NOT NULL, source TEXT NOT NULL)";
+constexpr const char* kTasksTable =
+    "CREATE TABLE tasks(household TEXT NOT NULL, name TEXT NOT NULL, structure TEXT NOT NULL, PRIMARY KEY(household, name))";
+
+// The SQL below names the default household as a literal.
+static_assert(std::string_view(kDefaultHousehold) == "default");
+
+// Version 1 to 2: goals and tasks gain a household, part of their keys
+// (a new table each, as SQLite cannot change a table's keys); what there
+// was is the default household's. Goals and rules keep their ids, so their
+// order, and ids are never used again (AUTOINCREMENT: what another process
+// saved is what comes after the last id seen, StoreEngine::news).
+void migrate_1_to_2(SQLite::Database& db) {
+  const std::string household = std::string("'") + kDefaultHousehold + "'";
+  db.exec("ALTER TABLE goals RENAME TO goals_v1");
+  db.exec(kGoalsTable);
+  db.exec("INSERT INTO goals(id, household, task, subtask, category, place, literals, object, source) SELECT id, " +
+          household + ", task, subtask, category, place, literals, object, source FROM goals_v1 ORDER BY id");
+  db.exec("DROP TABLE goals_v1");
+  db.exec("ALTER TABLE rules RENAME TO rules_v1");
+  db.exec(kRulesTable);
+  db.exec("INSERT INTO rules(id, signature, body, object, source) SELECT id, signature, body, object, source FROM rules_v1 "
+          "ORDER BY id");
+  db.exec("DROP TABLE rules_v1");
+  db.exec("ALTER TABLE tasks RENAME TO tasks_v1");
+  db.exec(kTasksTable);
+  db.exec("INSERT INTO tasks(household, name, structure) SELECT " + household + ", name, structure FROM tasks_v1");
+  db.exec("DROP TABLE tasks_v1");
+}
+
+}  // namespace
+
 void create_knowledge_schema(SQLite::Database& db) {
   db.exec("CREATE TABLE meta(key TEXT PRIMARY KEY, value TEXT NOT NULL)");
-  db.exec("CREATE TABLE goals(id INTEGER PRIMARY KEY, task TEXT NOT NULL, subtask TEXT NOT NULL, "
-          "category TEXT NOT NULL, place TEXT NOT NULL, literals TEXT NOT NULL, object TEXT NOT NULL, "
-          "source TEXT NOT NULL, UNIQUE(task, subtask, category, place))");
-  db.exec("CREATE TABLE tasks(name TEXT PRIMARY KEY, structure TEXT NOT NULL)");
-  db.exec("CREATE TABLE rules(id INTEGER PRIMARY KEY, signature TEXT NOT NULL UNIQUE, body TEXT NOT NULL, "
-          "object TEXT NOT NULL, source TEXT NOT NULL)");
+  db.exec(kGoalsTable);
+  db.exec(kTasksTable);
+  db.exec(kRulesTable);
   SQLite::Statement insert(db, "INSERT INTO meta(key, value) VALUES (?, ?)");
   for (auto [key, value] : {std::pair<std::string, std::string>{"format", kKnowledgeFormatName},
                             {"schema_version", std::to_string(kKnowledgeSchemaVersion)}}) {
@@ -114,6 +152,16 @@ void create_knowledge_schema(SQLite::Database& db) {
     insert.exec();
     insert.reset();
   }
+}
+
+void migrate_knowledge_schema(SQLite::Database& db, int from_version) {
+  // One entry per step, from version i + kOldestMigratedSchemaVersion.
+  static constexpr void (*kSteps[])(SQLite::Database&) = {migrate_1_to_2};
+  static_assert(std::size(kSteps) == kKnowledgeSchemaVersion - kOldestMigratedSchemaVersion);
+  for (int v = from_version; v < kKnowledgeSchemaVersion; ++v) kSteps[v - kOldestMigratedSchemaVersion](db);
+  SQLite::Statement version(db, "UPDATE meta SET value = ? WHERE key = 'schema_version'");
+  version.bind(1, std::to_string(kKnowledgeSchemaVersion));
+  version.exec();
 }
 
 bool is_creation_file_of(const std::string& file_name, const std::string& store_name) {

@@ -31,6 +31,12 @@ inline constexpr const char* kKnowledgeFormatName = "apprentice-knowledge";
 // in the caller's transaction. Throws SQLite::Exception.
 void create_knowledge_schema(SQLite::Database& db);
 
+// Migrates the store in `db`, of schema version `from_version` (at least
+// kOldestMigratedSchemaVersion), to kKnowledgeSchemaVersion, one step per
+// version, in the caller's transaction; meta's schema_version is set last.
+// Throws SQLite::Exception.
+void migrate_knowledge_schema(SQLite::Database& db, int from_version);
+
 // The steps of create_store_file, in order, for tests that kill a creation
 // part way.
 enum class StoreCreationStep {

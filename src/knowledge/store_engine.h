@@ -9,7 +9,15 @@
 //     refused when opened, never misread or half-used;
 //   - a store another process has open is never emptied (StoreAccess::kFresh
 //     is refused "in use" then);
-//   - load() reads one consistent snapshot while writers go on.
+//   - load() reads one consistent snapshot while writers go on;
+//   - an engine is opened for one household (kDefaultHousehold unless
+//     named): its goals and task structures are that household's alone,
+//     saved, removed and loaded under its name, so two households that
+//     want different places for one kind never overwrite each other; its
+//     rules are the fleet's, shared by every household of the store;
+//   - a store of an older schema version is migrated when opened to write
+//     (one step per version, in one transaction), and read as it is when
+//     opened read-only.
 //
 // Adding a kind of stored knowledge: its text form in store_codec.h, its
 // save/remove here, its table in each engine's schema (with a migration
@@ -30,7 +38,13 @@
 namespace apprentice {
 
 // The version of the stores' schema this program reads and writes.
-inline constexpr int kKnowledgeSchemaVersion = 1;
+//   1  tasks, goals, rules (one household)
+//   2  goals and tasks belong to a household (a `household` column, part of
+//      their keys); what version 1 held is the default household's
+// Each engine migrates a store one step at a time from the oldest version
+// it still reads, kOldestMigratedSchemaVersion.
+inline constexpr int kKnowledgeSchemaVersion = 2;
+inline constexpr int kOldestMigratedSchemaVersion = 1;
 
 // Everything the agent knows, in memory.
 struct Knowledge {
@@ -60,6 +74,9 @@ class StoreEngine {
   // Everything stored, read against `domain` (store_codec.h says which
   // entries are refused, and how).
   virtual Result<Knowledge> load(const Domain& domain) const = 0;
+
+  // The households that have goals or tasks in the store, by name.
+  virtual Result<std::vector<std::string>> households() const = 0;
 };
 
 }  // namespace apprentice

@@ -37,4 +37,20 @@ std::string scrub_store_location(std::string_view location) {
   return out + kept;
 }
 
+Status check_household_name(std::string_view name) {
+  constexpr std::size_t kLongest = 64;
+  auto allowed = [](char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_' || c == '.';
+  };
+  bool ok = !name.empty() && name.size() <= kLongest;
+  for (char c : name) ok = ok && allowed(c);
+  if (ok) return {};
+  std::string shown(name.substr(0, kLongest));
+  for (char& c : shown)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+  return make_error(ErrorCode::kInvalidInput,
+                    "\"" + shown + (name.size() > kLongest ? "...\"" : "\"") +
+                        " cannot name a household: use 1 to 64 letters, digits, '-', '_' or '.'.");
+}
+
 }  // namespace apprentice

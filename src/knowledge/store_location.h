@@ -6,6 +6,8 @@
 #include <string>
 #include <string_view>
 
+#include "util/result.h"
+
 namespace apprentice {
 
 // Whether `location` names a PostgreSQL database (postgresql:// or
@@ -16,5 +18,9 @@ bool is_postgres_location(std::string_view location);
 // password (user:password@ becomes user@, a password=... parameter is
 // dropped); a path as it is.
 std::string scrub_store_location(std::string_view location);
+
+// Whether `name` can name a household (--household): 1 to 64 letters,
+// digits, '-', '_' or '.'. kInvalidInput, one sentence, otherwise.
+Status check_household_name(std::string_view name);
 
 }  // namespace apprentice

@@ -7,6 +7,7 @@
 #include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/yaml.h>
 
+#include "util/text.h"
 #include "world/pddl.h"
 
 namespace apprentice {
@@ -21,8 +22,20 @@ const IntentEntry* Scenario::find_intent(std::string_view subtask, std::string_v
   return nullptr;
 }
 
+const IntentEntry* Scenario::intent_for(std::string_view subtask, ObjectId object) const {
+  const std::string& category = world.universe->info(object).category;
+  const Subtask* own = subtask_of(object);
+  const IntentEntry* first = nullptr;
+  for (const IntentEntry& e : intent) {
+    if (e.subtask != subtask || e.category != category) continue;
+    if (own != nullptr && e.subtask_index < task.subtasks.size() && &task.subtasks[e.subtask_index] == own) return &e;
+    if (first == nullptr) first = &e;
+  }
+  return first;
+}
+
 std::optional<Goal> Scenario::intended_goal(std::string_view subtask, ObjectId object) const {
-  const IntentEntry* entry = find_intent(subtask, world.universe->info(object).category);
+  const IntentEntry* entry = intent_for(subtask, object);
   if (entry == nullptr) return std::nullopt;
   bool surface = world.universe->info(entry->place).kind == ObjectKind::kSurface;
   std::vector<Literal> literals{Literal{Fact(surface ? world.vocabulary.on : world.vocabulary.in, {object, entry->place}), true}};
@@ -387,8 +400,8 @@ class ScenarioBuilder {
       if (auto st = check_keys(s, {"verb", "place"}); !st) return st;
       auto verb = required_name(s, "verb");
       if (!verb) return tl::unexpected(verb.error());
-      for (const Subtask& other : scenario.task.subtasks)
-        if (other.verb == *verb) return fail(s["verb"], "subtask '" + *verb + "' appears twice");
+      // A verb may come again with other places ("clear" the floor, then
+      // "clear" the counter); the intent then says which with `from`.
       auto places = places_named(s, "place");
       if (!places) return tl::unexpected(places.error());
       for (const Subtask& other : scenario.task.subtasks)
@@ -417,6 +430,27 @@ class ScenarioBuilder {
     return place_named(e, "place");
   }
 
+  // The subtask an intent entry is about: the one with its verb, or, where
+  // several have it, the one whose places `from` names.
+  Result<std::size_t> subtask_index(const YAML::Node& e, const TaskStructure& task, const std::string& verb) const {
+    std::vector<std::size_t> with_verb;
+    for (std::size_t i = 0; i < task.subtasks.size(); ++i)
+      if (task.subtasks[i].verb == verb) with_verb.push_back(i);
+    if (with_verb.empty()) return fail(e["subtask"], "no subtask '" + verb + "' in the task");
+    if (!e["from"]) {
+      if (with_verb.size() == 1) return with_verb.front();
+      std::vector<std::string> places;
+      for (std::size_t i : with_verb) places.push_back(universe_.name(task.subtasks[i].places.front()));
+      return fail(e, "the task has " + std::to_string(with_verb.size()) + " subtasks '" + verb +
+                         "'; say which with 'from', the place it empties (" + join(places, " or ") + ")");
+    }
+    auto from = places_named(e, "from");
+    if (!from) return tl::unexpected(from.error());
+    for (std::size_t i : with_verb)
+      if (std::all_of(from->begin(), from->end(), [&](ObjectId p) { return task.subtasks[i].covers(p); })) return i;
+    return fail(e["from"], "no subtask '" + verb + "' empties " + universe_.name(from->front()));
+  }
+
   Status read_intent(const YAML::Node& root, Scenario& scenario) {
     const YAML::Node intent = root["intent"];
     if (!intent) return {};  // the person teaching is the authority
@@ -425,16 +459,16 @@ class ScenarioBuilder {
     scenario.has_intent = true;
     for (const YAML::Node& e : intent) {
       if (!e.IsMap()) return fail(e, "expected {subtask, category, place, closed}");
-      if (auto s = check_keys(e, {"subtask", "category", "place", "receptacle", "closed"}); !s) return s;
+      if (auto s = check_keys(e, {"subtask", "from", "category", "place", "receptacle", "closed"}); !s) return s;
       IntentEntry entry;
       auto subtask = required_name(e, "subtask");
       if (!subtask) return tl::unexpected(subtask.error());
-      if (std::none_of(scenario.task.subtasks.begin(), scenario.task.subtasks.end(),
-                       [&](const Subtask& s) { return s.verb == *subtask; }))
-        return fail(e["subtask"], "no subtask '" + *subtask + "' in the task");
+      auto index = subtask_index(e, scenario.task, *subtask);
+      if (!index) return tl::unexpected(index.error());
       auto category = required_name(e, "category");
       if (!category) return tl::unexpected(category.error());
-      if (scenario.find_intent(*subtask, *category))
+      if (std::any_of(scenario.intent.begin(), scenario.intent.end(),
+                      [&](const IntentEntry& other) { return other.subtask_index == *index && other.category == *category; }))
         return fail(e, "intent for (" + *subtask + ", " + *category + ") is given twice");
       auto place = destination(e);
       if (!place) return tl::unexpected(place.error());
@@ -443,6 +477,7 @@ class ScenarioBuilder {
       if (*closed && std::find(facts_.begin(), facts_.end(), Fact(vocabulary_.openable, {*place})) == facts_.end())
         return fail(e["closed"], universe_.name(*place) + " has no door, so it cannot end closed");
       entry.subtask = *subtask;
+      entry.subtask_index = *index;
       entry.category = *category;
       entry.place = *place;
       entry.closed = *closed;
@@ -457,7 +492,9 @@ class ScenarioBuilder {
       const Subtask* s = scenario.subtask_of(o);
       if (s == nullptr) continue;
       const std::string& category = scenario.world.universe->info(o).category;
-      if (!scenario.find_intent(s->verb, category)) {
+      const auto index = static_cast<std::size_t>(s - scenario.task.subtasks.data());
+      if (std::none_of(scenario.intent.begin(), scenario.intent.end(),
+                       [&](const IntentEntry& e) { return e.subtask_index == index && e.category == category; })) {
         auto mark = object_marks_.find(o);
         return fail_at(mark == object_marks_.end() ? YAML::Mark::null_mark() : mark->second,
                        "the intent says nothing about " + category + " for subtask " + s->verb + " (object " +

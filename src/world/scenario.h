@@ -52,6 +52,10 @@ struct TaskStructure {
 // What the instructor wants for objects of one category in one subtask.
 struct IntentEntry {
   std::string subtask;   // "clear"
+  // Which subtask, as an index into TaskStructure::subtasks: a verb may be
+  // given to several subtasks with other places ("clear" the floor, then
+  // "clear" the counter), and the entry's `from` says which.
+  std::size_t subtask_index = 0;
   std::string category;  // "ceramic-plate"
   // Where such objects go: a receptacle gives (in o p), a surface (on o p).
   ObjectId place = 0;
@@ -73,7 +77,13 @@ struct Scenario {
   // paper's kitchen (Kirk et al., Table 3); empty for any other scenario.
   std::string reference;
 
+  // The first entry for the verb and category (the one, when the verb names
+  // one subtask).
   const IntentEntry* find_intent(std::string_view subtask, std::string_view category) const;
+  // The entry for one object in the subtask `subtask` (a verb): where
+  // several subtasks share the verb, the one at whose places the object
+  // starts; else as find_intent.
+  const IntentEntry* intent_for(std::string_view subtask, ObjectId object) const;
   // The instructor's goal for one object: (in o p) for a receptacle or
   // (on o p) for a surface, plus (closed p) if wanted.
   std::optional<Goal> intended_goal(std::string_view subtask, ObjectId object) const;

@@ -240,6 +240,26 @@ TEST(Explanation, KnowledgeReadsAsEnglish) {
   EXPECT_EQ(explain_provenance(goal.provenance), "learned on ceramic-plate1 (ceramic-plate) from the instructor: \"...\"");
 }
 
+// The party's sideboard has a top and a bottom drawer: the goal learned
+// keeps which one, and so does its English.
+TEST(Explanation, AGoalKeepsTheLookAlikeItNames) {
+  Scenario party = load_or_die(source_path("data/scenarios/party-cleanup.yaml"));
+  const World& world = party.world;
+  auto remote = world.universe->find("remote-control1");
+  ASSERT_TRUE(remote.has_value());
+  for (const auto& [drawer, words] : {std::pair{"drawer1", "top"}, std::pair{"drawer2", "bottom"}}) {
+    auto goal = parse_goal(*world.domain, *world.universe,
+                           std::string("(and (in remote-control1 ") + drawer + ") (closed " + drawer + "))");
+    ASSERT_TRUE(goal.has_value()) << goal.error().message;
+    auto learned = generalize_goal(world, GoalKey{"clean living room", "clear", "remote-control", "coffee-table"},
+                                   *remote, *goal, Provenance{"remote-control1", "test"});
+    ASSERT_TRUE(learned.has_value()) << learned.error().message;
+    EXPECT_EQ(explain_goal(*learned), std::string("When I clear the coffee table (to clean the living room), the remote "
+                                                  "control goes in the ") +
+                                          words + " drawer, and the " + words + " drawer ends closed.");
+  }
+}
+
 TEST(Explanation, RulesReadAsEnglish) {
   Scenario kitchen = load_or_die(source_path("data/scenarios/tidy-kitchen.yaml"));
   const Domain& d = *kitchen.world.domain;

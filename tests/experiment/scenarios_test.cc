@@ -66,6 +66,32 @@ INSTANTIATE_TEST_SUITE_P(Scenarios, BeyondTheKitchen,
                          ::testing::Values("laundry-room", "party-cleanup", "playroom", "tidy-garage",
                                            "unpack-groceries"));
 
+// One verb for two subtasks ("clear" the floor, then "clear" the counter):
+// a book from the floor goes on the shelf, a book from the counter into the
+// cupboard, and every condition without an LLM does both.
+TEST(OneVerbTwice, EachSubtaskKeepsItsOwnGoals) {
+  Scenario scenario = testing::load_or_die(testing::source_path("tests/experiment/data/clear-twice.yaml"));
+  ASSERT_EQ(scenario.task.subtasks.size(), 2u);
+  EXPECT_EQ(scenario.task.subtasks[0].verb, scenario.task.subtasks[1].verb);
+  const Universe& universe = *scenario.world.universe;
+  const World& world = scenario.world;
+  auto goal = [&](const char* object) {
+    auto g = scenario.intended_goal("clear", *universe.find(object));
+    return g ? format_goal(*world.domain, universe, *g) : std::string("none");
+  };
+  EXPECT_EQ(goal("book1"), "(on book1 shelf1)");
+  EXPECT_EQ(goal("book2"), "(and (in book2 cupboard1) (closed cupboard1))");
+  EXPECT_EQ(goal("mug1"), "(and (in mug1 cupboard1) (closed cupboard1))");
+  DialogueCounts floor = instruction_floor(scenario);
+  for (const char* condition : {"instruction", "inst+search2", "inst+search4"}) {
+    ConditionResult r = testing::run(scenario, condition, testing::experiment_options());
+    EXPECT_DOUBLE_EQ(r.completion_rate, 100.0) << condition;
+    EXPECT_EQ(r.objects_done, 4) << condition;
+    EXPECT_EQ(r.objects_total, 4) << condition;
+    EXPECT_GE(r.counts.instructions, floor.instructions) << condition;
+  }
+}
+
 // --- experiment --knowledge-in ------------------------------------------------
 
 class KnowledgeIn : public testing::ScratchTest {

@@ -2,6 +2,8 @@
 // object of interest a variable, every other object named by its unique
 // category) and instantiated for another object, in this kitchen or
 // another.
+#include <algorithm>
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -203,6 +205,40 @@ TEST_F(GoalMemoryTest, MemoryFindsByKeyAndReplacesTheSameKey) {
   EXPECT_EQ(*memory.find(kPlateKey), corrected);
   memory.add(GoalKnowledge{GoalKey{"tidy kitchen", "store", "mug", "counter"}, k.literals, {}});
   EXPECT_EQ(memory.size(), 2u);
+}
+
+// The index by key (add, find, remove in O(log n)) against a plain list
+// kept beside it: after every step, each key finds the goal last added
+// under it, removed keys find nothing, and all() keeps the order of first
+// adding.
+TEST_F(GoalMemoryTest, TheIndexAgreesWithAPlainListThroughAddsReplacesAndRemoves) {
+  GoalMemory memory;
+  std::vector<GoalKnowledge> reference;
+  const GoalKnowledge k = plate_knowledge();
+  unsigned state = 12345;
+  auto next = [&] { return state = state * 1103515245u + 12345u, (state >> 16) % 40; };
+  for (int step = 0; step < 2000; ++step) {
+    const unsigned n = next();
+    GoalKnowledge g{GoalKey{"tidy kitchen", n % 2 ? "clear" : "store", "kind-" + std::to_string(n / 2), "table"},
+                    k.literals, Provenance{"o" + std::to_string(step), "s"}};
+    auto at = std::find_if(reference.begin(), reference.end(), [&](const GoalKnowledge& r) { return r.key == g.key; });
+    if (step % 3 == 2) {
+      EXPECT_EQ(memory.remove(g.key), at != reference.end());
+      if (at != reference.end()) reference.erase(at);
+    } else {
+      if (at != reference.end()) *at = g;
+      else reference.push_back(g);
+      memory.add(g);
+    }
+    ASSERT_EQ(memory.all(), reference) << "step " << step;
+    for (const GoalKnowledge& r : reference) {
+      ASSERT_NE(memory.find(r.key), nullptr);
+      ASSERT_EQ(*memory.find(r.key), r);
+    }
+    if (step % 3 == 2) {
+      EXPECT_EQ(memory.find(g.key), nullptr);
+    }
+  }
 }
 
 }  // namespace

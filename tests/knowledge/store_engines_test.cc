@@ -7,8 +7,13 @@
 #include <SQLiteCpp/SQLiteCpp.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <libpq-fe.h>
+
+#include <atomic>
+#include <thread>
 
 #include "knowledge/store.h"
+#include "knowledge/store_codec.h"
 #include "knowledge_fixtures.h"
 #include "throwaway_postgres.h"
 
@@ -46,8 +51,9 @@ class StoreEngines : public KitchenStoreTest, public ::testing::WithParamInterfa
     }
   }
 
-  KnowledgeStore open_or_die(StoreAccess access = StoreAccess::kReadWrite) {
-    auto store = KnowledgeStore::open(location_, access);
+  KnowledgeStore open_or_die(StoreAccess access = StoreAccess::kReadWrite,
+                             const std::string& household = kDefaultHousehold) {
+    auto store = KnowledgeStore::open(location_, access, household);
     if (!store) {
       ADD_FAILURE() << store.error().describe();
       std::abort();
@@ -98,6 +104,60 @@ class StoreEngines : public KitchenStoreTest, public ::testing::WithParamInterfa
     auto opened = KnowledgeStore::open(location_, access);
     EXPECT_FALSE(opened.has_value()) << "opened a store it should refuse";
     return opened ? Error{} : opened.error();
+  }
+
+  // meta's schema_version, read behind the engine's back.
+  std::string schema_version() {
+    if (GetParam() == Engine::kSqlite) {
+      SQLite::Database db(path_.string(), SQLite::OPEN_READONLY);
+      return db.execAndGet("SELECT value FROM meta WHERE key = 'schema_version'").getString();
+    }
+    PGconn* c = PQconnectdb(location_.c_str());
+    PGresult* r = PQexec(c, "SELECT value FROM meta WHERE key = 'schema_version'");
+    std::string value = PQresultStatus(r) == PGRES_TUPLES_OK && PQntuples(r) == 1 ? PQgetvalue(r, 0, 0) : "";
+    PQclear(r);
+    PQfinish(c);
+    return value;
+  }
+
+  // A store as version 1 wrote it (one household, no household column),
+  // holding task(), plate_goal() and rules(), made behind the engine's back.
+  void make_version_1_store() {
+    const bool sqlite = GetParam() == Engine::kSqlite;
+    const std::string id = sqlite ? "INTEGER" : "BIGSERIAL";
+    exec("CREATE TABLE meta(key TEXT PRIMARY KEY, value TEXT NOT NULL)");
+    exec("CREATE TABLE goals(id " + id + " PRIMARY KEY, task TEXT NOT NULL, subtask TEXT NOT NULL, category TEXT NOT NULL, "
+         "place TEXT NOT NULL, literals TEXT NOT NULL, object TEXT NOT NULL, source TEXT NOT NULL, "
+         "UNIQUE(task, subtask, category, place))");
+    exec("CREATE TABLE tasks(name TEXT PRIMARY KEY, structure TEXT NOT NULL)");
+    exec("CREATE TABLE rules(id " + id + " PRIMARY KEY, signature TEXT NOT NULL UNIQUE, body TEXT NOT NULL, "
+         "object TEXT NOT NULL, source TEXT NOT NULL)");
+    exec("INSERT INTO meta VALUES ('format', 'apprentice-knowledge'), ('schema_version', '1')");
+    auto quoted = [](std::string text) {
+      for (std::size_t at = text.find('\''); at != std::string::npos; at = text.find('\'', at + 2)) text.insert(at, "'");
+      return "'" + text + "'";
+    };
+    const GoalKnowledge g = plate_goal();
+    exec("INSERT INTO goals(task, subtask, category, place, literals, object, source) VALUES (" + quoted(g.key.task) +
+         ", " + quoted(g.key.subtask) + ", " + quoted(g.key.category) + ", " + quoted(g.key.place) + ", " +
+         quoted(store_codec::encode_goal_literals(g)) + ", " + quoted(g.provenance.object) + ", " +
+         quoted(g.provenance.source) + ")");
+    exec("INSERT INTO tasks VALUES (" + quoted(task().name) + ", " + quoted(store_codec::encode_subtasks(task())) + ")");
+    for (const Rule& r : rules())
+      exec("INSERT INTO rules(signature, body, object, source) VALUES (" + quoted(rule_signature(domain_, r)) + ", " +
+           quoted(store_codec::encode_rule(domain_, r)) + ", " + quoted(r.provenance.object) + ", " +
+           quoted(r.provenance.source) + ")");
+  }
+
+  // What make_version_1_store put in, as `store` loads it.
+  void expect_version_1_contents(const KnowledgeStore& store) {
+    auto k = store.load(domain_);
+    ASSERT_TRUE(k) << k.error().describe();
+    ASSERT_EQ(k->goals.size(), 1u);
+    EXPECT_EQ(k->goals.all()[0], plate_goal());
+    ASSERT_EQ(k->tasks.size(), 1u);
+    EXPECT_EQ(k->tasks[0], task());
+    EXPECT_EQ(k->rules.rules(), rules());
   }
 
   std::optional<ThrowawayPostgres> server_;
@@ -253,6 +313,144 @@ TEST_P(StoreEngines, AStoreInUseIsNeverStartedOver) {
   }
   KnowledgeStore after = open_or_die();
   EXPECT_TRUE(after.save_goal(plate_goal()));
+}
+
+// Households: goals and task structures are each household's own, rules
+// are the fleet's.
+TEST_P(StoreEngines, TwoHouseholdsWantingDifferentPlacesForOneKindNeverOverwriteEachOther) {
+  KnowledgeStore smiths = open_or_die(StoreAccess::kReadWrite, "smiths");
+  KnowledgeStore joneses = open_or_die(StoreAccess::kReadWrite, "joneses");
+  // The same key (task, subtask, category, place), two different goals.
+  GoalKnowledge in_garbage = goal_for("ceramic-plate1", "(in ceramic-plate1 garbage1)");
+  ASSERT_EQ(in_garbage.key, plate_goal().key);
+  ASSERT_NE(in_garbage.literals, plate_goal().literals);
+  TaskKnowledge shorter{"tidy kitchen", {{"clear", "on", "table"}}};
+  ASSERT_TRUE(smiths.save_task(task()));
+  ASSERT_TRUE(smiths.save_goal(plate_goal()));
+  ASSERT_TRUE(joneses.save_task(shorter));
+  ASSERT_TRUE(joneses.save_goal(in_garbage));
+  const std::vector<Rule> taught = rules();
+  ASSERT_TRUE(smiths.save_rule(domain_, taught[0]));
+  ASSERT_TRUE(joneses.save_rule(domain_, taught[1]));
+  // Saving again in one household leaves the other's as it was.
+  ASSERT_TRUE(smiths.save_goal(plate_goal()));
+
+  auto smiths_know = open_or_die(StoreAccess::kReadOnly, "smiths").load(domain_);
+  auto joneses_know = open_or_die(StoreAccess::kReadOnly, "joneses").load(domain_);
+  auto default_knows = open_or_die(StoreAccess::kReadOnly).load(domain_);
+  ASSERT_TRUE(smiths_know && joneses_know && default_knows);
+  ASSERT_EQ(smiths_know->goals.size(), 1u);
+  EXPECT_EQ(smiths_know->goals.all()[0], plate_goal());
+  ASSERT_EQ(joneses_know->goals.size(), 1u);
+  EXPECT_EQ(joneses_know->goals.all()[0], in_garbage);
+  ASSERT_EQ(smiths_know->tasks.size(), 1u);
+  EXPECT_EQ(smiths_know->tasks[0], task());
+  ASSERT_EQ(joneses_know->tasks.size(), 1u);
+  EXPECT_EQ(joneses_know->tasks[0], shorter);
+  // The rules are shared: each household has both, and so has one that
+  // taught nothing.
+  const std::vector<Rule> both{taught[0], taught[1]};
+  EXPECT_EQ(smiths_know->rules.rules(), both);
+  EXPECT_EQ(joneses_know->rules.rules(), both);
+  EXPECT_EQ(default_knows->rules.rules(), both);
+  EXPECT_EQ(default_knows->goals.size(), 0u);
+  EXPECT_TRUE(default_knows->tasks.empty());
+
+  // Forgetting is each household's own too.
+  ASSERT_TRUE(joneses.remove_goal(in_garbage.key));
+  ASSERT_TRUE(joneses.remove_task("tidy kitchen"));
+  auto smiths_after = open_or_die(StoreAccess::kReadOnly, "smiths").load(domain_);
+  ASSERT_TRUE(smiths_after);
+  EXPECT_EQ(smiths_after->goals.size(), 1u);
+  EXPECT_EQ(smiths_after->tasks.size(), 1u);
+  auto names = smiths.households();
+  ASSERT_TRUE(names) << names.error().describe();
+  EXPECT_EQ(*names, std::vector<std::string>{"smiths"});
+}
+
+TEST_P(StoreEngines, AHouseholdNameThatCannotBeOneIsRefusedInOneSentence) {
+  for (const std::string& bad : std::vector<std::string>{"", "two words", "semi;colon", "quote'd", std::string(65, 'a'), std::string("tab\there")}) {
+    auto opened = KnowledgeStore::open(location_, StoreAccess::kReadWrite, bad);
+    ASSERT_FALSE(opened.has_value()) << bad;
+    EXPECT_EQ(opened.error().code, ErrorCode::kInvalidInput);
+    EXPECT_THAT(opened.error().message, HasSubstr("cannot name a household"));
+    EXPECT_THAT(opened.error().message, Not(HasSubstr("\n")));
+    EXPECT_THAT(opened.error().message, Not(HasSubstr("\t")));
+  }
+  EXPECT_TRUE(KnowledgeStore::open(location_, StoreAccess::kReadWrite, "flat-2B_east.wing").has_value());
+}
+
+TEST_P(StoreEngines, AVersion1StoreIsReadAsItIsAndMigratedWhenOpenedToWrite) {
+  make_version_1_store();
+  // Read-only: read as it is, as the default household's; nothing written.
+  {
+    KnowledgeStore reader = open_or_die(StoreAccess::kReadOnly);
+    expect_version_1_contents(reader);
+    auto other = open_or_die(StoreAccess::kReadOnly, "joneses").load(domain_);
+    ASSERT_TRUE(other);
+    EXPECT_EQ(other->goals.size(), 0u);
+    EXPECT_EQ(other->rules.rules(), rules());
+    auto names = reader.households();
+    ASSERT_TRUE(names);
+    EXPECT_EQ(*names, std::vector<std::string>{kDefaultHousehold});
+  }
+  EXPECT_EQ(schema_version(), "1");
+  // To write: migrated, once, and what it held is the default household's.
+  {
+    KnowledgeStore joneses = open_or_die(StoreAccess::kReadWrite, "joneses");
+    EXPECT_EQ(schema_version(), std::to_string(kKnowledgeSchemaVersion));
+    GoalKnowledge in_garbage = goal_for("ceramic-plate1", "(in ceramic-plate1 garbage1)");
+    ASSERT_TRUE(joneses.save_goal(in_garbage));
+    ASSERT_TRUE(joneses.save_task(TaskKnowledge{"tidy kitchen", {{"clear", "on", "table"}}}));
+  }
+  KnowledgeStore again = open_or_die();
+  expect_version_1_contents(again);
+  auto names = again.households();
+  ASSERT_TRUE(names);
+  EXPECT_EQ(*names, (std::vector<std::string>{kDefaultHousehold, "joneses"}));
+}
+
+TEST_P(StoreEngines, AVersion1StoreIsMigratedOnceByTwoOpenersAtOnce) {
+  make_version_1_store();
+  std::vector<std::thread> openers;
+  std::atomic<int> opened{0};
+  for (int i = 0; i < 4; ++i)
+    openers.emplace_back([&, i] {
+      auto store = KnowledgeStore::open(location_, StoreAccess::kReadWrite, "h" + std::to_string(i));
+      if (store && store->save_goal(plate_goal())) ++opened;
+    });
+  for (std::thread& t : openers) t.join();
+  EXPECT_EQ(opened.load(), 4);
+  EXPECT_EQ(schema_version(), std::to_string(kKnowledgeSchemaVersion));
+  KnowledgeStore store = open_or_die();
+  auto names = store.households();
+  ASSERT_TRUE(names);
+  EXPECT_EQ(names->size(), 5u);
+  auto k = store.load(domain_);
+  ASSERT_TRUE(k);
+  EXPECT_EQ(k->goals.size(), 1u);
+}
+
+TEST_P(StoreEngines, CopyingAStoreCopiesEveryHouseholdIntoItsOwn) {
+  {
+    KnowledgeStore smiths = open_or_die(StoreAccess::kReadWrite, "smiths");
+    fill(smiths);
+    KnowledgeStore joneses = open_or_die(StoreAccess::kReadWrite, "joneses");
+    ASSERT_TRUE(joneses.save_goal(goal_for("ceramic-plate1", "(in ceramic-plate1 garbage1)")));
+  }
+  const fs::path copy = dir_ / "copy.sqlite";
+  auto copied = copy_knowledge(location_, copy.string(), domain_);
+  ASSERT_TRUE(copied) << copied.error().describe();
+  EXPECT_EQ(copied->households, 2u);
+  EXPECT_EQ(copied->goals, 3u);
+  EXPECT_EQ(copied->tasks, 1u);
+  EXPECT_EQ(copied->rules, rules().size());
+  auto smiths = load_knowledge_read_only(copy.string(), domain_, "smiths");
+  auto joneses = load_knowledge_read_only(copy.string(), domain_, "joneses");
+  ASSERT_TRUE(smiths && joneses);
+  expect_filled(*smiths);
+  ASSERT_EQ(joneses->goals.size(), 1u);
+  EXPECT_EQ(joneses->goals.all()[0].literals, goal_for("ceramic-plate1", "(in ceramic-plate1 garbage1)").literals);
 }
 
 std::string engine_name(const ::testing::TestParamInfo<Engine>& info) {

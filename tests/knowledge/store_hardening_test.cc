@@ -226,7 +226,7 @@ TEST_F(StoreHardening, AReaderRollsBackWhatAKilledWriterLeft) {
     db.exec("PRAGMA cache_size = 1");
     db.exec("BEGIN");
     for (int i = 0; i < 2000; ++i)
-      db.exec("INSERT INTO goals(task, subtask, category, place, literals, object, source) VALUES ('t', 's', 'c" +
+      db.exec("INSERT INTO goals(household, task, subtask, category, place, literals, object, source) VALUES ('default', 't', 's', 'c" +
               std::to_string(i) + "', 'p', '" + std::string(200, 'x') + "', 'o', 's')");
     ::raise(SIGKILL);
   }

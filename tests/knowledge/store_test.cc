@@ -1,6 +1,7 @@
 // The knowledge store: what is saved is what is loaded, across reopening;
 // a store of another version, another program's database or a file of
 // garbage is refused with a clear message and never misread or crashed on.
+#include <algorithm>
 #include <fstream>
 #include <random>
 
@@ -413,6 +414,46 @@ TEST_F(StoreCli, KnowledgePrintsWhatWasLearned) {
   EXPECT_THAT(english.out, HasSubstr("2 goals:"));
   EXPECT_THAT(english.out, HasSubstr("8 rules:"));
   EXPECT_THAT(english.out, HasSubstr(": open the receptacle (4 steps from the goal)."));
+}
+
+TEST_F(StoreCli, KnowledgePrintsOneHouseholdsGoalsAndTheSharedRules) {
+  {
+    auto smiths = KnowledgeStore::open(path_, StoreAccess::kReadWrite, "smiths");
+    ASSERT_TRUE(smiths) << smiths.error().describe();
+    ASSERT_TRUE(smiths->save_goal(paper_plate_goal()));
+  }
+  Invocation r = run_cli(dir_.path(), {"knowledge", "--knowledge", path_.string(), "--household", "smiths", "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  auto json = nlohmann::json::parse(r.out);
+  EXPECT_EQ(json["household"], "smiths");
+  EXPECT_EQ(json["goals"].size(), 1u);
+  EXPECT_EQ(json["tasks"].size(), 0u);
+  EXPECT_EQ(json["rules"].size(), rules().size());
+  Invocation plain = run_cli(dir_.path(), {"knowledge", "--knowledge", path_.string(), "--json"});
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  EXPECT_EQ(nlohmann::json::parse(plain.out)["household"], kDefaultHousehold);
+  EXPECT_EQ(nlohmann::json::parse(plain.out)["goals"].size(), 2u);
+  Invocation english = run_cli(dir_.path(), {"knowledge", "--knowledge", path_.string(), "--household", "smiths"});
+  ASSERT_EQ(english.exit_code, 0) << english.err;
+  EXPECT_THAT(english.out, HasSubstr("Household smiths (the rules are shared by every household):"));
+  EXPECT_THAT(english.out, HasSubstr("1 goal:"));
+}
+
+TEST_F(StoreCli, AHouseholdThatCannotBeNamedExitsTwoInOneLine) {
+  const std::string scenario = scenario_path("tidy-kitchen").string();
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"knowledge", "--knowledge", path_.string(), "--household", "the smiths"},
+        std::vector<std::string>{"run", "--scenario", scenario, "--knowledge", path_.string(), "--household", ""},
+        std::vector<std::string>{"teach", "--scenario", scenario, "--knowledge", path_.string(), "--household", "a/b"}}) {
+    Invocation r = run_cli(dir_.path(), args);
+    EXPECT_EQ(r.exit_code, 2) << args[0] << ": " << r.out << r.err;
+    EXPECT_THAT(r.err, HasSubstr("cannot name a household")) << args[0];
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
+  Invocation copy = run_cli(dir_.path(), {"knowledge", "export", "--knowledge", path_.string(), "--to",
+                                          (dir_ / "copy.sqlite").string(), "--household", "smiths"});
+  EXPECT_EQ(copy.exit_code, 2) << copy.err;
+  EXPECT_THAT(copy.err, HasSubstr("copies every household"));
 }
 
 TEST_F(StoreCli, RefusedStoreExitsTwoNamingBothVersions) {

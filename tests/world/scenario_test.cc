@@ -244,10 +244,14 @@ std::vector<BrokenCase> broken_cases() {
       {"count_zero", 11, "  - {category: cup, at: table1, count: 0}", 11, "expected a count between 1 and 100000"},
       {"count_not_a_number", 11, "  - {category: cup, at: table1, count: many}", 11,
        "expected a count between 1 and 100000"},
-      {"duplicate_subtask_verb", 16,
+      // A verb may come again with another place; the intent says which.
+      {"verb_twice_intent_not_saying_which", 16,
        "    - {verb: clear, place: table1}\n"
        "    - {verb: clear, place: sink1}",
-       17, "subtask 'clear' appears twice"},
+       19, "the task has 2 subtasks 'clear'; say which with 'from', the place it empties (table1 or sink1)"},
+      {"intent_from_another_place", 18,
+       "  - {subtask: clear, from: sink1, category: ketchup, receptacle: fridge1, closed: true}", 18,
+       "no subtask 'clear' empties sink1"},
       {"ids_clash", 10,
        "  - {category: cup1, at: table1}\n"
        "  - {category: cup, at: table1, count: 11}",
