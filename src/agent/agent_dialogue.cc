@@ -119,14 +119,17 @@ TaskLearningAgent::Session::Flow<TaskLearningAgent::Session::Heard> TaskLearning
     // The answer said after an undo in the last reply is the reply to the
     // question the undo brought back.
     Result<std::string> text = std::string();
+    bool queued_step = false;
     const bool about_steps =
         context.asked == language::Asked::kTaskStep || context.asked == language::Asked::kSubtaskEnd;
     if (!queued_replies_.empty()) {
       text = std::move(queued_replies_.front());
       queued_replies_.pop_front();
     } else if (about_steps && !queued_steps_.empty()) {
+      // Said in the reply before: not another instruction.
       text = std::move(queued_steps_.front());
       queued_steps_.pop_front();
+      queued_step = true;
     } else {
       text = dialogue_->ask_uncounted(asked, world());
     }
@@ -165,7 +168,7 @@ TaskLearningAgent::Session::Flow<TaskLearningAgent::Session::Heard> TaskLearning
         if (auto s = obey(*command, asked, context); !s) return tl::unexpected(s.error());
     if (!answer) continue;
     language::Reply reply = std::move(*answer);
-    dialogue_->count_reply(asked, *text);
+    if (!queued_step) dialogue_->count_reply(asked, *text);
     // A reply the question's own reading takes whole ("same as the hammer,
     // and shut the drawer") is not asked "which drawer?" about.
     std::optional<language::Reply> rescued;
