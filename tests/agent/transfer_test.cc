@@ -225,14 +225,14 @@ TEST(TransferInTheAgent, PerformsTheRenamedKitchenWithTheKitchensKnowledge) {
   // A synonym's goal, from memory.
   const ObjectReport* catsup = report_for(*report, "catsup1");
   ASSERT_NE(catsup, nullptr);
-  EXPECT_EQ(catsup->goal_source, "memory");
+  EXPECT_EQ(catsup->goal_source, GoalSource::kMemory);
   EXPECT_TRUE(catsup->achieved);
   EXPECT_EQ(catsup->goal, "(and (in catsup1 refrigerator1) (closed refrigerator1))");
   // Saltines are crackers (distance 1, the same subtask), and the crackers
   // and the granola bars went to the larder: decided alone.
   const ObjectReport* saltines = report_for(*report, "saltines1");
   ASSERT_NE(saltines, nullptr);
-  EXPECT_FALSE(saltines->goal_source.empty());
+  EXPECT_NE(saltines->goal_source, GoalSource::kNone);
   EXPECT_TRUE(saltines->achieved);
   EXPECT_EQ(saltines->goal, "(and (in saltines1 larder1) (closed larder1))");
   EXPECT_GE(saltines->belief, default_decision_policy().act_at);
