@@ -9,6 +9,7 @@
 #include <spdlog/spdlog.h>
 #include <wn.h>
 
+#include "util/bounded_table.h"
 #include "util/file.h"
 #include "util/text.h"
 
@@ -41,6 +42,26 @@ struct Library {
   // class_size's table, built once from the directory the library reads.
   bool sizes_built = false;
   SynsetSizes sizes;
+  // The answers so far, from the directory the library reads (wordnet.h).
+  // Each table is bounded (util/bounded_table.h): a page or a script can
+  // send any number of distinct unknown words. WordNet has ~150k lemmas, so
+  // real use seldom fills one.
+  static constexpr std::size_t kAnswersPerTable = 100000;
+  util::BoundedTable<std::string, std::vector<SynsetOffset>> senses{kAnswersPerTable};
+  util::BoundedTable<SynsetOffset, std::optional<Synset>> synsets{kAnswersPerTable};
+  util::BoundedTable<std::pair<int, std::string>, std::vector<std::string>> base_forms{kAnswersPerTable};  // by part of speech
+  util::BoundedTable<std::string, bool> verbs{kAnswersPerTable};
+  util::BoundedTable<std::string, bool> known{kAnswersPerTable};
+
+  void forget_answers() {
+    sizes_built = false;
+    sizes = SynsetSizes{};
+    senses.clear();
+    synsets.clear();
+    base_forms.clear();
+    verbs.clear();
+    known.clear();
+  }
 };
 
 Library& library() {
@@ -90,11 +111,6 @@ bool usable(std::string_view s) {
 
 }  // namespace
 
-struct WordNet::Cache {
-  std::map<std::string, std::vector<SynsetOffset>, std::less<>> senses;
-  std::map<SynsetOffset, std::optional<Synset>> synsets;
-};
-
 Result<WordNet> WordNet::open(const std::optional<std::filesystem::path>& dictionary) {
   Library& lib = library();
   std::lock_guard lock(lib.mutex);
@@ -125,14 +141,11 @@ Result<WordNet> WordNet::open(const std::optional<std::filesystem::path>& dictio
                             (env ? std::string(env) : std::string("the library's default directory")));
     }
     lib.open = true;
-    if (wanted != lib.directory) {
-      lib.sizes_built = false;
-      lib.sizes = SynsetSizes{};
-    }
+    if (wanted != lib.directory) lib.forget_answers();
     lib.directory = wanted;
     spdlog::debug("wordnet: opened {}", wanted.empty() ? "the default database" : wanted);
   }
-  return WordNet(std::make_shared<Cache>());
+  return WordNet();
 }
 
 namespace {
@@ -141,8 +154,11 @@ namespace {
 std::vector<std::string> base_forms(std::string_view word, int part_of_speech) {
   std::vector<std::string> forms;
   if (!usable(word)) return forms;
-  std::lock_guard lock(library().mutex);
-  if (!library().open) return forms;
+  Library& lib = library();
+  std::lock_guard lock(lib.mutex);
+  if (!lib.open) return forms;
+  auto key = std::make_pair(part_of_speech, std::string(word));
+  if (const auto* kept = lib.base_forms.find(key)) return *kept;
   CString query(word);
   std::string self = from_wordnet(query.text);
   // morphstr iterates through static state: the first call takes the word,
@@ -152,6 +168,7 @@ std::vector<std::string> base_forms(std::string_view word, int part_of_speech) {
     std::string base = from_wordnet(form);
     if (base != self && std::find(forms.begin(), forms.end(), base) == forms.end()) forms.push_back(base);
   }
+  lib.base_forms.remember(std::move(key), forms);
   return forms;
 }
 
@@ -165,26 +182,28 @@ std::vector<std::string> WordNet::adjective_base_forms(std::string_view word) co
 
 std::vector<SynsetOffset> WordNet::noun_senses(std::string_view lemma) const {
   if (!usable(lemma)) return {};
-  std::lock_guard lock(library().mutex);
-  if (!library().open) return {};
+  Library& lib = library();
+  std::lock_guard lock(lib.mutex);
+  if (!lib.open) return {};
   std::string key = from_wordnet(CString(lemma).text);
-  if (auto it = cache_->senses.find(key); it != cache_->senses.end()) return it->second;
+  if (const auto* kept = lib.senses.find(key)) return *kept;
   std::vector<SynsetOffset> offsets;
   CString query(key);
   if (IndexPtr index = index_lookup(query.text, NOUN)) {
     for (int i = 0; i < index->off_cnt; ++i) offsets.push_back(static_cast<SynsetOffset>(index->offset[i]));
     free_index(index);
   }
-  cache_->senses.emplace(key, offsets);
+  lib.senses.remember(key, offsets);
   return offsets;
 }
 
 std::optional<Synset> WordNet::synset(SynsetOffset offset) const {
-  std::lock_guard lock(library().mutex);
-  if (auto it = cache_->synsets.find(offset); it != cache_->synsets.end()) return it->second;
+  Library& lib = library();
+  std::lock_guard lock(lib.mutex);
   std::optional<Synset> result;
+  if (!lib.open) return result;
+  if (const auto* kept = lib.synsets.find(offset)) return *kept;
   char empty[1] = {'\0'};
-  if (!library().open) return result;
   if (offset >= 0) {
     if (SynsetPtr raw = read_synset(NOUN, offset, empty)) {
       Synset s;
@@ -201,7 +220,7 @@ std::optional<Synset> WordNet::synset(SynsetOffset offset) const {
       result = std::move(s);
     }
   }
-  cache_->synsets.emplace(offset, result);
+  lib.synsets.remember(offset, result);
   return result;
 }
 
@@ -312,19 +331,22 @@ bool WordNet::has_noun(std::string_view lemma) const { return !noun_senses(lemma
 
 bool WordNet::has_verb(std::string_view lemma) const {
   if (!usable(lemma)) return false;
-  std::lock_guard lock(library().mutex);
-  if (!library().open) return false;
+  Library& lib = library();
+  std::lock_guard lock(lib.mutex);
+  if (!lib.open) return false;
+  if (const bool* kept = lib.verbs.find(lemma)) return *kept;
   CString query(lemma);
   IndexPtr index = index_lookup(query.text, VERB);
-  if (index == nullptr) return false;
-  free_index(index);
-  return true;
+  if (index != nullptr) free_index(index);
+  lib.verbs.remember(std::string(lemma), index != nullptr);
+  return index != nullptr;
 }
 
-bool WordNet::knows(std::string_view word) const {
-  if (!usable(word)) return false;
-  std::lock_guard lock(library().mutex);
-  if (!library().open) return false;
+namespace {
+
+// Whether the library finds the word under any part of speech, directly or
+// through morphology. Under the lock.
+bool look_up_anywhere(std::string_view word) {
   for (int pos = NOUN; pos <= ADV; ++pos) {
     CString query(word);
     if (IndexPtr index = index_lookup(query.text, pos)) {
@@ -339,6 +361,19 @@ bool WordNet::knows(std::string_view word) const {
     }
   }
   return false;
+}
+
+}  // namespace
+
+bool WordNet::knows(std::string_view word) const {
+  if (!usable(word)) return false;
+  Library& lib = library();
+  std::lock_guard lock(lib.mutex);
+  if (!lib.open) return false;
+  if (const bool* kept = lib.known.find(word)) return *kept;
+  const bool found = look_up_anywhere(word);
+  lib.known.remember(std::string(word), found);
+  return found;
 }
 
 }  // namespace apprentice::language
