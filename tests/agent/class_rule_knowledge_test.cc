@@ -65,13 +65,14 @@ class ClassRuleKnowledge : public ::testing::Test {
     for (const ClassRule& r : k.forgotten_rules.all()) keys.insert(class_rule_key(r));
     return keys;
   }
-  // The induced rules' proposals for a kind never taught, by class.
+  // The classes of the proposer's induced rules that cover a kind never
+  // taught (the rules it proposes from).
   std::vector<std::string> rule_classes_proposed(const Knowledge& k, const std::string& kind) {
     GoalProposer proposer(concepts_, k.goals.all(), forgotten_keys(k));
     GoalKey key{"tidy kitchen", "clear", kind, "table"};
     std::vector<std::string> out;
-    for (const DestinationProposal& p : proposer.propose(world_, key, testing_object(), {}))
-      if (p.source == ProposalSource::kInducedRule && p.rule) out.push_back(p.rule->class_name);
+    for (const ClassRule& rule : proposer.induced_for(key))
+      if (rule_covers(rule, concepts_.profile(kind)) > 0) out.push_back(rule.class_name);
     return out;
   }
   ObjectId testing_object() const { return *world_.universe->find("ketchup1"); }
