@@ -127,8 +127,13 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
   const World& w = world();
   const bool teacher = learning_ && agent_.options_.condition.instruction;
   const std::size_t places = place_count(w, current().places);
+  DecisionPolicy policy = agent_.options_.decision;
+  // The LLM placed the thing by the person's own rule: our reading of the
+  // same words disagreeing is no dispute (the LLM reads them better).
+  if (!rules_said_.empty() && !llm_preferences_.placed_by().empty())
+    policy.not_disputing.push_back(ProposalSource::kPersonRule);
   for (bool first = true;; first = false) {
-    Decision decision = decide(proposals, places, agent_.options_.decision);
+    Decision decision = decide(proposals, places, policy);
     // What was learned for this very kind in another task or subtask is
     // always worth a yes/no before asking where, however the other sources
     // lean.
