@@ -88,24 +88,65 @@ async function teachInPage(context, address, lines, times) {
   await page.close();
 }
 
-// The page's load: the start screen, and a session resumed, each to the
-// point where a person can act (the form filled in; the question shown).
+// When the page is ready for a person, in the page's own clock (from the
+// start of the navigation, as a person waits after pressing Enter in the
+// address bar): the start screen with its worlds listed; a session with its
+// question shown and the reply box enabled.
+function markReady() {
+  window.__ready = {};
+  new MutationObserver(() => {
+    const r = window.__ready;
+    if (r.start === undefined && document.querySelector('#world-select option')) r.start = performance.now();
+    const reply = document.getElementById('reply');
+    if (r.resume === undefined && reply && !reply.disabled && document.querySelector('#conversation li.question') &&
+        !document.getElementById('session').hidden) r.resume = performance.now();
+  }).observe(document, { subtree: true, childList: true, attributes: true });
+}
+
+// The page's load, 20 times each: the start screen, and a session resumed,
+// each to the point where a person can act. Timed in the page (markReady),
+// and from outside (from page.goto until playwright sees it ready, which
+// adds playwright's own round trips to chromium).
 async function pageLoads(context, address, sessionId) {
-  const start = [], resume = [];
+  const start = [], resume = [], startOutside = [], resumeOutside = [];
   const page = await context.newPage();
+  await page.addInitScript(markReady);
   for (let i = 0; i < 20; ++i) {
+    await page.goto('about:blank');
     let t = performance.now();
     await page.goto(address);
-    await page.locator('#world-select option').first().waitFor({ state: 'attached' });
-    start.push(performance.now() - t);
+    await page.waitForFunction(() => window.__ready.start !== undefined);
+    startOutside.push(performance.now() - t);
+    start.push(await page.evaluate(() => window.__ready.start));
     await page.goto('about:blank');
     t = performance.now();
     await page.goto(address + '#session=' + sessionId);
-    await page.locator('#reply:enabled').waitFor();
-    resume.push(performance.now() - t);
+    await page.waitForFunction(() => window.__ready.resume !== undefined);
+    resumeOutside.push(performance.now() - t);
+    resume.push(await page.evaluate(() => window.__ready.resume));
   }
   await page.close();
-  return { start, resume };
+  return { start, resume, startOutside, resumeOutside };
+}
+
+// Loads with nothing kept by the browser (its script and style fetched
+// too): each in a fresh context, 10 of each.
+async function firstLoads(address, sessionId) {
+  const fresh = await chromium.launch({ executablePath: '/usr/bin/chromium', headless: true, args: chromiumFlags });
+  const out = { start: [], resume: [] };
+  for (let i = 0; i < 10; ++i) {
+    for (const [what, url] of [['start', address], ['resume', address + '#session=' + sessionId]]) {
+      const context = await fresh.newContext();
+      const page = await context.newPage();
+      await page.addInitScript(markReady);
+      await page.goto(url);
+      await page.waitForFunction((w) => window.__ready[w] !== undefined, what);
+      out[what].push(await page.evaluate((w) => window.__ready[w], what));
+      await context.close();
+    }
+  }
+  await fresh.close();
+  return out;
 }
 
 const scratch = scratchDir('apprentice-bench-');
@@ -138,9 +179,14 @@ try {
   const idle = await client.start('tidy-kitchen');
   await idle.question();
   const loads = await pageLoads(context, server.address, idle.id);
+  const first = await firstLoads(server.address, idle.id);
   idle.close();
-  console.log(`page load, start screen ready: ${describe(loads.start)}`);
-  console.log(`page load, session resumed to its question: ${describe(loads.resume)}`);
+  console.log(`page load, start screen ready, in the page: ${describe(loads.start)}`);
+  console.log(`page load, session resumed to its question, in the page: ${describe(loads.resume)}`);
+  console.log(`page load, start screen ready, seen by playwright: ${describe(loads.startOutside)}`);
+  console.log(`page load, session resumed, seen by playwright: ${describe(loads.resumeOutside)}`);
+  console.log(`page load with nothing kept (a fresh context), start screen ready, in the page: ${describe(first.start)}`);
+  console.log(`page load with nothing kept (a fresh context), session resumed, in the page: ${describe(first.resume)}`);
 } finally {
   await context.close();
   await server.stop();

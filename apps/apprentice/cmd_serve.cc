@@ -17,8 +17,15 @@ extern "C" void on_stop_signal(int) { g_stop = 1; }
 
 }  // namespace
 
-CommandResult run_serve(serve::ServeOptions options, std::ostream& out) {
+CommandResult run_serve(serve::ServeOptions options, const ServeAgentFlags& agent, std::ostream& out) {
   options.data_dir = data_dir();
+  // As `teach` builds its agent (run_teach), for every session.
+  options.agent = serve::serve_agent_spec();
+  options.agent.condition = agent.condition;
+  options.agent.generalization = agent.generalization;
+  options.agent.goal_repair = agent.llm.goal_repair;
+  options.agent.offer_ungrounded = agent.llm.offer_ungrounded;
+  options.agent.llm = llm_spec(agent.llm);
   struct sigaction action {};
   action.sa_handler = on_stop_signal;
   sigemptyset(&action.sa_mask);

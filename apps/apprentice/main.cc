@@ -396,7 +396,8 @@ int run(int argc, char** argv) {
   serve_cmd->add_option("--scenario", serve_scenarios,
                         "A world to offer besides data/scenarios (YAML; repeatable; the first is preselected)");
   serve_cmd->add_option("--knowledge", serve_knowledge,
-                        "A knowledge store to offer, by its file name (SQLite; repeatable; created if missing)");
+                        "A knowledge store to offer, named on the page by its file or database name: an SQLite file "
+                        "(created if missing), or postgresql://USER@HOST:PORT/DB (repeatable)");
   serve_cmd->add_option("--household", serve_options.household,
                         "The household whose goals and tasks every session reads and writes; rules are shared")
       ->capture_default_str();
@@ -413,12 +414,19 @@ int run(int argc, char** argv) {
   serve_cmd->add_option("--idle-seconds", idle_seconds, "End a session whose question has waited this long with no request from its page")
       ->capture_default_str()
       ->check(whole_number_in(1, 7 * 24 * 3600));
+  ServeAgentFlags serve_agent;
+  serve_cmd->add_option("--condition", serve_agent.condition, "Sources besides the person: inst, inst+search4, inst+llm, ...")
+      ->capture_default_str();
+  serve_cmd->add_option("--generalization", serve_agent.generalization, "Rule generalization: full or paper")
+      ->capture_default_str();
+  add_llm_flags(serve_cmd, serve_agent.llm);
   on_run(serve_cmd, [&] {
+    check_llm_flag(serve_agent.llm);
     serve_options.scenarios.assign(serve_scenarios.begin(), serve_scenarios.end());
-    serve_options.knowledge.assign(serve_knowledge.begin(), serve_knowledge.end());
+    serve_options.knowledge = serve_knowledge;
     if (!serve_log_dir.empty()) serve_options.log_dir = serve_log_dir;
     serve_options.limits.idle = std::chrono::seconds(idle_seconds);
-    result = run_serve(serve_options, std::cout);
+    result = run_serve(serve_options, serve_agent, std::cout);
   });
 
   BenchmarkCommandOptions bench;

@@ -38,15 +38,31 @@ std::optional<std::pair<std::string, int>> domain_entry(std::string_view yaml) {
 
 }  // namespace
 
+std::string store_name(std::string_view location) {
+  for (std::string_view scheme : {"postgresql://", "postgres://"}) {
+    if (location.substr(0, scheme.size()) != scheme) continue;
+    std::string_view rest = location.substr(scheme.size());
+    rest = rest.substr(0, rest.find_first_of("?#"));
+    const std::size_t slash = rest.find('/');
+    if (slash != std::string_view::npos && slash + 1 < rest.size()) return std::string(rest.substr(slash + 1));
+    // No database named: PostgreSQL's default is the user's own.
+    const std::size_t at = rest.find('@');
+    std::string_view user = at == std::string_view::npos ? std::string_view() : rest.substr(0, at);
+    user = user.substr(0, user.find(':'));
+    return user.empty() ? std::string("postgresql") : std::string(user);
+  }
+  return std::filesystem::path(std::string(location)).stem().string();
+}
+
 Result<Catalogue> Catalogue::make(const std::filesystem::path& data_dir, const std::vector<std::filesystem::path>& extra_worlds,
-                                  const std::vector<std::filesystem::path>& stores) {
+                                  const std::vector<std::string>& stores) {
   Catalogue c;
   c.scenarios_dir_ = data_dir / "scenarios";
   std::error_code ec;
   for (const auto& entry : std::filesystem::directory_iterator(data_dir / "domains", ec))
     if (entry.path().extension() == ".pddl") c.domains_.push_back(entry.path().stem().string());
   for (const auto& entry : std::filesystem::directory_iterator(c.scenarios_dir_, ec))
-    if (entry.path().extension() == ".yaml") c.worlds_.push_back({entry.path().stem().string(), entry.path()});
+    if (entry.path().extension() == ".yaml") c.worlds_.push_back({entry.path().stem().string(), entry.path().string()});
   if (ec) return make_error(ErrorCode::kNotFound, c.scenarios_dir_.string() + ": " + ec.message());
   std::sort(c.domains_.begin(), c.domains_.end());
   std::sort(c.worlds_.begin(), c.worlds_.end(), [](const Named& a, const Named& b) { return a.name < b.name; });
@@ -55,16 +71,16 @@ Result<Catalogue> Catalogue::make(const std::filesystem::path& data_dir, const s
     if (auto loaded = load_world(path); !loaded) return tl::unexpected(loaded.error());
     std::string name = path.stem().string();
     std::erase_if(c.worlds_, [&](const Named& e) { return e.name == name; });
-    c.worlds_.insert(c.worlds_.begin(), Named{name, path});
+    c.worlds_.insert(c.worlds_.begin(), Named{name, path.string()});
     if (c.default_world_.empty()) c.default_world_ = name;
   }
   if (c.default_world_.empty()) c.default_world_ = find(c.worlds_, "tidy-kitchen") ? "tidy-kitchen" : "";
-  for (const std::filesystem::path& path : stores) {
-    std::string name = path.stem().string();
+  for (const std::string& location : stores) {
+    std::string name = store_name(location);
     if (find(c.stores_, name))
       return make_error(ErrorCode::kInvalidInput, "two knowledge stores are named " + apprentice::quoted(name) +
-                                                      " (the page offers stores by file name): rename one");
-    c.stores_.push_back({name, path});
+                                                      " (the page offers stores by file or database name): rename one");
+    c.stores_.push_back({name, location});
   }
   if (c.stores_.size() == 1) c.default_store_ = c.stores_.front().name;
   return c;
@@ -78,8 +94,8 @@ Result<Scenario> Catalogue::world(std::string_view name) const {
   return load_world(entry->path);
 }
 
-Result<std::optional<std::filesystem::path>> Catalogue::store(std::string_view name) const {
-  if (name.empty()) return std::optional<std::filesystem::path>();
+Result<std::optional<std::string>> Catalogue::store(std::string_view name) const {
+  if (name.empty()) return std::optional<std::string>();
   const Named* entry = find(stores_, name);
   if (!entry) {
     std::string offered = stores_.empty() ? "it has none (start it with --knowledge FILE to offer one)"
@@ -87,7 +103,7 @@ Result<std::optional<std::filesystem::path>> Catalogue::store(std::string_view n
     return make_error(ErrorCode::kNotFound,
                       "this server has no knowledge store named " + apprentice::quoted(std::string(name)) + "; " + offered);
   }
-  return std::optional<std::filesystem::path>(entry->path);
+  return std::optional<std::string>(entry->path);
 }
 
 Result<Scenario> Catalogue::upload(std::string_view yaml, std::string_view file_name, std::size_t max_bytes) const {

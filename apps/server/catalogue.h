@@ -19,17 +19,22 @@ namespace apprentice::serve {
 
 struct Named {
   std::string name;  // "tidy-kitchen", "kitchen"
-  std::filesystem::path path;
+  std::string path;  // a file; for a store, its location (a file or postgresql://...)
 };
+
+// The name a page offers a store by: an SQLite file's stem ("kitchen" for
+// stores/kitchen.sqlite), a PostgreSQL location's database ("fleet" for
+// postgresql://robot@db.example:5432/fleet?sslmode=require).
+std::string store_name(std::string_view location);
 
 class Catalogue {
  public:
   // The worlds of `data_dir`/scenarios and `extra_worlds`, named by their
   // file's stem (an --scenario of the same name as a shipped one replaces
-  // it); the stores by their file's stem. Errors: a world that does not
+  // it); the stores by store_name(). Errors: a world that does not
   // load (kInvalidInput, kNotFound), two stores of one name (kInvalidInput).
   static Result<Catalogue> make(const std::filesystem::path& data_dir, const std::vector<std::filesystem::path>& extra_worlds,
-                                const std::vector<std::filesystem::path>& stores);
+                                const std::vector<std::string>& stores);
 
   const std::vector<Named>& worlds() const { return worlds_; }
   const std::vector<Named>& stores() const { return stores_; }
@@ -40,8 +45,9 @@ class Catalogue {
   // The world of that name, loaded afresh. kNotFound: no world of that name
   // is offered (the message lists those that are).
   Result<Scenario> world(std::string_view name) const;
-  // The store of that name; "" is none. kNotFound as for world().
-  Result<std::optional<std::filesystem::path>> store(std::string_view name) const;
+  // The store of that name (its location); "" is none. kNotFound as for
+  // world().
+  Result<std::optional<std::string>> store(std::string_view name) const;
   // An uploaded world (YAML text from the page, named `file_name` in
   // messages), checked as any scenario is: errors say the line and column
   // (kInvalidInput). It must be at most `max_bytes`, and its `domain` must

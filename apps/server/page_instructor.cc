@@ -8,12 +8,19 @@ namespace apprentice::serve {
 namespace {
 
 // The replies a question's buttons send: the two answers of a yes/no
-// question, the things a "Which ...?" question offers.
+// question, the two of "Is there more to clear on the table, or is that
+// all?" (a subtask's step asked about no thing, instructor.h), the things a
+// "Which ...?" question offers. Each is a reply a person could type, read
+// as any typed reply is.
 nlohmann::json choices(const Question& question, const World& world) {
   nlohmann::json out = nlohmann::json::array();
   if (is_yes_no(question.kind)) {
     out.push_back({{"label", "Yes"}, {"reply", "yes"}});
     out.push_back({{"label", "No"}, {"reply", "no"}});
+  }
+  if (question.kind == QuestionKind::kSubtaskStep && !question.object) {
+    out.push_back({{"label", "There is more"}, {"reply", "there is more"}});
+    out.push_back({{"label", "That's all"}, {"reply", "that's all"}});
   }
   for (ObjectId choice : question.choices) {
     std::string name = language::spoken_name(world, choice);

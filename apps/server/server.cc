@@ -74,7 +74,19 @@ int status_for(const Error& error) {
 struct StaticFile {
   std::string body;
   std::string type;
+  std::string version;  // a digest of the body, for the page's references
 };
+
+// 16 hex digits of FNV-1a over the text: which version of a file a page
+// names.
+std::string content_digest(std::string_view text) {
+  std::uint64_t hash = 14695981039346656037ull;
+  for (unsigned char c : text) hash = (hash ^ c) * 1099511628211ull;
+  static const char* kHex = "0123456789abcdef";
+  std::string out(16, '0');
+  for (int i = 15; i >= 0; --i, hash >>= 4) out[static_cast<std::size_t>(i)] = kHex[hash & 0xf];
+  return out;
+}
 
 // The page's files, read once at start: only these names are ever served.
 Result<std::map<std::string, StaticFile>> load_page(const std::filesystem::path& web_dir) {
@@ -90,24 +102,53 @@ Result<std::map<std::string, StaticFile>> load_page(const std::filesystem::path&
     if (!entry.is_regular_file() || type == kTypes.end()) continue;
     auto body = read_input_file(entry.path());
     if (!body) return tl::unexpected(body.error());
-    files["/" + entry.path().filename().string()] = StaticFile{std::move(*body), type->second};
+    files["/" + entry.path().filename().string()] = StaticFile{std::move(*body), type->second, ""};
   }
   if (!files.contains("/index.html"))
     return make_error(ErrorCode::kNotFound, (web_dir / "index.html").string() + ": the page is missing (is the data installed?)");
-  files["/"] = files["/index.html"];
+  // The page names its script and style with their contents' digest
+  // ("/app.js?v=..."), so that the browser may keep them (serve_file) and
+  // a changed file is still fetched anew.
+  std::string& html = files["/index.html"].body;
+  for (auto& [name, file] : files) {
+    if (name == "/index.html") continue;
+    file.version = content_digest(file.body);
+    for (const std::string attribute : {"src=\"", "href=\""}) {
+      const std::string reference = attribute + name + "\"";
+      for (std::size_t at = html.find(reference); at != std::string::npos; at = html.find(reference, at + 1))
+        html.replace(at, reference.size(), attribute + name + "?v=" + file.version + "\"");
+    }
+  }
   return files;
+}
+
+// The options a page starts from (GET /api/options), placed in the page
+// too as a JSON data block, so that its start screen needs no second
+// request. '<' is escaped, so that no text in it can end the block.
+std::string page_with_options(std::string html, const std::string& options_json) {
+  std::string data;
+  for (char c : options_json) data += c == '<' ? std::string("\\u003c") : std::string(1, c);
+  const std::string block = "<script type=\"application/json\" id=\"server-options\">" + data + "</script>\n";
+  const std::size_t head_end = html.find("</head>");
+  html.insert(head_end == std::string::npos ? 0 : head_end, block);
+  return html;
 }
 
 class WebServer {
  public:
   WebServer(const ServeOptions& options, Catalogue catalogue, std::map<std::string, StaticFile> page)
-      : options_(options), catalogue_(std::move(catalogue)), page_(std::move(page)), sessions_(options.limits) {}
+      : options_(options), catalogue_(std::move(catalogue)), page_(std::move(page)), sessions_(options.limits) {
+    StaticFile& index = page_["/index.html"];
+    index.body = page_with_options(index.body, options_json());
+    page_["/"] = index;
+  }
 
   Status run(std::ostream& out, const std::function<bool()>& stop_requested);
 
  private:
   std::optional<std::pair<int, std::string>> refuse(const httplib::Request& req) const;
   void routes();
+  std::string options_json() const;
   void create_session(const httplib::Request& req, httplib::Response& res);
   void post_reply(const std::string& id, const httplib::Request& req, httplib::Response& res);
   void stream_events(const std::string& id, const httplib::Request& req, httplib::Response& res);
@@ -122,6 +163,22 @@ class WebServer {
   std::atomic<bool> stopping_{false};
   std::atomic<int> streams_{0};
 };
+
+std::string WebServer::options_json() const {
+  nlohmann::json worlds = nlohmann::json::array(), stores = nlohmann::json::array();
+  for (const Named& w : catalogue_.worlds()) worlds.push_back(w.name);
+  for (const Named& s : catalogue_.stores()) stores.push_back(s.name);
+  const ServeLimits& l = options_.limits;
+  return dump_json(nlohmann::json{{"worlds", worlds},
+                                  {"stores", stores},
+                                  {"default_world", catalogue_.default_world()},
+                                  {"default_store", catalogue_.default_store()},
+                                  {"condition", options_.agent.condition},
+                                  {"limits",
+                                   {{"max_body_bytes", l.max_body_bytes}, {"max_world_bytes", l.max_world_bytes},
+                                    {"max_reply_chars", l.max_reply_chars}, {"max_sessions", l.max_sessions},
+                                    {"idle_seconds", l.idle.count()}}}});
+}
 
 // Why a request is refused before it reaches a route, if it is: the
 // status and a sentence.
@@ -188,8 +245,8 @@ void WebServer::create_session(const httplib::Request& req, httplib::Response& r
   setup.world_name = world_name;
   setup.scenario = std::move(*scenario);
   setup.store_name = store_name;
-  setup.store_path = *store;
-  setup.household = options_.household;
+  setup.agent = options_.agent;
+  setup.agent.knowledge = store->value_or("");
   if (options_.log_dir) setup.log_path = *options_.log_dir / (setup.id + ".jsonl");
   auto session = sessions_.start(std::move(setup));
   if (!session) return send_error(res, status_for(session.error()), session.error().message);
@@ -300,24 +357,16 @@ void WebServer::routes() {
       res.set_header("Content-Security-Policy",
                      "default-src 'self'; img-src 'self' data:; style-src 'self'; script-src 'self'; "
                      "connect-src 'self'; frame-ancestors 'none'; base-uri 'none'; form-action 'none'");
-    res.set_header("Cache-Control", "no-cache");
+    // A file asked for by the version the page names never changes: the
+    // browser keeps it. The page itself, and any other request, is checked
+    // each time.
+    const bool versioned = !file->second.version.empty() && req.has_param("v") &&
+                           req.get_param_value("v") == file->second.version;
+    res.set_header("Cache-Control", versioned ? "max-age=31536000, immutable" : "no-cache");
     res.set_content(file->second.body, file->second.type);
   });
   http_.Get("/api/options", [this](const httplib::Request&, httplib::Response& res) {
-    nlohmann::json worlds = nlohmann::json::array(), stores = nlohmann::json::array();
-    for (const Named& w : catalogue_.worlds()) worlds.push_back(w.name);
-    for (const Named& s : catalogue_.stores()) stores.push_back(s.name);
-    const ServeLimits& l = options_.limits;
-    res.set_content(dump_json(nlohmann::json{
-                        {"worlds", worlds},
-                        {"stores", stores},
-                        {"default_world", catalogue_.default_world()},
-                        {"default_store", catalogue_.default_store()},
-                        {"limits",
-                         {{"max_body_bytes", l.max_body_bytes}, {"max_world_bytes", l.max_world_bytes},
-                          {"max_reply_chars", l.max_reply_chars}, {"max_sessions", l.max_sessions},
-                          {"idle_seconds", l.idle.count()}}}}),
-                    "application/json");
+    res.set_content(options_json(), "application/json");
   });
   http_.Post("/api/sessions", [this](const httplib::Request& req, httplib::Response& res) { create_session(req, res); });
   http_.Get(R"(/api/sessions/([0-9a-f]{32}))", [this](const httplib::Request& req, httplib::Response& res) {
@@ -405,7 +454,44 @@ std::string page_address(const ServeOptions& options, int port) {
   return "http://" + host + ":" + std::to_string(port) + "/" + (options.token.empty() ? "" : "?token=" + options.token);
 }
 
-Status serve(const ServeOptions& options, std::ostream& out, const std::function<bool()>& stop_requested) {
+AgentSpec serve_agent_spec() {
+  AgentSpec spec = default_agent_spec();
+  spec.condition = "inst+search4";
+  spec.instructed_always = true;  // a person is teaching, as with `teach`
+  return spec;
+}
+
+namespace {
+
+// Builds one agent from the spec, in `world`, before the server listens: a
+// condition, generalization or goal-repair text that is wrong, or an LLM
+// that does not answer, is then told at once rather than to the first
+// person who starts a session. Once the LLM has answered, sessions do not
+// ask it again before they start; when it does not answer and the LLM is
+// optional, no session asks it (`out` says so).
+Status check_agent(AgentSpec& spec, const Scenario& world, std::ostream& out) {
+  spec.knowledge.clear();
+  const bool optional = spec.llm.optional;
+  spec.llm.optional = false;
+  auto agent = make_agent_session(spec, world);
+  spec.llm.optional = optional;
+  if (!agent && agent.error().code == ErrorCode::kUnavailable && optional) {
+    std::string why = agent.error().message;
+    const std::string hint = " (--llm-optional goes on without it)";
+    if (why.ends_with(hint)) why.resize(why.size() - hint.size());
+    out << "The LLM does not answer, so the sessions go on without it (--llm-optional): " << why << ".\n";
+    spec.llm.off = true;
+    agent = make_agent_session(spec, world);
+  }
+  if (!agent) return tl::unexpected(agent.error());
+  spec.llm.check_first = false;
+  return {};
+}
+
+}  // namespace
+
+Status serve(const ServeOptions& given, std::ostream& out, const std::function<bool()>& stop_requested) {
+  ServeOptions options = given;
   if (!is_loopback(options.host) && options.token.empty())
     return make_error(ErrorCode::kInvalidInput, "--host " + options.host +
                                                     " lets other machines reach the page: give --token SECRET too, and "
@@ -421,10 +507,17 @@ Status serve(const ServeOptions& options, std::ostream& out, const std::function
     if (ec) return make_error(ErrorCode::kIo, options.log_dir->string() + ": " + ec.message());
   }
   if (auto s = check_household_name(options.household); !s) return tl::unexpected(s.error());
+  options.agent.household = options.household;
   auto catalogue = Catalogue::make(options.data_dir, options.scenarios, options.knowledge);
   if (!catalogue) return tl::unexpected(catalogue.error());
   auto page = load_page(options.data_dir / "web");
   if (!page) return tl::unexpected(page.error());
+  if (catalogue->worlds().empty())
+    return make_error(ErrorCode::kNotFound, (options.data_dir / "scenarios").string() + ": there are no worlds to offer");
+  auto first_world = catalogue->world(catalogue->default_world().empty() ? catalogue->worlds().front().name
+                                                                         : catalogue->default_world());
+  if (!first_world) return tl::unexpected(first_world.error());
+  if (auto checked = check_agent(options.agent, *first_world, out); !checked) return checked;
   WebServer server(options, std::move(*catalogue), std::move(*page));
   return server.run(out, stop_requested);
 }

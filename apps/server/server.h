@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "face/apprentice.h"
 #include "knowledge/store_access.h"
 #include "util/result.h"
 
@@ -33,6 +34,9 @@ struct ServeLimits {
   std::chrono::seconds idle{30 * 60};                    // a session with no request for this long ends
 };
 
+// The agent `teach` builds by default: inst+search4, a person teaching.
+AgentSpec serve_agent_spec();
+
 struct ServeOptions {
   std::string host = "127.0.0.1";
   int port = 8080;  // 0: any free port (printed)
@@ -41,11 +45,17 @@ struct ServeOptions {
   // cookie).
   std::string token;
   std::vector<std::filesystem::path> scenarios;  // offered besides data/scenarios; the first is preselected
-  std::vector<std::filesystem::path> knowledge;  // stores offered by their file's stem
-  std::string household = kDefaultHousehold;     // whose goals and tasks the sessions read and write
+  // Stores offered: an SQLite file, named on the page by its stem, or
+  // postgresql://USER@HOST:PORT/DB, named by its database (catalogue.h).
+  std::vector<std::string> knowledge;
+  std::string household = kDefaultHousehold;  // whose goals and tasks the sessions read and write
   std::optional<std::filesystem::path> log_dir;  // each session's log as DIR/<session>.jsonl
   std::filesystem::path data_dir;                // the shipped data: scenarios, domains, web
   ServeLimits limits;
+  // How each session's agent is built (face/apprentice.h), as `teach`
+  // builds it: the condition, the generalization, the LLM. Its `knowledge`
+  // is set per session, to the store the page chose.
+  AgentSpec agent = serve_agent_spec();
 };
 
 // The address a person opens: "http://127.0.0.1:8080/" (with "?token=..."
@@ -55,10 +65,15 @@ std::string page_address(const ServeOptions& options, int port);
 // Checks the options, loads the page and the worlds, listens, prints the
 // address to `out` (once listening, flushed), and serves until
 // `stop_requested` returns true (polled several times a second); then ends
-// every session (what each taught is kept) and returns. Errors:
-// kInvalidInput for options (a public --host without --token, a short
-// token, a limit out of range), a broken --scenario or the missing page;
-// kIo when it cannot listen (the port is taken).
+// every session (what each taught is kept) and returns. Before it listens
+// it builds one agent from `options.agent` (in the first world offered),
+// so that a bad condition or an LLM that does not answer stops it at once;
+// with `agent.llm.optional`, an LLM that does not answer is left out of
+// every session, and a line says so. Errors: kInvalidInput for options (a
+// public --host without --token, a short token, a limit out of range, a
+// condition that needs an LLM without one), a broken --scenario or the
+// missing page; the store's and the LLM's (kUnavailable); kIo when it
+// cannot listen (the port is taken).
 Status serve(const ServeOptions& options, std::ostream& out, const std::function<bool()>& stop_requested);
 
 }  // namespace apprentice::serve

@@ -25,14 +25,22 @@ std::string new_session_id() {
 }
 
 Result<std::shared_ptr<TeachingSession>> SessionRegistry::start(SessionSetup setup) {
-  std::lock_guard lock(mutex_);
-  int live = 0;
-  for (const auto& [id, session] : sessions_) live += session->ended() ? 0 : 1;
-  if (live >= limits_.max_sessions)
-    return make_error(ErrorCode::kUnavailable, "the server is already teaching " + std::to_string(live) +
-                                                   " sessions, its limit (--max-sessions); try again when one ends");
+  {
+    std::lock_guard lock(mutex_);
+    int live = starting_;
+    for (const auto& [id, session] : sessions_) live += session->ended() ? 0 : 1;
+    if (live >= limits_.max_sessions)
+      return make_error(ErrorCode::kUnavailable, "the server is already teaching " + std::to_string(live) +
+                                                     " sessions, its limit (--max-sessions); try again when one ends");
+    ++starting_;  // its place is held while it starts
+  }
   if (setup.id.empty()) setup.id = new_session_id();
+  // Built outside the lock: opening a store and making an agent take tens
+  // of milliseconds, in which the other sessions' replies and events must
+  // still find their sessions (find()).
   auto session = TeachingSession::start(std::move(setup));
+  std::lock_guard lock(mutex_);
+  --starting_;
   if (!session) return tl::unexpected(session.error());
   std::shared_ptr<TeachingSession> shared = std::move(*session);
   sessions_[shared->id()] = shared;

@@ -37,6 +37,7 @@ class SessionRegistry {
   ServeLimits limits_;
   mutable std::mutex mutex_;
   std::map<std::string, std::shared_ptr<TeachingSession>> sessions_;
+  int starting_ = 0;  // sessions being started, outside the lock
 };
 
 }  // namespace apprentice::serve

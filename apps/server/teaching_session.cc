@@ -55,12 +55,7 @@ std::string summary(const Scenario& scenario, const State& state, bool finished,
 }  // namespace
 
 Result<std::unique_ptr<TeachingSession>> TeachingSession::start(SessionSetup setup) {
-  // As `teach` wires it: inst+search4, the store, no LLM.
-  AgentSpec spec = default_agent_spec();
-  spec.condition = "inst+search4";
-  if (setup.store_path) spec.knowledge = setup.store_path->string();
-  spec.household = setup.household;
-  auto agent = make_agent_session(spec, setup.scenario);
+  auto agent = make_agent_session(setup.agent, setup.scenario);
   if (!agent) return tl::unexpected(agent.error());
   auto events = SessionEvents::open(setup.log_path);
   if (!events) return tl::unexpected(events.error());
@@ -99,7 +94,7 @@ nlohmann::json TeachingSession::description() const {
 void TeachingSession::run() {
   const Scenario& scenario = setup_.scenario;
   events_->append({{"type", "start"}, {"world", setup_.world_name}, {"scenario", scenario.name},
-                   {"store", setup_.store_name}, {"condition", "inst+search4"}});
+                   {"store", setup_.store_name}, {"condition", setup_.agent.condition}});
   auto report = agent_->learn(*instructor_);
   const bool finished = report && !report->stopped;
   const State end_state = report ? report->end : scenario.world.state;

@@ -26,9 +26,11 @@ struct SessionSetup {
   std::string world_name;  // as the start screen offered it, or the uploaded world's name
   Scenario scenario;       // the agent is given only its world; the intent measures progress
   std::string store_name;  // empty: nothing is kept
-  std::optional<std::filesystem::path> store_path;  // the server's own store of that name
-  std::optional<std::filesystem::path> log_path;    // under --log-dir, if given
-  std::string household = kDefaultHousehold;        // serve --household
+  // The agent, as the server's flags say (server.h); its `knowledge` is the
+  // location of the server's own store of that name, or empty, and its
+  // `household` the server's --household.
+  AgentSpec agent;
+  std::optional<std::filesystem::path> log_path;  // under --log-dir, if given
 };
 
 class TeachingSession {

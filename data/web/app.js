@@ -56,12 +56,22 @@ function capitalize(s) { return s ? s[0].toUpperCase() + s.slice(1) : s; }
 
 // ---- the start screen ----
 
+// The worlds, stores and limits: in the page itself (the server places
+// them there), else asked for.
+async function serverOptions() {
+  const block = $('server-options');
+  if (block) {
+    try { return JSON.parse(block.textContent); } catch (e) { /* asked for below */ }
+  }
+  return api('GET', '/api/options');
+}
+
 async function showStart(message) {
   $('loading').hidden = true;
   $('session').hidden = true;
   $('start').hidden = false;
   if (message) showStartError(message);
-  const options = await api('GET', '/api/options');
+  const options = await serverOptions();
   const worlds = $('world-select');
   worlds.replaceChildren();
   for (const name of options.worlds) {
@@ -120,10 +130,20 @@ async function startSession(event) {
 // ---- a session ----
 
 async function openSession(id) {
+  // The event stream opens at once, beside the request for the session's
+  // description; what it sends before that answer is shown just after it.
+  const source = new EventSource('/api/sessions/' + id + '/events');
+  const early = [];
+  let ready = false;
+  source.onmessage = (message) => {
+    if (ready) handle(JSON.parse(message.data), Number(message.lastEventId));
+    else early.push(message);
+  };
   let description;
   try {
     description = await api('GET', '/api/sessions/' + id);
   } catch (e) {
+    source.close();
     history.replaceState(null, '', '/');
     return showStart('That session is gone: ' + e.message);
   }
@@ -136,9 +156,10 @@ async function openSession(id) {
   $('download-log').href = '/api/sessions/' + id + '/log';
   $('download-log').setAttribute('download', 'apprentice-' + id + '.jsonl');
   $('conversation').replaceChildren();
-  const source = new EventSource('/api/sessions/' + id + '/events');
+  setWaiting(false);  // until its question comes
   state.source = source;
-  source.onmessage = (message) => handle(JSON.parse(message.data), Number(message.lastEventId));
+  ready = true;
+  for (const message of early.splice(0)) handle(JSON.parse(message.data), Number(message.lastEventId));
   // The browser reconnects by itself after a dropped connection; it gives
   // up only when the server refuses (the session is gone, the server stopped).
   source.onerror = () => {

@@ -41,6 +41,22 @@ struct Library {
   // class_size's table, built once from the directory the library reads.
   bool sizes_built = false;
   SynsetSizes sizes;
+  // The answers so far, from the directory the library reads (wordnet.h).
+  std::map<std::string, std::vector<SynsetOffset>, std::less<>> senses;
+  std::map<SynsetOffset, std::optional<Synset>> synsets;
+  std::map<std::pair<int, std::string>, std::vector<std::string>, std::less<>> base_forms;  // by part of speech
+  std::map<std::string, bool, std::less<>> verbs;
+  std::map<std::string, bool, std::less<>> known;
+
+  void forget_answers() {
+    sizes_built = false;
+    sizes = SynsetSizes{};
+    senses.clear();
+    synsets.clear();
+    base_forms.clear();
+    verbs.clear();
+    known.clear();
+  }
 };
 
 Library& library() {
@@ -90,11 +106,6 @@ bool usable(std::string_view s) {
 
 }  // namespace
 
-struct WordNet::Cache {
-  std::map<std::string, std::vector<SynsetOffset>, std::less<>> senses;
-  std::map<SynsetOffset, std::optional<Synset>> synsets;
-};
-
 Result<WordNet> WordNet::open(const std::optional<std::filesystem::path>& dictionary) {
   Library& lib = library();
   std::lock_guard lock(lib.mutex);
@@ -125,14 +136,11 @@ Result<WordNet> WordNet::open(const std::optional<std::filesystem::path>& dictio
                             (env ? std::string(env) : std::string("the library's default directory")));
     }
     lib.open = true;
-    if (wanted != lib.directory) {
-      lib.sizes_built = false;
-      lib.sizes = SynsetSizes{};
-    }
+    if (wanted != lib.directory) lib.forget_answers();
     lib.directory = wanted;
     spdlog::debug("wordnet: opened {}", wanted.empty() ? "the default database" : wanted);
   }
-  return WordNet(std::make_shared<Cache>());
+  return WordNet();
 }
 
 namespace {
@@ -141,8 +149,11 @@ namespace {
 std::vector<std::string> base_forms(std::string_view word, int part_of_speech) {
   std::vector<std::string> forms;
   if (!usable(word)) return forms;
-  std::lock_guard lock(library().mutex);
-  if (!library().open) return forms;
+  Library& lib = library();
+  std::lock_guard lock(lib.mutex);
+  if (!lib.open) return forms;
+  auto key = std::make_pair(part_of_speech, std::string(word));
+  if (auto it = lib.base_forms.find(key); it != lib.base_forms.end()) return it->second;
   CString query(word);
   std::string self = from_wordnet(query.text);
   // morphstr iterates through static state: the first call takes the word,
@@ -152,6 +163,7 @@ std::vector<std::string> base_forms(std::string_view word, int part_of_speech) {
     std::string base = from_wordnet(form);
     if (base != self && std::find(forms.begin(), forms.end(), base) == forms.end()) forms.push_back(base);
   }
+  lib.base_forms.emplace(std::move(key), forms);
   return forms;
 }
 
@@ -165,26 +177,28 @@ std::vector<std::string> WordNet::adjective_base_forms(std::string_view word) co
 
 std::vector<SynsetOffset> WordNet::noun_senses(std::string_view lemma) const {
   if (!usable(lemma)) return {};
-  std::lock_guard lock(library().mutex);
-  if (!library().open) return {};
+  Library& lib = library();
+  std::lock_guard lock(lib.mutex);
+  if (!lib.open) return {};
   std::string key = from_wordnet(CString(lemma).text);
-  if (auto it = cache_->senses.find(key); it != cache_->senses.end()) return it->second;
+  if (auto it = lib.senses.find(key); it != lib.senses.end()) return it->second;
   std::vector<SynsetOffset> offsets;
   CString query(key);
   if (IndexPtr index = index_lookup(query.text, NOUN)) {
     for (int i = 0; i < index->off_cnt; ++i) offsets.push_back(static_cast<SynsetOffset>(index->offset[i]));
     free_index(index);
   }
-  cache_->senses.emplace(key, offsets);
+  lib.senses.emplace(key, offsets);
   return offsets;
 }
 
 std::optional<Synset> WordNet::synset(SynsetOffset offset) const {
-  std::lock_guard lock(library().mutex);
-  if (auto it = cache_->synsets.find(offset); it != cache_->synsets.end()) return it->second;
+  Library& lib = library();
+  std::lock_guard lock(lib.mutex);
   std::optional<Synset> result;
+  if (!lib.open) return result;
+  if (auto it = lib.synsets.find(offset); it != lib.synsets.end()) return it->second;
   char empty[1] = {'\0'};
-  if (!library().open) return result;
   if (offset >= 0) {
     if (SynsetPtr raw = read_synset(NOUN, offset, empty)) {
       Synset s;
@@ -201,7 +215,7 @@ std::optional<Synset> WordNet::synset(SynsetOffset offset) const {
       result = std::move(s);
     }
   }
-  cache_->synsets.emplace(offset, result);
+  lib.synsets.emplace(offset, result);
   return result;
 }
 
@@ -312,19 +326,22 @@ bool WordNet::has_noun(std::string_view lemma) const { return !noun_senses(lemma
 
 bool WordNet::has_verb(std::string_view lemma) const {
   if (!usable(lemma)) return false;
-  std::lock_guard lock(library().mutex);
-  if (!library().open) return false;
+  Library& lib = library();
+  std::lock_guard lock(lib.mutex);
+  if (!lib.open) return false;
+  if (auto it = lib.verbs.find(lemma); it != lib.verbs.end()) return it->second;
   CString query(lemma);
   IndexPtr index = index_lookup(query.text, VERB);
-  if (index == nullptr) return false;
-  free_index(index);
-  return true;
+  if (index != nullptr) free_index(index);
+  lib.verbs.emplace(std::string(lemma), index != nullptr);
+  return index != nullptr;
 }
 
-bool WordNet::knows(std::string_view word) const {
-  if (!usable(word)) return false;
-  std::lock_guard lock(library().mutex);
-  if (!library().open) return false;
+namespace {
+
+// Whether the library finds the word under any part of speech, directly or
+// through morphology. Under the lock.
+bool look_up_anywhere(std::string_view word) {
   for (int pos = NOUN; pos <= ADV; ++pos) {
     CString query(word);
     if (IndexPtr index = index_lookup(query.text, pos)) {
@@ -339,6 +356,19 @@ bool WordNet::knows(std::string_view word) const {
     }
   }
   return false;
+}
+
+}  // namespace
+
+bool WordNet::knows(std::string_view word) const {
+  if (!usable(word)) return false;
+  Library& lib = library();
+  std::lock_guard lock(lib.mutex);
+  if (!lib.open) return false;
+  if (auto it = lib.known.find(word); it != lib.known.end()) return it->second;
+  const bool found = look_up_anywhere(word);
+  lib.known.emplace(std::string(word), found);
+  return found;
 }
 
 }  // namespace apprentice::language

@@ -6,6 +6,12 @@
 // library, not a choice of ours, so this wrapper is its single owner: every
 // call into it, from any WordNet handle, holds one process-wide lock, and
 // wninit() runs once. No other file of apprentice may include <wn.h>.
+//
+// Every answer is kept for the process (until another directory is
+// opened): the database never changes, and each look-up costs the library
+// hundreds of seeks and reads, under that one lock. Agents that run at
+// once (`apprentice serve`'s sessions) would otherwise queue behind each
+// other's look-ups of the same words.
 #pragma once
 
 #include <filesystem>
@@ -73,9 +79,7 @@ class WordNet {
   bool knows(std::string_view word) const;
 
  private:
-  struct Cache;
-  explicit WordNet(std::shared_ptr<Cache> cache) : cache_(std::move(cache)) {}
-  std::shared_ptr<Cache> cache_;  // shared by copies; guarded by the process lock
+  WordNet() = default;
 };
 
 }  // namespace apprentice::language

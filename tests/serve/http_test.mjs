@@ -126,6 +126,52 @@ test('limits: an oversized body, an oversized world, a reply too long, too many 
   });
 });
 
+test('limits: event streams open at once, twice the sessions plus 8', async () => {
+  await withServer(['--max-sessions', '1'], async (server, client) => {
+    const session = await client.start('tidy-kitchen');
+    await session.question();  // its own stream is the first
+    const streams = [];
+    const open = async () => {
+      const controller = new AbortController();
+      const response = await fetch(`${client.base}/api/sessions/${session.id}/events`, { signal: controller.signal });
+      streams.push(controller);
+      return response;
+    };
+    for (let i = 1; i < 10; ++i) assert.equal((await open()).status, 200, 'stream ' + (i + 1));
+    const refused = await open();
+    assert.equal(refused.status, 503);
+    assert.match((await refused.json()).error, /too many pages are open on this server; close some/);
+    // Replies still find a thread.
+    const asked = await session.question();
+    assert.equal((await session.reply('tidy the kitchen', asked.seq)).status, 200);
+    assert.equal((await session.question(asked.seq)).text, 'What should I do first to tidy the kitchen?');
+    for (const s of streams) s.abort();
+    session.close();
+  });
+});
+
+test('the page carries its options, and names its script and style by version, which the browser may keep', async () => {
+  await withServer([], async (server, client) => {
+    const page = await client.request('GET', '/');
+    assert.equal(page.status, 200);
+    assert.equal(page.headers.get('cache-control'), 'no-cache');
+    const block = /<script type="application\/json" id="server-options">([^<]*)<\/script>/.exec(page.body);
+    assert.ok(block, 'the page has no options block');
+    assert.deepEqual(JSON.parse(block[1]), (await client.request('GET', '/api/options')).body);
+    for (const file of ['app.js', 'style.css']) {
+      const named = new RegExp(`"/${file.replace('.', '\\.')}\\?v=([0-9a-f]{16})"`).exec(page.body);
+      assert.ok(named, file + ' is not named by version');
+      const kept = await client.request('GET', `/${file}?v=${named[1]}`);
+      assert.equal(kept.status, 200);
+      assert.equal(kept.headers.get('cache-control'), 'max-age=31536000, immutable');
+      assert.equal(kept.body, fs.readFileSync(path.join(sourceDir, 'data/web', file), 'utf8'));
+      // Any other version, or none, is checked each time.
+      assert.equal((await client.request('GET', `/${file}?v=0000000000000000`)).headers.get('cache-control'), 'no-cache');
+      assert.equal((await client.request('GET', `/${file}`)).headers.get('cache-control'), 'no-cache');
+    }
+  });
+});
+
 test('a session idle past --idle-seconds ends, keeping what it learned, and is forgotten later', async () => {
   const store = path.join(scratch, 'idle.sqlite');
   await withServer(['--idle-seconds', '1', '--knowledge', store], async (server, client) => {
@@ -146,6 +192,90 @@ test('a session idle past --idle-seconds ends, keeping what it learned, and is f
   const known = spawnSync(binary, ['knowledge', '--knowledge', store, '--json'], { encoding: 'utf8' });
   assert.equal(known.status, 0, known.stderr);
   assert.deepEqual(JSON.parse(known.stdout).goals.map((g) => g.text.includes('ceramic-plate')), [true]);
+});
+
+test('an "Is there more?" question offers "There is more" and "That\'s all", each read as if typed', async () => {
+  await withServer([], async (server, client) => {
+    const asked = [];
+    for (const ending of ["that's all", 'there is more']) {
+      const session = await client.start('tidy-kitchen');
+      const question = await session.teach(['tidy the kitchen', 'repeat while something is on the table', 'clear the table',
+                                            'plates and glasses go in the dishwasher, close it']);
+      assert.equal(question.text, 'Is there more to clear on the table, or is that all?');
+      assert.equal(question.kind, 'subtask-step');
+      assert.deepEqual(question.choices, [{ label: 'There is more', reply: 'there is more' }, { label: "That's all", reply: "that's all" }]);
+      const choice = question.choices.find((c) => c.reply === ending);
+      assert.equal((await session.reply(choice.reply, question.seq)).status, 200);
+      const next = await session.question(question.seq);
+      const said = session.events.filter((e) => e.seq > question.seq && e.seq < next.seq && e.type === 'say').map((e) => e.text);
+      asked.push([said[0], next.text, next.choices]);
+      session.close();
+    }
+    // "That's all": one thing was the whole part, and the task goes on.
+    assert.deepEqual(asked[0], ['So that is all there is to clear for one thing.', 'What should I do next to tidy the kitchen?', []]);
+    // "There is more": the rest of the table the same way, then a thing it does not know.
+    assert.deepEqual(asked[1], ['So I clear everything else on the table the same way.', 'Where should the metal fork on the table go?', []]);
+  });
+});
+
+test('--condition and --llm as for teach: the LLM\'s goal is offered as a yes/no, and the log names the condition', async () => {
+  // Two recorded statements that agree, for the first plate on the table.
+  const corpus = path.join(scratch, 'plate-goals.jsonl');
+  const line = (rank) => JSON.stringify({ condition: 'TBP', object: 'ceramic-plate', start_location: 'table', subtask: 'clear', rank,
+                                          response: 'the goal is that the ceramic-plate is in the dishwasher and the dishwasher is closed' });
+  fs.writeFileSync(corpus, line(0) + '\n' + line(1) + '\n');
+  await withServer(['--condition', 'inst+llm', '--llm', 'corpus:' + corpus], async (server, client) => {
+    const session = await client.start('tidy-kitchen');
+    const asked = await session.teach(['tidy the kitchen', 'clear the table']);
+    assert.equal(asked.kind, 'confirm-goal');
+    assert.match(asked.text, /ceramic-plate is in the dishwasher and the dishwasher is closed\?$/);
+    assert.deepEqual(asked.choices.map((c) => c.reply), ['yes', 'no']);
+    assert.equal((await session.reply('yes', asked.seq)).status, 200);
+    await session.question(asked.seq);
+    assert.ok(session.events.some((e) => e.type === 'say' && e.text === 'So the ceramic plate goes in the dishwasher, and the dishwasher ends closed.'));
+    assert.equal(session.events.find((e) => e.type === 'start').condition, 'inst+llm');
+    session.close();
+  });
+  // Without the LLM the default condition asks where the plate goes.
+  await withServer([], async (server, client) => {
+    const session = await client.start('tidy-kitchen');
+    const asked = await session.teach(['tidy the kitchen', 'clear the table']);
+    assert.equal(asked.text, 'Where should the ceramic plate on the table go?');
+    assert.equal(session.events.find((e) => e.type === 'start').condition, 'inst+search4');
+    session.close();
+  });
+});
+
+test('a wrong --condition, an LLM condition without an LLM, and an LLM that does not answer stop serve before it listens', async () => {
+  const env = { ...process.env };
+  delete env.APPRENTICE_LLM;
+  const run = (args) => spawnSync(binary, ['serve', '--port', '0', ...args], { encoding: 'utf8', timeout: 60000, env });
+  const unknown = run(['--condition', 'inst+telepathy']);
+  assert.equal(unknown.status, 2, unknown.stderr);
+  assert.doesNotMatch(unknown.stdout, /open http/);
+  const noLlm = run(['--condition', 'inst+llm']);
+  assert.equal(noLlm.status, 2, noLlm.stderr);
+  assert.match(noLlm.stderr, /condition inst\+llm needs an LLM: pass --llm SPEC/);
+  // A port nothing listens on.
+  const closed = await new Promise((resolve) => {
+    const probe = net.createServer().listen(0, '127.0.0.1', () => {
+      const { port } = probe.address();
+      probe.close(() => resolve(port));
+    });
+  });
+  const llm = ['--condition', 'inst+llm', '--llm', `openai:http://127.0.0.1:${closed}/v1`, '--llm-timeout-ms', '2000',
+               '--llm-connect-timeout-ms', '1000'];
+  const dead = run(llm);
+  assert.equal(dead.status, 4, dead.stdout + dead.stderr);
+  assert.doesNotMatch(dead.stdout, /open http/);
+  // With --llm-optional it serves, without the LLM, and says so.
+  await withServer([...llm, '--llm-optional'], async (server, client) => {
+    assert.match(server.output(), /The LLM does not answer, so the sessions go on without it \(--llm-optional\): cannot get an answer from the LLM server at http:\/\/127\.0\.0\.1:\d+\/v1\/completions: .*\.\n/);
+    const session = await client.start('tidy-kitchen');
+    const asked = await session.teach(['tidy the kitchen', 'clear the table']);
+    assert.equal(asked.text, 'Where should the ceramic plate on the table go?');
+    session.close();
+  });
 });
 
 test('nothing a client sends names a path', async () => {

@@ -173,6 +173,31 @@ test('a yes/no question answered by its button, and a goal forgotten by its Forg
   await page.close();
 });
 
+test('an "Is there more?" question gets its two buttons, and "There is more" goes on with the rest', async () => {
+  const page = await context.newPage();
+  await startSession(page, 'tidy-kitchen', '');
+  // A loop announced before its part: the agent does one thing, then asks
+  // whether the part has more to it.
+  for (const line of ['tidy the kitchen', 'repeat while something is on the table', 'clear the table',
+                      'plates and glasses go in the dishwasher, close it'])
+    await reply(page, line);
+  assert.equal(await lastQuestion(page), 'Is there more to clear on the table, or is that all?');
+  assert.deepEqual(await page.locator('#choices button').allTextContents(), ['There is more', "That's all"]);
+  await drawn(page);
+  await page.screenshot({ path: path.join(artifacts, 'is-there-more.png') });
+  const before = await questions(page);
+  await page.getByRole('button', { name: 'There is more' }).click();
+  await page.waitForFunction((n) => document.querySelectorAll('#conversation li.question').length > n, before);
+  assert.match(await page.locator('#conversation li.person').last().textContent(), /there is more/);
+  assert.match(await page.locator('#conversation').textContent(), /So I clear everything else on the table the same way\./);
+  // The second plate was put away as the first, without asking.
+  assert.equal(await lastQuestion(page), 'Where should the metal fork on the table go?');
+  assert.equal(await page.locator('#choices button').count(), 0);
+  await page.getByRole('button', { name: 'Stop' }).click();
+  await page.locator('#conversation li.summary').waitFor();
+  await page.close();
+});
+
 test('an uploaded broken world gets a readable error with its line', async () => {
   const page = await context.newPage();
   await page.goto(server.address);
