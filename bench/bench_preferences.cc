@@ -16,6 +16,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <functional>
 #include <map>
@@ -170,6 +171,18 @@ void report(const char* label, const std::vector<Case>& cases,
     std::printf("  %5.2f   %5zu  %4zu (%5.1f%%)  %4zu (%5.1f%%)   %4zu\n", t, acted, ok, 100.0 * ok / n, acted - ok,
                 100.0 * (acted - ok) / n, outcomes.size() - acted);
   }
+  // The most it could place right alone with at most 3% of the objects
+  // placed wrong (the bound), over every threshold.
+  std::vector<Outcome> by_confidence = outcomes;
+  std::stable_sort(by_confidence.begin(), by_confidence.end(),
+                   [](const Outcome& a, const Outcome& b) { return a.confidence > b.confidence; });
+  std::size_t ok = 0, bad = 0, best_ok = 0;
+  double best_at = 1;
+  for (const Outcome& o : by_confidence) {
+    (o.right ? ok : bad) += 1;
+    if (100.0 * bad / n <= 3.0 && ok > best_ok) best_ok = ok, best_at = o.confidence;
+  }
+  std::printf("  at most 3%% wrong: %.1f%% right, acting at %.3f\n", 100.0 * best_ok / n, best_at);
   if (errors)
     for (const Outcome& o : outcomes)
       if (!o.right)
@@ -182,19 +195,20 @@ void report(const char* label, const std::vector<Case>& cases,
 int main(int argc, char** argv) {
   std::string scenarios_path;
   bool do_fit = false, errors = false;
-  std::string explain;
+  std::string explain, weights_text;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--scenarios") && i + 1 < argc) scenarios_path = argv[++i];
     else if (!std::strcmp(argv[i], "--fit")) do_fit = true;
     else if (!std::strcmp(argv[i], "--errors")) errors = true;
     else if (!std::strcmp(argv[i], "--explain") && i + 1 < argc) explain = argv[++i];
+    else if (!std::strcmp(argv[i], "--weights") && i + 1 < argc) weights_text = argv[++i];
     else {
-      std::fprintf(stderr, "usage: bench_preferences --scenarios FILE [--fit] [--errors]\n");
+      std::fprintf(stderr, "usage: bench_preferences --scenarios FILE [--fit] [--errors] [--weights W1,W2,...]\n");
       return 2;
     }
   }
   if (scenarios_path.empty()) {
-    std::fprintf(stderr, "usage: bench_preferences --scenarios FILE [--fit] [--errors]\n");
+    std::fprintf(stderr, "usage: bench_preferences --scenarios FILE [--fit] [--errors] [--weights W1,W2,...]\n");
     return 2;
   }
   std::vector<TidyScenario> scenarios;
@@ -245,6 +259,13 @@ int main(int argc, char** argv) {
   std::printf("loading %.0f ms (vectors: %s), %zu scenarios in %.0f ms\n", ms(t0, t1), vectors ? "yes" : "no",
               scenarios.size(), ms(t1, t2));
   std::vector<double> w = as_vector(Parameters{});
+  // --weights W1,W2,...: the likeness weights, then the rules' exponent, in
+  // place of the defaults (as many as given).
+  for (std::size_t k = 0, at = 0; k < w.size() && at < weights_text.size(); ++k) {
+    const std::size_t comma = weights_text.find(',', at);
+    w[k] = std::strtod(weights_text.substr(at, comma - at).c_str(), nullptr);
+    at = comma == std::string::npos ? weights_text.size() : comma + 1;
+  }
   if (do_fit) {
     // Two-fold cross-validation over the scenarios: weights fitted on the
     // unseen objects of one half of the scenarios are measured on the

@@ -328,7 +328,7 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::start_object(Object
   if (const GoalKnowledge* known = agent_.knowledge_.goals.find(goal_key(object))) {
     goal = instantiate_goal(world(), *known, object);
     if (goal) {
-      report.goal_source = "memory";
+      report.goal_source = GoalSource::kMemory;
       if (learning_) say(language::announce_known_goal(world(), object, *goal));
     }
   }

@@ -48,23 +48,23 @@ std::string percent(double confidence) {
 }
 
 // Where the goal came from, for the object's report: the strongest support.
-std::string goal_source_of(const Decision& decision) {
-  if (decision.support.empty()) return "decision";
+GoalSource goal_source_of(const Decision& decision) {
+  if (decision.support.empty()) return GoalSource::kDecision;
   const DestinationProposal& top = decision.support.front();
   if (std::any_of(decision.support.begin(), decision.support.end(), is_analogy) &&
       (top.source == ProposalSource::kMemory || top.source == ProposalSource::kAnalogy))
-    return "analogy";
+    return GoalSource::kAnalogy;
   switch (top.source) {
     case ProposalSource::kMemory:
     case ProposalSource::kAnalogy:
-    case ProposalSource::kSimilarity: return "likeness";
-    case ProposalSource::kInducedRule: return "rule";
-    case ProposalSource::kPersonRule: return "person's rule";
+    case ProposalSource::kSimilarity: return GoalSource::kLikeness;
+    case ProposalSource::kInducedRule: return GoalSource::kRule;
+    case ProposalSource::kPersonRule: return GoalSource::kPersonRule;
     case ProposalSource::kLlmPlacement:
-    case ProposalSource::kLlmRule: return "llm";
-    case ProposalSource::kFleet: return "fleet";
+    case ProposalSource::kLlmRule: return GoalSource::kLlm;
+    case ProposalSource::kFleet: return GoalSource::kFleet;
   }
-  return "decision";
+  return GoalSource::kDecision;
 }
 
 }  // namespace
@@ -127,8 +127,13 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
   const World& w = world();
   const bool teacher = learning_ && agent_.options_.condition.instruction;
   const std::size_t places = place_count(w, current().places);
+  DecisionPolicy policy = agent_.options_.decision;
+  // The LLM placed the thing by the person's own rule: our reading of the
+  // same words disagreeing is no dispute (the LLM reads them better).
+  if (!rules_said_.empty() && !llm_preferences_.placed_by().empty())
+    policy.not_disputing.push_back(ProposalSource::kPersonRule);
   for (bool first = true;; first = false) {
-    Decision decision = decide(proposals, places, agent_.options_.decision);
+    Decision decision = decide(proposals, places, policy);
     // What was learned for this very kind in another task or subtask is
     // always worth a yes/no before asking where, however the other sources
     // lean.
@@ -169,7 +174,7 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
       if (answer->instead) {
         // "No, it goes in the garbage": the teacher's own goal, learned.
         refused_.emplace_back(goal_key(object).category, *decision.destination);
-        report.goal_source = "instructor";
+        report.goal_source = GoalSource::kInstructor;
         return answer->instead;
       }
       if (!answer->yes) {

@@ -137,7 +137,7 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
         // is (the paper's Search+LLM condition); one that cannot be used
         // fails the object.
         report.note = "LLM goal " + apprentice::quoted(choice->text) + " is unusable: " +
-                      (chosen ? chosen->failure_kind : std::string("ungrounded"));
+                      (chosen ? std::string(to_string(chosen->failure_kind)) : std::string("ungrounded"));
         return std::optional<Goal>();
       }
       if (instructed) say(language::read_back_goal(world(), object, *chosen->goal));
@@ -146,7 +146,7 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
                            ": " + apprentice::quoted(choice->text) + (repairs.empty() ? "" : " (" + repairs + ")") +
                            (instructed ? " (confirmed)" : "");
       if (auto s = learn_goal(object, *chosen->goal, source); !s) return stop(s.error());
-      report.goal_source = "llm";
+      report.goal_source = GoalSource::kLlm;
       return chosen->goal;
     }
     // Nothing accepted: the failure context of the next query.
@@ -207,7 +207,7 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
     if (auto s = learn_goal(about, given.goal, source); !s) return stop(s.error());
     if (auto s = learn_goals_of_others(object, about, given, source); !s) return stop(s.error());
     if (ahead) continue;
-    report.goal_source = "instructor";
+    report.goal_source = GoalSource::kInstructor;
     return std::optional<Goal>(given.goal);
   }
 }

@@ -194,6 +194,9 @@ KindProfile LexicalConcepts::profile(std::string_view kind) const {
   p.vector = words_vector(all, weights);
   p.head_vector = words_vector(head_words, std::vector<double>(head_words.size(), 1.0));
   p.modifier_vector = words_vector(p.modifiers, std::vector<double>(p.modifiers.size(), 1.0));
+  if (vectors_ != nullptr)
+    for (const std::string& word : all)
+      if (std::vector<float> v = vectors_->word(word); !v.empty()) p.word_vectors.push_back(std::move(v));
   return profiles_.emplace(std::string(kind), std::move(p)).first->second;
 }
 

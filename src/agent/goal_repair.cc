@@ -109,8 +109,8 @@ std::string clause_text(const language::Conjunct& conjunct) {
 // Failures of a clause that no repair of wording could fix: the world
 // cannot make it true (an affordance it lacks) or the domain has no
 // predicate for it. These clauses can be left out.
-bool can_never_hold(std::string_view failure_kind) {
-  return failure_kind == "affordance-mismatch" || failure_kind == "unknown-predicate";
+bool can_never_hold(MeaningFailure failure_kind) {
+  return failure_kind == MeaningFailure::kAffordanceMismatch || failure_kind == MeaningFailure::kUnknownPredicate;
 }
 
 // The places the goal puts the object (positive on/in literals).
@@ -167,9 +167,9 @@ class Analyser {
   std::uint64_t search_nodes() const { return search_nodes_; }
 
  private:
-  void fail(AnalysedGoal& out, std::string kind, std::string why) {
+  void fail(AnalysedGoal& out, MeaningFailure kind, std::string why) {
     out.goal.reset();
-    out.failure_kind = std::move(kind);
+    out.failure_kind = kind;
     out.failure = std::move(why);
   }
 
@@ -202,14 +202,14 @@ class Analyser {
     }
     Goal rest(std::move(kept));
     if (rest.empty() || destinations(world_, rest, object_).empty()) {
-      fail(out, "no-destination",
+      fail(out, MeaningFailure::kNoDestination,
            "Without what cannot hold, " + apprentice::quoted(out.candidate.text) + " says nowhere to put the " +
                world_.universe->info(object_).category + ".");
       return false;
     }
     out.goal = std::move(rest);
     out.dropped = std::move(dropped);
-    out.failure_kind.clear();
+    out.failure_kind = MeaningFailure::kNone;
     out.failure.clear();
     return true;
   }
@@ -239,11 +239,11 @@ class Analyser {
     const std::optional<ObjectId> here = language::place_of(world_, object_);
     const std::string noun = "the " + world_.universe->info(object_).category;
     if (places.empty() || std::all_of(places.begin(), places.end(), [&](ObjectId p) { return p == here; })) {
-      fail(out, "no-destination", "That goal does not move " + noun + " from where it is.");
+      fail(out, MeaningFailure::kNoDestination, "That goal does not move " + noun + " from where it is.");
       return;
     }
     if (out.goal->satisfied_by(world_.state)) {
-      fail(out, "already-holds", "That goal holds already.");
+      fail(out, MeaningFailure::kAlreadyHolds, "That goal holds already.");
       return;
     }
     SearchOptions search;
@@ -252,7 +252,7 @@ class Analyser {
     PlanResult plan = find_plan(*world_.domain, *world_.universe, world_.state, *out.goal, search);
     search_nodes_ += plan.statistics.nodes_expanded;
     if (plan.status != SearchStatus::kSolved)
-      fail(out, "unreachable", "I find no way to reach that goal.");
+      fail(out, MeaningFailure::kUnreachable, "I find no way to reach that goal.");
   }
 
   Understanding& understanding_;

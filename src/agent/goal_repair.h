@@ -78,7 +78,7 @@ struct AnalysedGoal {
   std::vector<std::string> dropped;  // the clauses left out, each with why
   std::vector<ObjectId> closings;    // receptacles whose closing was added
   std::vector<bool> closing_by_norm; // for each: by the default norm, not from learned goals
-  std::string failure_kind;          // when unusable: "affordance-mismatch", "no-destination", ...
+  MeaningFailure failure_kind = MeaningFailure::kNone;  // when unusable
   std::string failure;               // a sentence the agent can say
   double weight = 1.0;               // exp(mean log-probability), or 1 when not given
   double score = 0.0;                // what the choice orders by

@@ -5,15 +5,34 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace apprentice {
+
+// Where an object's goal came from.
+enum class GoalSource {
+  kNone,         // no goal
+  kMemory,       // learned before, for this kind in this subtask
+  kInstructor,   // the teacher said it
+  kLlm,          // the language model's goal, adopted
+  kAnalogy,      // another kind's goal, taken by analogy
+  kLikeness,     // decided from things like it
+  kRule,         // decided by a rule induced from the goals
+  kPersonRule,   // decided by a rule the person said
+  kFleet,        // decided from other robots' knowledge
+  kDecision,     // decided with no source ahead of the others
+};
+
+// The name in reports and JSON: "", "memory", "instructor", "llm",
+// "analogy", "likeness", "rule", "person's rule", "fleet", "decision".
+std::string_view to_string(GoalSource source);
 
 // How one object went.
 struct ObjectReport {
   std::string object;
   std::string subtask;
-  std::string goal_source;  // "memory", "instructor", "llm", or "" if none
+  GoalSource goal_source = GoalSource::kNone;
   std::string goal;         // as PDDL, if any
   bool achieved = false;
   std::string note;         // why not, if not

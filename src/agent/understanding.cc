@@ -24,6 +24,32 @@ Result<language::LogicalForm> Understanding::parse(std::string_view sentence) co
   return language::parse(sentence);
 }
 
+std::string_view to_string(MeaningFailure failure) {
+  switch (failure) {
+    case MeaningFailure::kNone: return "";
+    case MeaningFailure::kUnknownWord: return language::to_string(language::FailureKind::kUnknownWord);
+    case MeaningFailure::kUninterpretable: return language::to_string(language::FailureKind::kUninterpretable);
+    case MeaningFailure::kUngroundedObject: return language::to_string(language::FailureKind::kUngroundedObject);
+    case MeaningFailure::kAffordanceMismatch: return language::to_string(language::FailureKind::kAffordanceMismatch);
+    case MeaningFailure::kUnknownPredicate: return language::to_string(language::FailureKind::kUnknownPredicate);
+    case MeaningFailure::kNoDestination: return "no-destination";
+    case MeaningFailure::kAlreadyHolds: return "already-holds";
+    case MeaningFailure::kUnreachable: return "unreachable";
+  }
+  return "";
+}
+
+MeaningFailure meaning_failure(language::FailureKind kind) {
+  switch (kind) {
+    case language::FailureKind::kUnknownWord: return MeaningFailure::kUnknownWord;
+    case language::FailureKind::kUninterpretable: return MeaningFailure::kUninterpretable;
+    case language::FailureKind::kUngroundedObject: return MeaningFailure::kUngroundedObject;
+    case language::FailureKind::kAffordanceMismatch: return MeaningFailure::kAffordanceMismatch;
+    case language::FailureKind::kUnknownPredicate: return MeaningFailure::kUnknownPredicate;
+  }
+  return MeaningFailure::kUninterpretable;
+}
+
 namespace {
 
 GoalMeaning goal_meaning(const language::Interpretation& interpretation) {
@@ -31,10 +57,10 @@ GoalMeaning goal_meaning(const language::Interpretation& interpretation) {
   if (const Goal* goal = std::get_if<Goal>(&interpretation.result)) {
     meaning.goal = *goal;
   } else if (const auto* failure = interpretation.failure()) {
-    meaning.failure_kind = std::string(language::to_string(failure->kind));
+    meaning.failure_kind = meaning_failure(failure->kind);
     meaning.failure = failure->message;
   } else {
-    meaning.failure_kind = "uninterpretable";
+    meaning.failure_kind = MeaningFailure::kUninterpretable;
     meaning.failure = "That is not a goal.";
   }
   return meaning;
@@ -45,10 +71,10 @@ ActionMeaning action_meaning(const language::Interpretation& interpretation) {
   if (const Action* action = std::get_if<Action>(&interpretation.result)) {
     meaning.action = *action;
   } else if (const auto* failure = interpretation.failure()) {
-    meaning.failure_kind = std::string(language::to_string(failure->kind));
+    meaning.failure_kind = meaning_failure(failure->kind);
     meaning.failure = failure->message;
   } else {
-    meaning.failure_kind = "uninterpretable";
+    meaning.failure_kind = MeaningFailure::kUninterpretable;
     meaning.failure = "That is not an action.";
   }
   return meaning;

@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 
+#include "language/grounding_types.h"
 #include "language/lexicon.h"
 #include "language/logical_form.h"
 #include "language/reply.h"
@@ -19,16 +20,37 @@
 
 namespace apprentice {
 
+// Why a sentence gave no goal or action that can be used: how grounding
+// failed (language::FailureKind), or, for a goal, what its repair found
+// after (goal_repair.h).
+enum class MeaningFailure {
+  kNone,                // a goal or action was found
+  kUnknownWord,         // a word neither the world nor WordNet knows
+  kUninterpretable,     // the grammar fails, or it is not a goal (an action)
+  kUngroundedObject,    // no such thing here, or more than one fits
+  kAffordanceMismatch,  // closing a lidless bin
+  kUnknownPredicate,    // "turned on": no predicate for it
+  kNoDestination,       // without what cannot hold, it says nowhere to put the thing
+  kAlreadyHolds,        // the goal holds already
+  kUnreachable,         // no way to reach the goal
+};
+
+// The name in notes and logs: "", "unknown-word", "uninterpretable",
+// "ungrounded-object", "affordance-mismatch", "unknown-predicate",
+// "no-destination", "already-holds", "unreachable".
+std::string_view to_string(MeaningFailure failure);
+MeaningFailure meaning_failure(language::FailureKind kind);
+
 // A goal, or why none: `failure` is a sentence the agent can say.
 struct GoalMeaning {
   std::optional<Goal> goal;
-  std::string failure_kind;  // "unknown-word", "uninterpretable", ... when no goal
+  MeaningFailure failure_kind = MeaningFailure::kNone;  // when no goal
   std::string failure;
 };
 
 struct ActionMeaning {
   std::optional<Action> action;
-  std::string failure_kind;
+  MeaningFailure failure_kind = MeaningFailure::kNone;
   std::string failure;
 };
 

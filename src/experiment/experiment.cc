@@ -58,7 +58,7 @@ std::optional<double> silent_relevance(const Scenario& scenario, const std::vect
   int adopted = 0, relevant = 0;
   const World& world = scenario.world;
   for (const ObjectReport& o : objects) {
-    if (o.goal_source != "llm") continue;
+    if (o.goal_source != GoalSource::kLlm) continue;
     ++adopted;
     auto id = world.universe->find(o.object);
     auto intended = id ? scenario.intended_goal(o.subtask, *id) : std::nullopt;

@@ -247,8 +247,12 @@ std::string to_json(const SessionReport& report) {
   const AgentReport& agent = report.agent;
   nlohmann::json objects = nlohmann::json::array();
   for (const ObjectReport& o : agent.objects)
-    objects.push_back({{"object", o.object}, {"subtask", o.subtask}, {"goal_source", o.goal_source}, {"goal", o.goal},
-                       {"achieved", o.achieved}, {"note", o.note}});
+    objects.push_back({{"object", o.object},
+                       {"subtask", o.subtask},
+                       {"goal_source", std::string(to_string(o.goal_source))},
+                       {"goal", o.goal},
+                       {"achieved", o.achieved},
+                       {"note", o.note}});
   nlohmann::json j{{"instructions", report.counts.instructions},
                    {"words", report.counts.words},
                    {"yes_no", report.counts.yes_no},

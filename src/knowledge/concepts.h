@@ -48,6 +48,10 @@ struct KindProfile {
   std::vector<float> vector;
   std::vector<float> head_vector;
   std::vector<float> modifier_vector;
+  // The unit vector of each word of the name, modifiers first and the
+  // head's words last (a word the vectors lack is left out); empty without
+  // the vectors.
+  std::vector<std::vector<float>> word_vectors;
 };
 
 class ConceptSource {

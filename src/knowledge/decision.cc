@@ -114,10 +114,29 @@ Decision decide(std::span<const DestinationProposal> proposals, std::size_t plac
   decision.destination = best.destination;
   decision.confidence = best.probability;
   decision.support = best.support;
-  decision.kind = best.probability >= policy.act_at      ? Decision::Kind::kAct
+  std::vector<DestinationProposal> disputing;
+  for (const DestinationProposal& p : proposals)
+    if (std::find(policy.not_disputing.begin(), policy.not_disputing.end(), p.source) == policy.not_disputing.end())
+      disputing.push_back(p);
+  decision.disputed = disputed(disputing, best.destination, policy.dispute_at);
+  const double act_at = decision.disputed ? std::max(policy.act_at, policy.act_disputed_at) : policy.act_at;
+  decision.kind = best.probability >= act_at             ? Decision::Kind::kAct
                   : best.probability >= policy.confirm_at ? Decision::Kind::kConfirm
                                                           : Decision::Kind::kAskWhere;
   return decision;
+}
+
+bool disputed(std::span<const DestinationProposal> proposals, const Destination& best, double at) {
+  for (const DestinationProposal& p : proposals) {
+    if (p.confidence < at || p.destination == best) continue;
+    // The source's own best: no proposal of the same source surer of
+    // another destination.
+    const bool its_best = std::none_of(proposals.begin(), proposals.end(), [&](const DestinationProposal& q) {
+      return q.source == p.source && q.confidence > p.confidence;
+    });
+    if (its_best) return true;
+  }
+  return false;
 }
 
 std::vector<DestinationProposal> without_destination(std::span<const DestinationProposal> proposals, const Destination& refused) {

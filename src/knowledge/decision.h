@@ -75,6 +75,17 @@ struct DecisionPolicy {
   // Below act_at, asks yes/no about the best destination when its
   // probability is at least this; else asks where the thing goes.
   double confirm_at = 0.25;
+  // A disputed decision acts alone only from this belief (at least
+  // act_at): one where some source is at least `dispute_at` sure of
+  // another destination than the best. Sources that disagree are the
+  // sign of a mistake (the LLM's placement against the examples' likeness),
+  // so the agent asks rather than outvote one of them; 0 (the default):
+  // no difference.
+  double act_disputed_at = 0;
+  double dispute_at = 0.5;
+  // Sources whose disagreement is no dispute (the person's rule as our
+  // reader applies it, where the LLM placed the thing by the same words).
+  std::vector<ProposalSource> not_disputing;
   // Each source's weight in the product (its exponent): 1 trusts it as an
   // independent expert, less discounts it. A source not named weighs 1.
   std::map<ProposalSource, double> weights;
@@ -107,12 +118,19 @@ struct Decision {
   // The whole belief, most probable first, for reports and the next
   // question after a "no".
   std::vector<Belief> beliefs;
+  // Some source is at least DecisionPolicy::dispute_at sure of another
+  // destination (kAct then needs act_disputed_at).
+  bool disputed = false;
 };
 
 Decision decide(std::span<const DestinationProposal> proposals, std::size_t place_count, const DecisionPolicy& policy);
 
 // The proposals without those for a destination the teacher refused for
 // this thing (after a "no", the next question is about what is left).
+// Whether some source's most confident proposal, at `at` or more, is for
+// another destination than `best`.
+bool disputed(std::span<const DestinationProposal> proposals, const Destination& best, double at);
+
 std::vector<DestinationProposal> without_destination(std::span<const DestinationProposal> proposals, const Destination& refused);
 
 }  // namespace apprentice

@@ -17,6 +17,45 @@ bool shares_a_modifier(const KindProfile& a, const KindProfile& b) {
   });
 }
 
+// The words feature of every destination: each word of the thing's name is
+// matched to its likeliest word among a destination's examples (the
+// highest cosine), and the destinations are scored by the weighted mean of
+// those matches, each word weighted by how much its matches differ from
+// one destination to another (a word that matches everywhere alike tells
+// nothing: "shirt" where every example is clothing), plus a little, and the
+// last word (the head) twice. So "clean shorts" goes where "clean t-shirt"
+// went and not where "dirty socks" did, though all are clothes.
+std::vector<double> word_scores(std::span<const PlacementExample> examples, const KindProfile& thing,
+                                const std::vector<LikenessFeatures>& destinations) {
+  const std::size_t n = thing.word_vectors.size();
+  std::vector<double> out(destinations.size(), 0.0);
+  if (n == 0) return out;
+  std::vector<std::vector<double>> best(destinations.size(), std::vector<double>(n, -1.0));
+  for (const PlacementExample& e : examples) {
+    auto d = std::find_if(destinations.begin(), destinations.end(),
+                          [&](const LikenessFeatures& f) { return f.destination == e.destination; });
+    if (d == destinations.end()) continue;
+    std::vector<double>& mine = best[static_cast<std::size_t>(d - destinations.begin())];
+    for (std::size_t i = 0; i < n; ++i)
+      for (const std::vector<float>& u : e.thing.word_vectors) mine[i] = std::max(mine[i], cosine(thing.word_vectors[i], u));
+  }
+  std::vector<double> weight(n, 0.0);
+  double total = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    double high = -1, low = 1;
+    for (const std::vector<double>& b : best) {
+      high = std::max(high, b[i]);
+      low = std::min(low, b[i]);
+    }
+    weight[i] = (high - low) + 0.1;
+    if (i + 1 == n) weight[i] *= 2;
+    total += weight[i];
+  }
+  for (std::size_t d = 0; d < destinations.size(); ++d)
+    for (std::size_t i = 0; i < n; ++i) out[d] += weight[i] * best[d][i] / total;
+  return out;
+}
+
 }  // namespace
 
 std::vector<LikenessFeatures> likeness_features(std::span<const PlacementExample> examples, const KindProfile& thing,
@@ -45,9 +84,13 @@ std::vector<LikenessFeatures> likeness_features(std::span<const PlacementExample
   }
   for (std::size_t i = 0; i < out.size(); ++i) {
     out[i].values[1] /= static_cast<double>(by_name[i].size());
+    out[i].values[7] = -1;
     std::stable_sort(by_name[i].begin(), by_name[i].end(), [](const auto& a, const auto& b) { return a.first > b.first; });
     for (const auto& [similarity, kind] : by_name[i]) out[i].nearest.push_back(kind);
   }
+  std::vector<double> words = word_scores(examples, thing, out);
+  for (std::size_t i = 0; i < out.size(); ++i)
+    if (!thing.word_vectors.empty()) out[i].values[7] = words[i];
   // The class feature: the thing's likeness to the names of the classes
   // induced for each destination.
   std::map<std::string, std::vector<float>> class_vectors;

@@ -16,9 +16,16 @@
 //   class     the highest cosine of its vector with the name of a class
 //             induced for the destination ("candy" for the Reese's and the
 //             Life Savers), times that rule's confidence
+//   words     each word of its name matched to the nearest word of the
+//             destination's examples, weighted by how much the matches
+//             differ between destinations (so modifiers count where the
+//             examples split by them: "clean" and "dirty" clothes)
 // and proposes the softmax of the weighted sum over the destinations. The
-// weights are fitted on the examples of the TidyBot benchmark's
-// development half, each left out in turn (docs/benchmarks.md).
+// weights were chosen on the TidyBot benchmark's development half
+// (bench/bench_preferences.cc --weights; docs/benchmarks.md, "Words that
+// split the examples"): the words feature carries most of the weight, the
+// mean, head and same-head features none (a shared head pulled the clay
+// pot to the copper pot where the examples split by material).
 #pragma once
 
 #include <array>
@@ -31,16 +38,16 @@
 
 namespace apprentice {
 
-inline constexpr std::size_t kLikenessFeatures = 7;
+inline constexpr std::size_t kLikenessFeatures = 8;
 
 struct LikenessWeights {
   // In the order of the features above.
-  std::array<double, kLikenessFeatures> weights = {4.0, 12.0, 1.0, 1.5, 3.0, 1.0, 4.0};
+  std::array<double, kLikenessFeatures> weights = {4.0, 0.0, 0.0, 1.0, 2.0, 0.0, 0.0, 20.0};
   // The features of "somewhere else": a place no example went to, as like
   // the thing as unrelated names are (their cosines near 0.3). Without it a
   // lone destination would get all the belief, however unlike its
   // examples the thing is (the paper plate is no ketchup).
-  std::array<double, kLikenessFeatures> elsewhere = {0.3, 0.3, 0.3, 0.0, 0.0, 0.0, 0.0};
+  std::array<double, kLikenessFeatures> elsewhere = {0.3, 0.3, 0.3, 0.0, 0.0, 0.0, 0.0, 0.3};
 };
 
 // Each destination's features for one thing (the rows of the fit). `rules`

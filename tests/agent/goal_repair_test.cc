@@ -77,7 +77,7 @@ TEST_F(GoalRepair, ClosingALidlessBinIsLeftOutAndTheRestKept) {
   GoalAnalysis as_is = analyse("plastic-bottle1", {statement(
       "the goal is that the plastic-bottle is in the recycling bin and the recycling bin is closed")}, no_drop);
   EXPECT_EQ(as_is.usable(), 0);
-  EXPECT_EQ(as_is.goals[0].failure_kind, "affordance-mismatch");
+  EXPECT_EQ(as_is.goals[0].failure_kind, MeaningFailure::kAffordanceMismatch);
 }
 
 TEST_F(GoalRepair, AnUnknownPredicateIsLeftOutAndTheDoorClosedByTheNorm) {
@@ -122,25 +122,25 @@ TEST_F(GoalRepair, AGoalMustMoveTheObjectAndBeReachable) {
       statement("the goal is that the glass-tumbler is in the dish rack and the dish rack is tidy")};
   GoalAnalysis analysis = analyse("glass-tumbler2", stay);
   ASSERT_EQ(analysis.usable(), 0);
-  EXPECT_EQ(analysis.goals[0].failure_kind, "no-destination");
+  EXPECT_EQ(analysis.goals[0].failure_kind, MeaningFailure::kNoDestination);
   GoalRepairOptions no_check;
   no_check.check = false;
   EXPECT_EQ(analyse("glass-tumbler2", stay, no_check).usable(), 1);
   // Nothing left that says where the object goes.
   GoalAnalysis nowhere = analyse("plastic-cup1", {statement("the goal is that the sink is full of water")});
   EXPECT_EQ(nowhere.usable(), 0);
-  EXPECT_EQ(nowhere.goals[0].failure_kind, "no-destination");
+  EXPECT_EQ(nowhere.goals[0].failure_kind, MeaningFailure::kNoDestination);
   // Two places at once: search finds no way.
   GoalAnalysis twice =
       analyse("ketchup1", {statement("the goal is that the ketchup is in the fridge and the ketchup is in the pantry")});
   EXPECT_EQ(twice.usable(), 0);
-  EXPECT_EQ(twice.goals[0].failure_kind, "unreachable");
+  EXPECT_EQ(twice.goals[0].failure_kind, MeaningFailure::kUnreachable);
 }
 
 TEST_F(GoalRepair, WhatNamesNothingHereIsNotRepaired) {
   GoalAnalysis analysis = analyse("mug1", {statement("the goal is that the mug is in the attic and the attic is closed")});
   EXPECT_EQ(analysis.usable(), 0);
-  EXPECT_NE(analysis.goals[0].failure_kind, "");
+  EXPECT_NE(analysis.goals[0].failure_kind, MeaningFailure::kNone);
   EXPECT_FALSE(analysis.goals[0].failure.empty());
 }
 

@@ -139,7 +139,7 @@ TEST_F(Learning, NeverAsksTwiceForAGoalOfTheSameKind) {
     ASSERT_TRUE(run.report.has_value());
     expect_goals_asked_once_per_kind(*kitchen_, run, 26);
     int from_memory = 0;
-    for (const ObjectReport& o : run.report->objects) from_memory += o.goal_source == "memory" ? 1 : 0;
+    for (const ObjectReport& o : run.report->objects) from_memory += o.goal_source == GoalSource::kMemory ? 1 : 0;
     EXPECT_EQ(from_memory, 4);
   }
 }

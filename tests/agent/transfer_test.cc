@@ -225,14 +225,14 @@ TEST(TransferInTheAgent, PerformsTheRenamedKitchenWithTheKitchensKnowledge) {
   // A synonym's goal, from memory.
   const ObjectReport* catsup = report_for(*report, "catsup1");
   ASSERT_NE(catsup, nullptr);
-  EXPECT_EQ(catsup->goal_source, "memory");
+  EXPECT_EQ(catsup->goal_source, GoalSource::kMemory);
   EXPECT_TRUE(catsup->achieved);
   EXPECT_EQ(catsup->goal, "(and (in catsup1 refrigerator1) (closed refrigerator1))");
   // Saltines are crackers (distance 1, the same subtask), and the crackers
   // and the granola bars went to the larder: decided alone.
   const ObjectReport* saltines = report_for(*report, "saltines1");
   ASSERT_NE(saltines, nullptr);
-  EXPECT_FALSE(saltines->goal_source.empty());
+  EXPECT_NE(saltines->goal_source, GoalSource::kNone);
   EXPECT_TRUE(saltines->achieved);
   EXPECT_EQ(saltines->goal, "(and (in saltines1 larder1) (closed larder1))");
   EXPECT_GE(saltines->belief, default_decision_policy().act_at);
@@ -268,12 +268,16 @@ TEST(TransferInTheAgent, TheTeacherConfirmsAnalogiesAndTeachesTheRest) {
   // In doubt, a yes/no that shows its evidence; a yes is learned, in this
   // world's words, with where it came from.
   EXPECT_THAT(carried.transcript_text,
-              HasSubstr("Does the ceramic dish on the dining table go like the ceramic plate and the metal fork: it goes in "
-                        "the dishwashing machine, and the dishwashing machine ends closed?\nInstructor: yes."));
-  const GoalKnowledge* dish = carried.knowledge.goals.find(GoalKey{"tidy kitchen", "clear", "ceramic-dish", "dining-table"});
+              HasSubstr("Does the paper dish on the dining table go like the paper plate and the plastic fork: it goes in "
+                        "the trash can?\nInstructor: yes."));
+  const GoalKnowledge* dish = carried.knowledge.goals.find(GoalKey{"tidy kitchen", "clear", "paper-dish", "dining-table"});
   ASSERT_NE(dish, nullptr);
-  EXPECT_THAT(dish->provenance.source, HasSubstr("decision: like the ceramic-plate and the metal-fork (confirmed)"));
-  // Sure enough, it acts alone and says why.
+  EXPECT_THAT(dish->provenance.source, HasSubstr("decision: like the paper-plate and the plastic-fork (confirmed)"));
+  // Sure enough, it acts alone and says why: the ceramic dish, whose words
+  // ("ceramic", "dish") both match the ceramic plate's.
+  EXPECT_THAT(carried.transcript_text,
+              HasSubstr("Agent: The ceramic dish on the dining table goes in the dishwashing machine, and the dishwashing "
+                        "machine ends closed, like the ceramic plate and the metal fork.\nAgent: I opened"));
   EXPECT_THAT(carried.transcript_text, HasSubstr("Agent: The saltines on the sideboard go in the larder, and the larder "
                                                  "ends closed, like the crackers and the granola bars.\nAgent: I opened"));
   // A no, and the teacher's own answer: the cream in the refrigerator.

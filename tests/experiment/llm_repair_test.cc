@@ -77,7 +77,7 @@ TEST(LlmGoals, WithoutAnInstructorAnUnusableAnswerIsFollowedByARePrompt) {
   ASSERT_TRUE(result.relevance.has_value());
   bool milk_adopted = false;
   for (const ObjectReport& object : result.report.objects)
-    if (object.object.rfind("milk", 0) == 0 && object.goal_source == "llm" && object.achieved) milk_adopted = true;
+    if (object.object.rfind("milk", 0) == 0 && object.goal_source == GoalSource::kLlm && object.achieved) milk_adopted = true;
   EXPECT_TRUE(milk_adopted);
   // Turned off, the unusable answer fails the object, as before.
   ExperimentOptions no_reprompt = experiment_options(factory("openai:" + server.url()));
@@ -85,7 +85,7 @@ TEST(LlmGoals, WithoutAnInstructorAnUnusableAnswerIsFollowedByARePrompt) {
   ConditionResult once = testing::run(scenario, "search4+llm", no_reprompt);
   for (const ObjectReport& object : once.report.objects)
     if (object.object.rfind("milk", 0) == 0) {
-      EXPECT_NE(object.goal_source, "llm");
+      EXPECT_NE(object.goal_source, GoalSource::kLlm);
     }
 }
 

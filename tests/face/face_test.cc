@@ -4,6 +4,10 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -74,6 +78,12 @@ TEST(Face, LearningWithTheSimulatedInstructorGivesTableThree) {
   EXPECT_EQ(report->objects_done, 30);
   EXPECT_THAT(report->summary, HasSubstr("The task is learned: 35 of 35 goal assertions hold, after 40 instructions."));
   EXPECT_THAT(report->summary, HasSubstr("Nothing was saved."));
+  // Where each goal came from keeps its name in the JSON: the teacher's
+  // first of a kind, then memory for the rest of that kind.
+  std::set<std::string> learned_from;
+  const nlohmann::json learned = nlohmann::json::parse(to_json(*report));
+  for (const auto& o : learned["objects"]) learned_from.insert(o["goal_source"]);
+  EXPECT_EQ(learned_from, (std::set<std::string>{"instructor", "memory"}));
 
   // Then alone, with what it learned.
   auto alone = (*session)->perform("");
@@ -86,6 +96,26 @@ TEST(Face, LearningWithTheSimulatedInstructorGivesTableThree) {
   EXPECT_EQ(j["assertions_achieved"], 35);
   EXPECT_EQ(j["actions"], alone->agent.actions_executed);
   EXPECT_TRUE(j["help_needed"].empty());
+  for (const auto& o : j["objects"]) EXPECT_EQ(o["goal_source"], "memory") << o["object"];
+}
+
+// The report's enums keep the names the JSON had when they were strings.
+TEST(Face, GoalSourcesKeepTheirNamesInTheJson) {
+  const std::vector<std::pair<GoalSource, std::string>> sources = {
+      {GoalSource::kNone, ""},          {GoalSource::kMemory, "memory"},   {GoalSource::kInstructor, "instructor"},
+      {GoalSource::kLlm, "llm"},        {GoalSource::kAnalogy, "analogy"}, {GoalSource::kLikeness, "likeness"},
+      {GoalSource::kRule, "rule"},      {GoalSource::kPersonRule, "person's rule"},
+      {GoalSource::kFleet, "fleet"},    {GoalSource::kDecision, "decision"}};
+  SessionReport report;
+  for (const auto& [source, name] : sources) {
+    ObjectReport object;
+    object.object = "thing";
+    object.goal_source = source;
+    report.agent.objects.push_back(object);
+  }
+  nlohmann::json j = nlohmann::json::parse(to_json(report));
+  ASSERT_EQ(j["objects"].size(), sources.size());
+  for (std::size_t i = 0; i < sources.size(); ++i) EXPECT_EQ(j["objects"][i]["goal_source"], sources[i].second);
 }
 
 TEST(Face, PerformingWithNothingLearnedNamesWhatIsMissing) {

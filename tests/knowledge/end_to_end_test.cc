@@ -122,7 +122,7 @@ TEST_P(OneShot, EveryActionComesFromALearnedRuleAndEveryGoalFromMemory) {
   EXPECT_EQ(report->rules_learned, 0);
   for (const ObjectReport& o : report->objects) {
     EXPECT_TRUE(o.achieved) << o.object << ": " << o.note;
-    EXPECT_EQ(o.goal_source, "memory") << o.object;
+    EXPECT_EQ(o.goal_source, GoalSource::kMemory) << o.object;
   }
   EXPECT_EQ(count_achieved_assertions(scenario, simulator.state()),
             static_cast<int>(scenario.goal_assertions().size()));

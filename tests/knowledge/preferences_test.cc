@@ -3,11 +3,14 @@
 // induction by the size principle, modifier rules, rest rules and
 // exceptions, what a rule covers, and the decision that combines sources.
 // The same with WordNet itself is in tests/agent/concept_source_test.cc.
+#include <cmath>
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include "knowledge/decision.h"
 #include "knowledge/induction.h"
+#include "knowledge/likeness.h"
 #include "knowledge/preferences.h"
 
 namespace apprentice {
@@ -202,6 +205,90 @@ TEST(Decision, AgreeingSourcesAreSurerThanEitherAndDisagreeingOnesAsk) {
   // Discounting a source weakens what it adds.
   policy.weights[ProposalSource::kLlmPlacement] = 0.1;
   EXPECT_LT(decide(agree, 3, policy).confidence, d.confidence);
+}
+
+TEST(Decision, ASourceSureOfAnotherPlaceMakesTheAgentAskUnlessTheRestIsVerySure) {
+  DecisionPolicy policy;
+  policy.act_at = 0.9;
+  policy.act_disputed_at = 0.95;
+  policy.dispute_at = 0.5;
+  // Likeness and the rules are sure of the table; the LLM is fairly sure of
+  // the box.
+  std::vector<DestinationProposal> proposals = {DestinationProposal{on("table"), 0.8, ProposalSource::kSimilarity, {}, {}, ""},
+                                                DestinationProposal{on("table"), 0.8, ProposalSource::kInducedRule, {}, {}, ""},
+                                                DestinationProposal{in("box"), 0.6, ProposalSource::kLlmPlacement, {}, {}, ""}};
+  Decision d = decide(proposals, 3, policy);
+  ASSERT_TRUE(d.destination.has_value());
+  EXPECT_EQ(*d.destination, on("table"));
+  EXPECT_TRUE(d.disputed);
+  EXPECT_GT(d.confidence, 0.9);
+  EXPECT_LT(d.confidence, 0.95);
+  EXPECT_EQ(d.kind, Decision::Kind::kConfirm);
+  // The same belief undisputed acts: a source that names the box at less
+  // than dispute_at is no dispute.
+  proposals.back().confidence = 0.4;
+  Decision calm = decide(proposals, 3, policy);
+  EXPECT_FALSE(calm.disputed);
+  EXPECT_EQ(calm.kind, Decision::Kind::kAct);
+  // Nor is a source the policy says does not dispute.
+  proposals.back().confidence = 0.6;
+  policy.not_disputing = {ProposalSource::kLlmPlacement};
+  EXPECT_FALSE(decide(proposals, 3, policy).disputed);
+  // A source's own second choice is no dispute either.
+  policy.not_disputing.clear();
+  proposals.back() = DestinationProposal{in("box"), 0.55, ProposalSource::kSimilarity, {}, {}, ""};
+  EXPECT_FALSE(disputed(proposals, on("table"), 0.5));
+  EXPECT_TRUE(disputed(proposals, in("box"), 0.5));
+}
+
+// Word vectors of six dimensions, made so that "clean" and "dirty" are half
+// alike and "shorts" are more like "socks" (0.99) than a "t-shirt" (0.81).
+std::vector<float> unit(std::vector<float> v) {
+  double n = 0;
+  for (float x : v) n += static_cast<double>(x) * x;
+  for (float& x : v) x = static_cast<float>(x / std::sqrt(n));
+  return v;
+}
+KindProfile worded(const std::string& kind, const std::vector<std::vector<float>>& words) {
+  KindProfile p;
+  p.kind = kind;
+  p.word_vectors = words;
+  std::vector<float> sum(words.front().size(), 0.0f);
+  for (std::size_t i = 0; i < words.size(); ++i)
+    for (std::size_t k = 0; k < sum.size(); ++k) sum[k] += words[i][k] * (i + 1 == words.size() ? 2.0f : 1.0f);
+  p.vector = unit(sum);
+  p.head_vector = words.back();
+  if (words.size() > 1) p.modifier_vector = words.front();
+  return p;
+}
+
+TEST(Likeness, WordsThatSplitTheExamplesCountMoreThanTheSharedHead) {
+  const std::vector<float> clean = {1, 0, 0, 0, 0, 0}, dirty = unit({0.5f, 0.866f, 0, 0, 0, 0});
+  const std::vector<float> socks = unit({0, 0, 0.9f, 0.436f, 0, 0}), tshirt = unit({0, 0, 0.8f, 0, 0.6f, 0});
+  const std::vector<float> shorts = unit({0, 0, 0.9223f, 0.3655f, 0.1258f, 0});
+  ASSERT_GT(cosine(shorts, socks), cosine(shorts, tshirt));
+  std::vector<PlacementExample> examples = {{worded("clean t-shirt", {clean, tshirt}), on("bed")},
+                                            {worded("dirty socks", {dirty, socks}), in("hamper")}};
+  const KindProfile thing = worded("clean shorts", {clean, shorts});
+  struct NoConcepts final : ConceptSource {
+    KindProfile profile(std::string_view kind) const override { return KindProfile{std::string(kind), {}, {}, {}, {}, {}, {}, {}}; }
+    std::vector<ConceptClass> classes_named(std::string_view) const override { return {}; }
+    std::vector<float> vector_of(std::string_view) const override { return {}; }
+  } concepts;
+  std::vector<LikenessFeatures> features = likeness_features(examples, thing, {}, concepts);
+  ASSERT_EQ(features.size(), 2u);
+  // The whole names alone would send the shorts to the socks...
+  const double to_bed = features[0].values[0], to_hamper = features[1].values[0];
+  EXPECT_LT(to_bed, to_hamper);
+  // ...but "clean" splits the examples, and "shorts" hardly does.
+  EXPECT_GT(features[0].values[7], features[1].values[7]);
+  std::vector<DestinationProposal> proposals = likeness_proposals(examples, thing, {}, concepts);
+  ASSERT_FALSE(proposals.empty());
+  EXPECT_EQ(proposals.front().destination, on("bed"));
+  // A thing with no word vectors has none of this evidence.
+  KindProfile bare = thing;
+  bare.word_vectors.clear();
+  EXPECT_EQ(likeness_features(examples, bare, {}, concepts)[0].values[7], -1);
 }
 
 TEST(Decision, WithoutTheRefusedDestinationTheNextBestIsAskedAbout) {
