@@ -192,3 +192,38 @@ def test_households_keep_their_own_goals_and_share_the_rules(tmp_path):
         apprentice.Agent(str(TWO_OBJECTS), knowledge=store, household="the smiths")
     assert raised.value.code == "invalid input"
     assert "cannot name a household" in str(raised.value)
+
+
+class RefusingTeacher(KitchenTeacher):
+    """Teaches the structure and the ketchup, but answers the paper plate's
+    goal question only with replies the agent cannot use."""
+
+    def __init__(self):
+        super().__init__()
+        self.refused = []
+
+    def __call__(self, question):
+        if question.kind == "subtask-step" and question.object is not None and question.category == "paper-plate":
+            # Slips of the world's names, which the agent asks back about.
+            reply = ["on the tabel", "in the frigde", "on the tabel please", "in the frigde please"][len(self.refused) % 4]
+            self.refused.append(reply)
+            return reply
+        return super().__call__(question)
+
+
+def test_an_object_given_up_on_after_refused_replies_is_in_help_needed():
+    agent = apprentice.Agent(apprentice.Scenario.load(TWO_OBJECTS), condition="inst+search4")
+    teacher = RefusingTeacher()
+    report = agent.learn(teacher)
+    # The plate was asked about until the attempts ran out, then skipped.
+    assert len(teacher.refused) >= 2
+    plate = next(o for o in report["objects"] if o["object"] == "paper-plate1")
+    assert not plate["achieved"]
+    # The report says what help it needs, and quotes every refused reply.
+    needed = [h for h in report["help_needed"] if "paper plate" in h]
+    assert len(needed) == 1, report["help_needed"]
+    assert needed[0].startswith("where the paper plate on the table goes")
+    for reply in teacher.refused:
+        assert '"%s"' % reply in needed[0]
+    # The ketchup, answered, needs none.
+    assert not any("ketchup" in h for h in report["help_needed"])

@@ -114,13 +114,22 @@ TaskLearningAgent::Session::Flow<TaskLearningAgent::Session::Heard> TaskLearning
     const Question& asked, language::ReplyContext context, const Accept& accept, const Rescue& rescue) {
   APPRENTICE_CHECK(dialogue_ != nullptr);
   int unusable = 0;
+  std::vector<std::string> refused;
   for (;;) {
     // The answer said after an undo in the last reply is the reply to the
     // question the undo brought back.
     Result<std::string> text = std::string();
+    bool queued_step = false;
+    const bool about_steps =
+        context.asked == language::Asked::kTaskStep || context.asked == language::Asked::kSubtaskEnd;
     if (!queued_replies_.empty()) {
       text = std::move(queued_replies_.front());
       queued_replies_.pop_front();
+    } else if (about_steps && !queued_steps_.empty()) {
+      // Said in the reply before: not another instruction.
+      text = std::move(queued_steps_.front());
+      queued_steps_.pop_front();
+      queued_step = true;
     } else {
       text = dialogue_->ask_uncounted(asked, world());
     }
@@ -134,6 +143,7 @@ TaskLearningAgent::Session::Flow<TaskLearningAgent::Session::Heard> TaskLearning
       else if (command->kind == language::Command::Kind::kUndo) ++undos;
     }
     for (const std::string& note : read.notes) say(note, Voice::kResponse);
+    if (undos > 0) queued_steps_.clear();
     if (undos > 0) {
       // Each undo goes one lesson back; the loop then asks that lesson's
       // question again, and the answer said with the undo replies to it.
@@ -158,7 +168,7 @@ TaskLearningAgent::Session::Flow<TaskLearningAgent::Session::Heard> TaskLearning
         if (auto s = obey(*command, asked, context); !s) return tl::unexpected(s.error());
     if (!answer) continue;
     language::Reply reply = std::move(*answer);
-    dialogue_->count_reply(asked, *text);
+    if (!queued_step) dialogue_->count_reply(asked, *text);
     // A reply the question's own reading takes whole ("same as the hammer,
     // and shut the drawer") is not asked "which drawer?" about.
     std::optional<language::Reply> rescued;
@@ -176,7 +186,8 @@ TaskLearningAgent::Session::Flow<TaskLearningAgent::Session::Heard> TaskLearning
     // again (a program is asked at most max_retries times).
     if (auto rule = rule_in_reply(*text, reply, context)) {
       hear_rule(*rule, *text);
-      if (!person() && ++unusable > agent_.options_.max_retries) return Heard{std::nullopt, *text};
+      refused.push_back(apprentice::quoted(*text) + " (a rule, kept, but no answer to the question)");
+      if (!person() && ++unusable > agent_.options_.max_retries) return Heard{std::nullopt, *text, refused};
       continue;
     }
     std::optional<std::string> why;
@@ -188,9 +199,15 @@ TaskLearningAgent::Session::Flow<TaskLearningAgent::Session::Heard> TaskLearning
     } else {
       why = accept(reply);
     }
-    if (!why) return Heard{reply, *text};
+    if (!why) {
+      queued_steps_.insert(queued_steps_.end(), read.then.begin(), read.then.end());
+      return Heard{reply, *text, refused};
+    }
     explain(*why, context, examples);
-    if (!person() && ++unusable > agent_.options_.max_retries) return Heard{std::nullopt, *text};
+    std::string reason = *why;
+    while (!reason.empty() && (reason.back() == '.' || reason.back() == ' ')) reason.pop_back();
+    refused.push_back(apprentice::quoted(*text) + " (" + reason + ")");
+    if (!person() && ++unusable > agent_.options_.max_retries) return Heard{std::nullopt, *text, refused};
   }
 }
 

@@ -190,7 +190,11 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
         [&](const std::string& text) { return goal_for_another(object, text); });
     if (!heard) return tl::unexpected(heard.error());
     if (!heard->reply) {
+      // Given up on after refused replies: said in the report, with them.
       report.note = "no usable goal from the instructor";
+      std::string help = "where " + language::spoken_name_and_location(w, object) + " goes (" + current().verb + ")";
+      if (!heard->refused.empty()) help += "; the replies I could not use: " + join(heard->refused, ", ");
+      report_.help_needed.push_back(std::move(help));
       return std::optional<Goal>();
     }
     begin_lesson(heard->text);

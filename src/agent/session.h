@@ -117,6 +117,9 @@ class TaskLearningAgent::Session {
   struct Heard {
     std::optional<language::Reply> reply;
     std::string text;
+    // The replies refused at this question before it, each as typed with
+    // why it could not be used ("\"on the tabel\" (I do not know the word 'tabel')").
+    std::vector<std::string> refused = {};
   };
   // Why a reply, though understood, does not answer this question; nullopt
   // if it does.
@@ -294,6 +297,9 @@ class TaskLearningAgent::Session {
   // scratch that, the wrench goes in the bottom drawer"), to be taken as
   // the reply to the question the undo brings back.
   std::deque<std::string> queued_replies_;
+  // The further steps of a reply about the task's steps ("clear the
+  // counter, then the table"), each the reply to the next such question.
+  std::deque<std::string> queued_steps_;
   // The teacher's own questions and one-off actions.
   void answer_whats_left();
   void answer_where(const language::Command& command);

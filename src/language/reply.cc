@@ -216,11 +216,10 @@ bool stays_where_it_is(const World& world, const ReplyContext& context, const Re
   return placed;
 }
 
-}  // namespace
-
-Reply read_reply(const Grounder& grounder, const World& world, const ReplyContext& context, std::string_view text) {
-  Reply reply = read_reply_plain(grounder, world, context, text);
-  if (context.asked != Asked::kGoal) return reply;
+// The goal question's readings after its own: the thing left where it is,
+// the rest of the things, and the readings by reference to others.
+Reply read_goal_reply(const Grounder& grounder, const World& world, const ReplyContext& context,
+                      std::string_view text, Reply reply) {
   if (stays_where_it_is(world, context, reply)) return Finished{};
   if (std::holds_alternative<GoalGiven>(reply))
     if (auto rest = read_goal_with_rest(grounder, world, context, text, reply)) return *rest;
@@ -228,6 +227,80 @@ Reply read_reply(const Grounder& grounder, const World& world, const ReplyContex
     if (auto other = read_goal_by_others(grounder, world, context, text, reply)) return *other;
   return reply;
 }
+
+// The goals a reply points to for the rest of its meaning: the goal given
+// last when it says "too", "as well", "also" or "same"; the goal of each
+// kind it names after "with", "like" or "as" ("in with the plates", "the
+// doll goes in the toy chest with teddy", "fridge, same as the milk").
+std::vector<Goal> referred_goals(const Grounder& grounder, const World& world, const ReplyContext& context,
+                                 const std::vector<std::string>& words) {
+  std::vector<Goal> out;
+  if (!context.object) return out;
+  bool additive = false;
+  for (std::size_t i = 0; i < words.size(); ++i) {
+    additive = additive || is_one_of(words[i], {"too", "also", "same", "ditto"}) ||
+               (words[i] == "as" && i + 1 < words.size() && words[i + 1] == "well");
+    if (!context.goal_of_kind || !is_one_of(words[i], {"with", "like", "as"})) continue;
+    std::vector<std::string> noun;
+    for (std::size_t j = i + 1; j < words.size() && words[j] != ","; ++j)
+      if (!is_determiner(words[j])) noun.push_back(words[j]);
+    if (noun.empty()) continue;
+    ReferenceContext reference{world, grounder.lexicon(), std::nullopt};
+    reference.partial_names = true;
+    auto found = candidates_for(NounPhrase{"", noun}, Role::kItem, reference);
+    if (const auto* set = std::get_if<CandidateSet>(&found))
+      for (ObjectId o : set->objects)
+        if (auto goal = context.goal_of_kind(world.universe->info(o).category, *context.object)) out.push_back(*goal);
+  }
+  if (additive && context.last_goal) out.push_back(context.last_goal->goal);
+  return out;
+}
+
+// A goal said by reference to another ("dishwasher as well", "in with the
+// plates") keeps what the other goal says of the door of the place they
+// share, where the reply says nothing of it: "the plates go in the
+// dishwasher, and it ends closed" makes "the bowl too" end closed as well.
+void like_the_goal_referred_to(const Grounder& grounder, const World& world, const ReplyContext& context,
+                               std::string_view text, Reply& reply) {
+  auto* given = std::get_if<GoalGiven>(&reply);
+  // "the milk in the fridge, and the cream too": "too" is about the cream.
+  if (given == nullptr || !given->others.empty()) return;
+  const Vocabulary& v = world.vocabulary;
+  std::vector<Goal> referred = referred_goals(grounder, world, context, reply_words(text));
+  auto complete = [&](Goal& goal) {
+    std::vector<Literal> added;
+    for (const Literal& l : goal.literals) {
+      if (!l.positive || l.fact.arity != 2 || (l.fact.predicate != v.in && l.fact.predicate != v.on)) continue;
+      const ObjectId place = l.fact.args[1];
+      auto door = [&](const Literal& c) { return c.fact.predicate == v.closed && c.fact.args[0] == place; };
+      if (std::any_of(goal.literals.begin(), goal.literals.end(), door)) continue;
+      for (const Goal& other : referred) {
+        bool shares = std::any_of(other.literals.begin(), other.literals.end(), [&](const Literal& o) {
+          return o.positive && o.fact.arity == 2 && o.fact.predicate == l.fact.predicate && o.fact.args[1] == place;
+        });
+        auto said = std::find_if(other.literals.begin(), other.literals.end(), door);
+        if (shares && said != other.literals.end()) {
+          added.push_back(*said);
+          break;
+        }
+      }
+    }
+    goal.literals.insert(goal.literals.end(), added.begin(), added.end());
+  };
+  if (referred.empty()) return;
+  complete(given->goal);
+}
+
+}  // namespace
+
+Reply read_reply(const Grounder& grounder, const World& world, const ReplyContext& context, std::string_view text) {
+  Reply reply = read_reply_plain(grounder, world, context, text);
+  if (context.asked != Asked::kGoal) return reply;
+  reply = read_goal_reply(grounder, world, context, text, std::move(reply));
+  like_the_goal_referred_to(grounder, world, context, text, reply);
+  return reply;
+}
+
 
 Reply read_reply_plain(const Grounder& grounder, const World& world, const ReplyContext& context,
                        std::string_view text) {

@@ -194,6 +194,11 @@ struct ReplyActs {
   std::string after_undo = {};
   // "I took \"nah\" as a filler.", "I took \"hampr\" as \"hamper\"."
   std::vector<std::string> notes = {};
+  // At a question about the task's steps, the parts said after the first
+  // ("clear the counter, then the table", "the desk is done, now sort the
+  // bookshelf"), to be read at the next question about the task's steps,
+  // with the first part's verb where they have none ("clear the table").
+  std::vector<std::string> then = {};
 };
 ReplyActs read_acts(const Grounder& grounder, const World& world, const ReplyContext& context, std::string_view text);
 

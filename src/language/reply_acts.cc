@@ -185,11 +185,23 @@ bool asks_for_help(const Words& said) {
     return std::any_of(words.begin(), words.end(), [&](const std::string& w) { return is_one_of(w, set); });
   };
   bool you_do = has(words, {"you"}) && any_of({"learn", "able"}) && any_of({"can", "could", "able", "kind", "kinds"});
-  bool can_you_do = has(words, {"can", "you", "do"}) || has(words, {"able", "to", "do"});
+  // "what can you do?", "what can you actually do?", "what are you able to do?"
+  auto in_order = [&](std::initializer_list<std::string_view> seq) {
+    auto at = words.begin();
+    for (std::string_view w : seq) {
+      at = std::find(at, words.end(), w);
+      if (at == words.end()) return false;
+      ++at;
+    }
+    return true;
+  };
+  bool can_you_do = in_order({"can", "you", "do"}) || in_order({"could", "you", "do"}) || has(words, {"able", "to", "do"});
+  // "how does this work?", "how do I use you?": how the teaching goes.
+  bool how_it_works = words.front() == "how" && any_of({"work", "works", "use", "start"});
   bool to_say = std::any_of(words.begin(), words.end(), [](const std::string& w) {
     return is_one_of(w, {"say", "type", "write", "answer"});
   });
-  return (you_do || can_you_do || to_say) && words.size() <= 10;
+  return (you_do || can_you_do || to_say || how_it_works) && words.size() <= 10;
 }
 
 // "close the top drawer", "shut both drawers", "open the compost bin
@@ -356,6 +368,89 @@ std::string joined(const std::vector<const Segment*>& parts) {
   return join(texts, ", ");
 }
 
+// The parts of a reply about the task's steps: cut at sentence and clause
+// punctuation and at "then" ("and then", "after that"); a part's leading
+// "now" or "and" is dropped. One part when there are no such cuts.
+std::vector<Words> step_parts(std::string_view text) {
+  std::vector<Words> parts;
+  for (const Segment& s : segments(text)) {
+    Words current;
+    auto flush = [&] {
+      while (!current.empty() && is_one_of(current.back(), {"and", "then"})) current.pop_back();
+      if (current.size() > 1 && current[0] == "after" && current[1] == "that") current.erase(current.begin(), current.begin() + 2);
+      while (!current.empty() && is_one_of(current.front(), {"and", "then", "now"})) current.erase(current.begin());
+      if (!current.empty()) parts.push_back(current);
+      current.clear();
+    };
+    for (std::size_t i = 0; i < s.words.size(); ++i) {
+      const std::string& w = s.words[i];
+      const bool after_that = w == "after" && i + 1 < s.words.size() && s.words[i + 1] == "that";
+      if (w == "then" || after_that) flush();
+      current.push_back(w);
+    }
+    flush();
+  }
+  return parts;
+}
+
+// The verb a part begins with, as a subtask's reading took it.
+bool starts_with_verb(const Words& part, const std::string& verb) {
+  Words v = split_words(verb);
+  return part.size() >= v.size() && std::equal(v.begin(), v.end(), part.begin());
+}
+
+// "clear the counter, then the table", "that's it for the desk, now sort
+// the bookshelf", "counter next, then we're done": more than one step in
+// one reply, each read whole at the question. nullopt when the reply is
+// one step, or a part does not read.
+std::optional<std::pair<Reply, std::vector<std::string>>> several_steps(const Grounder& grounder, const World& world,
+                                                                      const ReplyContext& context,
+                                                                      std::string_view text) {
+  if (context.asked != Asked::kTaskStep && context.asked != Asked::kSubtaskEnd) return std::nullopt;
+  std::vector<Words> parts = step_parts(text);
+  if (parts.size() < 2 || parts.size() > 4) return std::nullopt;
+  std::optional<Reply> first;
+  std::vector<std::string> rest;
+  std::string verb;  // the last verb said, for a part without one
+  bool names_a_part = false;  // "that's it, we're done" is one ending
+  ReplyContext at = context;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    Words part = without_interjections(parts[i]);
+    if (part.empty()) return std::nullopt;
+    Reply reply = read_reply(grounder, world, at, quoted_words(part));
+    if (!usable(reply) && !verb.empty() && !starts_with_verb(part, verb)) {
+      Words with = split_words(verb);
+      with.insert(with.end(), part.begin(), part.end());
+      Reply again = read_reply(grounder, world, at, quoted_words(with));
+      if (usable(again)) {
+        reply = again;
+        part = with;
+      }
+    }
+    // "that's it for the desk", "done with the table": an ending about
+    // the part under way, said with its place.
+    if (!usable(reply)) {
+      auto about = std::find_if(part.begin() + 1, part.end(), [](const std::string& w) { return is_one_of(w, {"for", "with"}); });
+      if (about != part.end() && about != part.begin()) {
+        Reply ending = read_reply(grounder, world, at, quoted_words(Words(part.begin(), about)));
+        if (std::holds_alternative<Finished>(ending)) reply = ending;
+      }
+    }
+    const bool step = std::holds_alternative<SubtaskNamed>(reply) || std::holds_alternative<LoopNamed>(reply) ||
+                      std::holds_alternative<Finished>(reply) || std::holds_alternative<Proceed>(reply);
+    if (!step) return std::nullopt;
+    if (const auto* named = std::get_if<SubtaskNamed>(&reply)) verb = named->verb;
+    names_a_part = names_a_part || std::holds_alternative<SubtaskNamed>(reply) || std::holds_alternative<LoopNamed>(reply);
+    if (i == 0) first = reply;
+    else rest.push_back(quoted_words(part));
+    // What follows the first part is read at the question about the task's
+    // next step.
+    at.asked = Asked::kTaskStep;
+  }
+  if (!names_a_part) return std::nullopt;
+  return std::make_pair(*first, rest);
+}
+
 }  // namespace
 
 ReplyActs read_acts(const Grounder& grounder, const World& world, const ReplyContext& context, std::string_view text) {
@@ -366,6 +461,11 @@ ReplyActs read_acts(const Grounder& grounder, const World& world, const ReplyCon
   if (std::holds_alternative<Command>(whole) || context.asked == Asked::kWhich ||
       (context.asked == Asked::kAction && usable(whole))) {
     out.acts.push_back(std::move(whole));
+    return out;
+  }
+  if (auto steps = several_steps(grounder, world, context, text)) {
+    out.acts.push_back(std::move(steps->first));
+    out.then = std::move(steps->second);
     return out;
   }
   std::vector<Segment> parts = segments(text);
@@ -379,6 +479,7 @@ ReplyActs read_acts(const Grounder& grounder, const World& world, const ReplyCon
   bool weak = false;  // "nah", "no": a filler unless the answer corrects
   std::string marker_said;
   bool correcting = false;
+  bool undo_words = false;  // an undo was said with the word "undo"
   for (std::size_t i = 0; i < parts.size(); ++i) {
     const Segment& s = parts[i];
     if (without_interjections(s.words).empty() && answer.empty() && before.empty()) continue;
@@ -392,10 +493,14 @@ ReplyActs read_acts(const Grounder& grounder, const World& world, const ReplyCon
       }
     }
     if (int n = undos(s.words); n > 0 && answer.empty()) {
-      // "go back one, that was wrong": one undo; "undo undo": two.
-      bool said_undo = std::find(s.words.begin(), s.words.end(), "undo") != s.words.end();
+      // "go back one, that was wrong": one undo; "undo undo", "undo, undo":
+      // two, one per "undo" said; "wait that's wrong, undo that": one, the
+      // same undo said twice.
+      const bool said_undo = std::find(s.words.begin(), s.words.end(), "undo") != s.words.end();
+      if (said_undo && !undo_words) before.clear();
       if (before.empty() || said_undo)
         for (int k = 0; k < n; ++k) before.push_back(Command{Command::Kind::kUndo, "", {}, {}});
+      undo_words = undo_words || said_undo;
       correcting = true;
       continue;
     }
@@ -453,6 +558,10 @@ ReplyActs read_acts(const Grounder& grounder, const World& world, const ReplyCon
     correcting = names_last || not_there;
   }
   if (weak && !correcting && !marker_said.empty()) out.notes.push_back("I took " + quote(marker_said) + " as a filler.");
+  // A marker before a question or a one-off action alone ("wait, where's
+  // the ketchup?") takes nothing back.
+  const bool answers = !trim(answer_text).empty();
+  if (correcting && before.empty() && !answers && !after.empty()) correcting = false;
   if (correcting && context.last_goal && context.asked == Asked::kGoal && before.empty())
     before.push_back(Command{Command::Kind::kUndo, "", {}, {}});
   if (correcting && context.last_goal && context.asked == Asked::kGoal) {

@@ -100,6 +100,20 @@ Reply read_yes_no(const ReplyInput& in) {
       rest.erase(rest.begin());
     reply.rest = join(rest, " ");
   }
+  // "sure, same place", "yes, in the cupboard": a rest that says only what
+  // was proposed adds nothing to the yes.
+  if (reply.yes && !reply.rest.empty() && in.context.proposal && in.context.object) {
+    ReplyContext at = in.context;
+    at.asked = Asked::kGoal;
+    Reply said = read_reply(in.grounder, in.world, at, reply.rest);
+    if (const auto* given = std::get_if<GoalGiven>(&said); given && given->others.empty()) {
+      const std::vector<Literal>& proposed = in.context.proposal->literals;
+      bool within = std::all_of(given->goal.literals.begin(), given->goal.literals.end(), [&](const Literal& l) {
+        return std::find(proposed.begin(), proposed.end(), l) != proposed.end();
+      });
+      if (within) reply.rest.clear();
+    }
+  }
   return reply;
 }
 

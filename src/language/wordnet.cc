@@ -9,6 +9,7 @@
 #include <spdlog/spdlog.h>
 #include <wn.h>
 
+#include "util/bounded_table.h"
 #include "util/file.h"
 #include "util/text.h"
 
@@ -42,11 +43,15 @@ struct Library {
   bool sizes_built = false;
   SynsetSizes sizes;
   // The answers so far, from the directory the library reads (wordnet.h).
-  std::map<std::string, std::vector<SynsetOffset>, std::less<>> senses;
-  std::map<SynsetOffset, std::optional<Synset>> synsets;
-  std::map<std::pair<int, std::string>, std::vector<std::string>, std::less<>> base_forms;  // by part of speech
-  std::map<std::string, bool, std::less<>> verbs;
-  std::map<std::string, bool, std::less<>> known;
+  // Each table is bounded (util/bounded_table.h): a page or a script can
+  // send any number of distinct unknown words. WordNet has ~150k lemmas, so
+  // real use seldom fills one.
+  static constexpr std::size_t kAnswersPerTable = 100000;
+  util::BoundedTable<std::string, std::vector<SynsetOffset>> senses{kAnswersPerTable};
+  util::BoundedTable<SynsetOffset, std::optional<Synset>> synsets{kAnswersPerTable};
+  util::BoundedTable<std::pair<int, std::string>, std::vector<std::string>> base_forms{kAnswersPerTable};  // by part of speech
+  util::BoundedTable<std::string, bool> verbs{kAnswersPerTable};
+  util::BoundedTable<std::string, bool> known{kAnswersPerTable};
 
   void forget_answers() {
     sizes_built = false;
@@ -153,7 +158,7 @@ std::vector<std::string> base_forms(std::string_view word, int part_of_speech) {
   std::lock_guard lock(lib.mutex);
   if (!lib.open) return forms;
   auto key = std::make_pair(part_of_speech, std::string(word));
-  if (auto it = lib.base_forms.find(key); it != lib.base_forms.end()) return it->second;
+  if (const auto* kept = lib.base_forms.find(key)) return *kept;
   CString query(word);
   std::string self = from_wordnet(query.text);
   // morphstr iterates through static state: the first call takes the word,
@@ -163,7 +168,7 @@ std::vector<std::string> base_forms(std::string_view word, int part_of_speech) {
     std::string base = from_wordnet(form);
     if (base != self && std::find(forms.begin(), forms.end(), base) == forms.end()) forms.push_back(base);
   }
-  lib.base_forms.emplace(std::move(key), forms);
+  lib.base_forms.remember(std::move(key), forms);
   return forms;
 }
 
@@ -181,14 +186,14 @@ std::vector<SynsetOffset> WordNet::noun_senses(std::string_view lemma) const {
   std::lock_guard lock(lib.mutex);
   if (!lib.open) return {};
   std::string key = from_wordnet(CString(lemma).text);
-  if (auto it = lib.senses.find(key); it != lib.senses.end()) return it->second;
+  if (const auto* kept = lib.senses.find(key)) return *kept;
   std::vector<SynsetOffset> offsets;
   CString query(key);
   if (IndexPtr index = index_lookup(query.text, NOUN)) {
     for (int i = 0; i < index->off_cnt; ++i) offsets.push_back(static_cast<SynsetOffset>(index->offset[i]));
     free_index(index);
   }
-  lib.senses.emplace(key, offsets);
+  lib.senses.remember(key, offsets);
   return offsets;
 }
 
@@ -197,7 +202,7 @@ std::optional<Synset> WordNet::synset(SynsetOffset offset) const {
   std::lock_guard lock(lib.mutex);
   std::optional<Synset> result;
   if (!lib.open) return result;
-  if (auto it = lib.synsets.find(offset); it != lib.synsets.end()) return it->second;
+  if (const auto* kept = lib.synsets.find(offset)) return *kept;
   char empty[1] = {'\0'};
   if (offset >= 0) {
     if (SynsetPtr raw = read_synset(NOUN, offset, empty)) {
@@ -215,7 +220,7 @@ std::optional<Synset> WordNet::synset(SynsetOffset offset) const {
       result = std::move(s);
     }
   }
-  lib.synsets.emplace(offset, result);
+  lib.synsets.remember(offset, result);
   return result;
 }
 
@@ -329,11 +334,11 @@ bool WordNet::has_verb(std::string_view lemma) const {
   Library& lib = library();
   std::lock_guard lock(lib.mutex);
   if (!lib.open) return false;
-  if (auto it = lib.verbs.find(lemma); it != lib.verbs.end()) return it->second;
+  if (const bool* kept = lib.verbs.find(lemma)) return *kept;
   CString query(lemma);
   IndexPtr index = index_lookup(query.text, VERB);
   if (index != nullptr) free_index(index);
-  lib.verbs.emplace(std::string(lemma), index != nullptr);
+  lib.verbs.remember(std::string(lemma), index != nullptr);
   return index != nullptr;
 }
 
@@ -365,9 +370,9 @@ bool WordNet::knows(std::string_view word) const {
   Library& lib = library();
   std::lock_guard lock(lib.mutex);
   if (!lib.open) return false;
-  if (auto it = lib.known.find(word); it != lib.known.end()) return it->second;
+  if (const bool* kept = lib.known.find(word)) return *kept;
   const bool found = look_up_anywhere(word);
-  lib.known.emplace(std::string(word), found);
+  lib.known.remember(std::string(word), found);
   return found;
 }
 

@@ -367,6 +367,24 @@ TEST_F(Teach, APlayroomTaughtAsAPersonTalks) {
   EXPECT_THAT(teach.out(), HasSubstr("The task is learned: 14 of 14 goal assertions hold, after 13 instructions.\n"));
 }
 
+// Two parts of the task said in one reply: the second is taken when the
+// first is done, without asking again, and counts as no further
+// instruction (the same playroom, 12 replies instead of 13).
+TEST_F(Teach, TwoPartsSaidInOneReplyAreDoneInTurn) {
+  Process teach({APPRENTICE_BINARY, "teach", "--scenario", testing::source_path("data/scenarios/playroom.yaml").string()});
+  ASSERT_TRUE(teach.write(lines({"the kids left a mess in here. can you tidy up the playroom?",
+                                 "first pick up everything off the floor, then empty the crates",
+                                 "blocks go in the red bin", "the cars go into the blue one",
+                                 "the teddy goes in the toy chest, and close the lid", "books belong on the bookshelf",
+                                 "the sock goes in the hamper", "balls go in the green bin",
+                                 "the doll goes in the toy chest too, and shut it", "same as the book on the floor",
+                                 "crayons go with the blocks", "that's it"})));
+  EXPECT_EQ(teach.wait(), 0) << teach.out() << teach.err();
+  EXPECT_THAT(teach.out(), HasSubstr("Agent: There is nothing left on the floor.\n"
+                                     "Agent: So I empty what is in the crates, one thing at a time.\n"));
+  EXPECT_THAT(teach.out(), HasSubstr("The task is learned: 14 of 14 goal assertions hold, after 12 instructions.\n"));
+}
+
 // "we're done" before any part of the task is taught is not the end of
 // the lesson (the summary said "The task is learned" with nothing learned).
 TEST_F(Teach, DoneBeforeAnyPartOfTheTaskIsAskedAgain) {

@@ -93,12 +93,21 @@ std::vector<std::string> label_act(const World& world, const nlohmann::json& act
     std::vector<std::string> out;
     std::string place = canonical(world, str(act, "place"), error);
     std::string closed = closed_word(act.value("closed", nlohmann::json()));
+    // What the world makes of the label's preposition: a thing goes in a
+    // receptacle and on a surface, whichever a writer chose ("on the dish
+    // rack" for a rack the world models as a receptacle).
+    std::string relation = str(act, "relation");
+    if (std::optional<ObjectId> at = first_named(world, str(act, "place"))) {
+      const ObjectKind place_kind = world.universe->info(*at).kind;
+      if (place_kind == ObjectKind::kReceptacle) relation = "in";
+      if (place_kind == ObjectKind::kSurface) relation = "on";
+    }
     if (!act.contains("things") || !act["things"].is_array() || act["things"].empty())
       error = "a goal act without things";
     else
       for (const auto& thing : act["things"])
         out.push_back("goal " + (thing.is_string() ? canonical(world, thing.get<std::string>(), error) : "?") + " " +
-                      str(act, "relation") + " " + place + " closed=" + closed);
+                      relation + " " + place + " closed=" + closed);
     return out;
   }
   if (kind == "task") return {"task " + spaced(str(act, "name"))};
@@ -447,13 +456,38 @@ Scored score(const Grounder& grounder, const World& world, const Line& line) {
     out.reply_line += (out.reply_line.empty() ? "" : " ; ") + format_reply(world, reply);
     if (reading) reading = reading_acts(grounder, world, line, context, reply, *reading);
   }
+  // The further steps of the reply, read at the next question about the
+  // task's steps, as the agent reads them.
+  ReplyContext next = context;
+  next.asked = Asked::kTaskStep;
+  Line at_next = line;
+  at_next.asked = "task-step";
+  for (const std::string& then : read.then)
+    for (const Reply& reply : read_acts(grounder, world, next, then).acts) {
+      out.reply_line += " ; then " + format_reply(world, reply);
+      if (reading) reading = reading_acts(grounder, world, at_next, next, reply, *reading);
+    }
   const bool ask_back = out.label.size() == 1 && out.label.front() == std::vector<std::string>{"ask-back"};
   if (!reading) {
     out.outcome = ask_back ? Outcome::kMeant : Outcome::kAskedBack;
     return out;
   }
   out.reading = *reading;
-  if (out.reading == out.label) out.outcome = Outcome::kMeant;
+  // "oh and close the fridge", labelled a one-off closing and then the
+  // question asked back: a reading of the closing alone, which answers
+  // nothing about the thing asked about, leaves the question to be asked
+  // again, as labelled.
+  bool asks_again = false;
+  if (out.label.size() > 1 && out.label.back() == std::vector<std::string>{"ask-back"}) {
+    Acts before(out.label.begin(), out.label.end() - 1);
+    const std::string about = line.about ? "goal " + canonical(world, *line.about, out.error) + " " : "?";
+    bool answers = false;
+    for (const auto& act : out.reading)
+      for (const std::string& part : act)
+        answers = answers || part.starts_with(about) || part == "leave" || part == "yes" || part == "no";
+    asks_again = out.reading == before && !answers;
+  }
+  if (out.reading == out.label || asks_again) out.outcome = Outcome::kMeant;
   else if (!ask_back && fewer_goals(out.label, out.reading)) out.outcome = Outcome::kAskedBack;
   else out.outcome = Outcome::kWrong;
   return out;

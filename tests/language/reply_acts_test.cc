@@ -150,5 +150,65 @@ TEST_F(ReplyActsTest, TakingEverythingOffAPlaceClearsOrEmptiesIt) {
   EXPECT_EQ(acts(step, "take everything out of the hamper"), "unusable");
 }
 
+TEST_F(ReplyActsTest, TheSameUndoSaidTwiceInOneReplyIsOneUndo) {
+  ReplyContext c = goal_question("comb1", "hairbrush1", "drawer1");
+  EXPECT_EQ(acts(c, "wait that's wrong, undo"), "command undo");
+  EXPECT_EQ(acts(c, "wait go back, undo that"), "command undo");
+  EXPECT_EQ(acts(c, "undo, undo"), "command undo | command undo");
+}
+
+TEST_F(ReplyActsTest, AMarkerBeforeAQuestionTakesNothingBack) {
+  ReplyContext c = goal_question("comb1", "hairbrush1", "drawer1");
+  EXPECT_EQ(acts(c, "wait, where's the soap?"), "command where soap");
+  EXPECT_EQ(acts(c, "hold on, what's left?"), "command whats-left");
+}
+
+TEST_F(ReplyActsTest, AskingWhatItCanDoIsHelp) {
+  ReplyContext task;
+  task.asked = Asked::kTask;
+  EXPECT_EQ(acts(task, "what can you actually do?"), "command help");
+  EXPECT_EQ(acts(task, "how does this work?"), "command help");
+  EXPECT_EQ(acts(task, "tidy the bathroom"), "task tidy bathroom");
+}
+
+TEST_F(ReplyActsTest, SeveralStepsInOneReplyAreReadInTurn) {
+  ReplyContext step;
+  step.asked = Asked::kTaskStep;
+  ReplyActs read = read_acts(grounder(), world(), step, "clear the counter, then the floor");
+  ASSERT_EQ(read.acts.size(), 1u);
+  EXPECT_EQ(format_reply(world(), read.acts.front()), "subtask clear on counter1");
+  // The second part takes the first part's verb, for the next question.
+  EXPECT_EQ(read.then, std::vector<std::string>{"clear the floor"});
+  read = read_acts(grounder(), world(), step, "clear the counter and then we're done");
+  EXPECT_EQ(read.then, std::vector<std::string>{"we are done"});
+  // "that's it, we're done" is one ending; one step is one part.
+  EXPECT_TRUE(read_acts(grounder(), world(), step, "that's it, we're done").then.empty());
+  EXPECT_TRUE(read_acts(grounder(), world(), step, "clear the counter").then.empty());
+  ReplyContext end;
+  end.asked = Asked::kSubtaskEnd;
+  read = read_acts(grounder(), world(), end, "that's it for the counter, now clear the floor");
+  ASSERT_EQ(read.acts.size(), 1u);
+  EXPECT_EQ(format_reply(world(), read.acts.front()), "finished");
+  EXPECT_EQ(read.then, std::vector<std::string>{"clear the floor"});
+}
+
+TEST_F(ReplyActsTest, AGoalSaidLikeTheLastKeepsItsDoor) {
+  ReplyContext c = goal_question("socks1", "jeans1", "hamper1");
+  c.last_goal->goal.literals.push_back(Literal{Fact(world().vocabulary.closed, {id("hamper1")}), true});
+  EXPECT_EQ(acts(c, "hamper as well"), "goal (and (in socks1 hamper1) (closed hamper1))");
+  // Another place, or the door said otherwise, is not the last goal's.
+  EXPECT_EQ(acts(c, "cabinet as well"), "goal (in socks1 cabinet1)");
+  EXPECT_EQ(acts(c, "in the hamper"), "goal (in socks1 hamper1)");
+}
+
+TEST_F(ReplyActsTest, AYesThatRepeatsTheProposalIsAYes) {
+  ReplyContext c = goal_question("comb1", "hairbrush1", "drawer1");
+  c.asked = Asked::kYesNo;
+  c.proposal = Goal({Literal{Fact(world().vocabulary.in, {id("comb1"), id("drawer1")}), true}});
+  EXPECT_EQ(acts(c, "sure, same place"), "yes");
+  EXPECT_EQ(acts(c, "yes, in the top drawer"), "yes");
+  EXPECT_EQ(acts(c, "yes, but in the cabinet"), "yes; then: in the cabinet");
+}
+
 }  // namespace
 }  // namespace apprentice::language
