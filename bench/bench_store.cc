@@ -10,6 +10,13 @@
 //                                             in one transaction behind the
 //                                             engine's back), then load()
 //                                             timed three times: the median
+//   bench_store live LOCATION SAVES POLL_MS   a watcher process asks its
+//                                             store for news (what another
+//                                             process saved) every POLL_MS;
+//                                             this one saves SAVES goals, one
+//                                             every 200 ms: for each, the
+//                                             time from the start of its save
+//                                             until the watcher has it
 //
 // LOCATION is an SQLite path or a postgresql:// URL, as --knowledge takes.
 // The store should be new (an empty database for PostgreSQL).
@@ -22,6 +29,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <SQLiteCpp/SQLiteCpp.h>
@@ -154,6 +162,73 @@ int load(const std::string& location, int goals, const apprentice::World& world)
   return 0;
 }
 
+// Nanoseconds of the steady clock (CLOCK_MONOTONIC: the same in every
+// process of the machine).
+long long now_ns() {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now().time_since_epoch()).count();
+}
+
+int live(const std::string& location, int saves, int poll_ms, const apprentice::World& world) {
+  if (auto store = KnowledgeStore::open(location); !store) {
+    std::fprintf(stderr, "bench_store: %s\n", store.error().describe().c_str());
+    return 1;
+  }
+  int ready[2], seen[2];
+  if (::pipe(ready) != 0 || ::pipe(seen) != 0) return 1;
+  const pid_t watcher = ::fork();
+  if (watcher == 0) {
+    // Each goal saved carries the time its save started as its source.
+    auto store = KnowledgeStore::open(location);
+    if (!store || !store->load(*world.domain)) ::_exit(2);
+    if (::write(ready[1], "r", 1) != 1) ::_exit(2);
+    const long long deadline = now_ns() + 120'000'000'000LL;
+    for (int got = 0; got < saves && now_ns() < deadline;) {
+      auto news = store->news(*world.domain);
+      if (!news) ::_exit(3);
+      const long long now = now_ns();
+      for (const GoalKnowledge& g : news->goals) {
+        const std::string line = std::to_string(now - std::stoll(g.provenance.source)) + "\n";
+        if (::write(seen[1], line.data(), line.size()) != static_cast<ssize_t>(line.size())) ::_exit(4);
+        ++got;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(poll_ms));
+    }
+    ::_exit(0);
+  }
+  ::close(seen[1]);
+  char byte = 0;
+  if (::read(ready[0], &byte, 1) != 1) return 1;
+  auto store = KnowledgeStore::open(location);
+  if (!store) return 1;
+  for (int n = 0; n < saves; ++n) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    GoalKnowledge goal = goal_of_kind(world, "live-" + std::to_string(n));
+    goal.provenance.source = std::to_string(now_ns());
+    if (auto s = store->save_goal(goal); !s) {
+      std::fprintf(stderr, "bench_store: %s\n", s.error().describe().c_str());
+      return 1;
+    }
+  }
+  int status = 0;
+  ::waitpid(watcher, &status, 0);
+  std::string text;
+  char buffer[4096];
+  for (ssize_t n; (n = ::read(seen[0], buffer, sizeof buffer)) > 0;) text.append(buffer, static_cast<std::size_t>(n));
+  std::vector<double> ms;
+  for (std::size_t at = 0, end; (end = text.find('\n', at)) != std::string::npos; at = end + 1)
+    ms.push_back(std::stoll(text.substr(at, end - at)) / 1e6);
+  std::sort(ms.begin(), ms.end());
+  if (ms.empty()) {
+    std::fprintf(stderr, "bench_store: the watcher saw none of the %d goals\n", saves);
+    return 1;
+  }
+  std::printf("%s: %zu of %d goals seen by a running watcher (asking every %d ms): from the start of the save, "
+              "median %.1f ms, 90th percentile %.1f ms, most %.1f ms\n",
+              apprentice::scrub_store_location(location).c_str(), ms.size(), saves, poll_ms, ms[ms.size() / 2],
+              ms[ms.size() * 9 / 10], ms.back());
+  return WIFEXITED(status) && WEXITSTATUS(status) == 0 && static_cast<int>(ms.size()) == saves ? 0 : 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -167,10 +242,14 @@ int main(int argc, char** argv) {
     if (args.size() == 4 && args[0] == "save")
       return save(args[1], std::stoi(args[2]), std::stoi(args[3]), scenario->world);
     if (args.size() == 3 && args[0] == "load") return load(args[1], std::stoi(args[2]), scenario->world);
+    if (args.size() == 4 && args[0] == "live")
+      return live(args[1], std::stoi(args[2]), std::stoi(args[3]), scenario->world);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "bench_store: %s\n", e.what());
     return 1;
   }
-  std::fprintf(stderr, "usage: bench_store save LOCATION WRITERS GOALS | bench_store load LOCATION GOALS\n");
+  std::fprintf(stderr,
+               "usage: bench_store save LOCATION WRITERS GOALS | bench_store load LOCATION GOALS | bench_store live "
+               "LOCATION SAVES POLL_MS\n");
   return 2;
 }

@@ -8,8 +8,11 @@
    include through it counts as theirs.
 2. No upward module arrow: a module includes only the modules below it, as
    LAYERS says; each module's CMake DEPS name no module it may not use.
+3. The agent never sees the intent: no file of the modules in BLIND reaches
+   world/scenario.h (the scenario's task and intent) through its includes,
+   followed through every header; they take the World of world/world.h.
 
-Exit 0 when both hold; 1 with one line per breach otherwise.
+Exit 0 when all hold; 1 with one line per breach otherwise.
     scripts/check-layers.py [SOURCE_DIR]
     scripts/check-layers.py --self-test   (it finds a planted cycle and arrow)
 """
@@ -32,6 +35,9 @@ LAYERS = {
     "experiment": {"util", "world", "language", "search", "knowledge", "llm", "vectors", "instructor", "agent", "face"},
     "benchmark": {"util", "world", "language", "search", "knowledge", "llm", "vectors", "instructor", "agent", "face"},
 }
+# Modules that must not see world/scenario.h, and what they use instead.
+BLIND = {"agent", "knowledge", "search"}
+INTENT = ("world", "scenario")
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([a-z_]+)/([A-Za-z_0-9]+)\.h"', re.M)
 DEPS = re.compile(r"apprentice_([a-z_]+)")
 
@@ -61,15 +67,21 @@ def self_test():
         put("src/world/w.cc", '#include "world/w.h"\n')
         put("src/agent/agent.h", '#pragma once\n#include "world/w.h"\n')
         put("src/agent/agent.cc", '#include "agent/agent.h"\n')
+        put("src/agent/peek.h", '#pragma once\n#include "world/w.h"\n#include "world/scenario.h"\n')
+        put("src/agent/peek.cc", '#include "agent/peek.h"\n')
         run = subprocess.run([sys.executable, __file__, root], capture_output=True, text=True)
         lines = run.stdout.splitlines()
         expected = ["check-layers: src/world/w.h: includes agent/agent.h, but world may not use agent",
                     "check-layers: include cycle: agent/agent <-> world/w",
-                    "check-layers: include cycle: language/a <-> language/b"]
+                    "check-layers: include cycle: language/a <-> language/b",
+                    "check-layers: src/agent/peek.cc: reaches world/scenario.h (through agent/peek.h), "
+                    "but agent must not see the intent; include world/world.h for the World",
+                    "check-layers: src/agent/peek.h: reaches world/scenario.h, "
+                    "but agent must not see the intent; include world/world.h for the World"]
         if run.returncode != 1 or sorted(lines) != sorted(expected):
             print("check-layers self-test failed; got:\n" + run.stdout)
             return 1
-    print("check-layers self-test: the planted cycles and arrow were found")
+    print("check-layers self-test: the planted cycles, arrow and look at the intent were found")
     return 0
 
 
@@ -106,6 +118,35 @@ def main():
         for other in DEPS.findall(deps):
             if other in LAYERS and other != module and other not in LAYERS[module]:
                 breaches.append(f"src/{module}/CMakeLists.txt: links apprentice_{other}, but {module} may not use {other}")
+
+    # Rule 3: the intent, through any chain of headers.
+    def first_step_to_intent(path):
+        """The include of `path` through which world/scenario.h is reached
+        ("" when directly), or None."""
+        for start in files[path]:
+            if start == INTENT:
+                return ""
+            seen, todo = set(), [start]
+            while todo:
+                m, n = todo.pop()
+                key = f"{m}/{n}.h"
+                if key in seen or key not in files:
+                    continue
+                seen.add(key)
+                for inc in files[key]:
+                    if inc == INTENT:
+                        return f"{start[0]}/{start[1]}.h"
+                    todo.append(inc)
+        return None
+    for path in files:
+        module = path.split("/")[0]
+        if module not in BLIND:
+            continue
+        step = first_step_to_intent(path)
+        if step is not None:
+            through = f" (through {step})" if step else ""
+            breaches.append(f"src/{path}: reaches world/scenario.h{through}, but {module} must not see the intent; "
+                            "include world/world.h for the World")
 
     # Rule 1: cycles among units.
     units = {p.rsplit(".", 1)[0] for p in files if p.endswith(".cc")}
@@ -161,7 +202,8 @@ def main():
     for line in breaches:
         print("check-layers: " + line)
     if not breaches:
-        print(f"check-layers: {len(files)} files in {len(LAYERS)} modules; no include cycle, no upward arrow")
+        print(f"check-layers: {len(files)} files in {len(LAYERS)} modules; no include cycle, no upward arrow, "
+              f"and {', '.join(sorted(BLIND))} never reach the intent")
     return 1 if breaches else 0
 
 

@@ -6,7 +6,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
-#include "world/scenario.h"
+#include "world/world.h"
 
 namespace apprentice::serve {
 

@@ -341,6 +341,7 @@ std::optional<ObjectId> TaskLearningAgent::Session::next_object(const Current& c
 }
 
 TaskLearningAgent::Session::Step TaskLearningAgent::Session::start_object(ObjectId object) {
+  take_news();
   ObjectReport report;
   report.object = world().universe->name(object);
   report.subtask = current().verb;

@@ -88,6 +88,13 @@ class TaskLearningAgent {
 
   const Knowledge& knowledge() const { return knowledge_; }
 
+  // Watches `store` (borrowed; it must outlive the agent; null: none) for
+  // what other robots learn while this one runs: before each object it
+  // takes the store's news (KnowledgeStore::news), goals of its household
+  // and the fleet's rules, and says once per kind "Another robot just
+  // learned where the ketchup goes." (AgentReport::news).
+  void watch(KnowledgeStore* store) { watched_ = store; }
+
  private:
   class Session;
   friend class Session;
@@ -97,6 +104,7 @@ class TaskLearningAgent {
   Understanding understanding_;
   KnowledgeStore* store_;
   LlmAdvisor* llm_;
+  KnowledgeStore* watched_ = nullptr;
 };
 
 }  // namespace apprentice

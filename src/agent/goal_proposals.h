@@ -29,7 +29,7 @@
 #include "knowledge/store_engine.h"
 #include "knowledge/likeness.h"
 #include "world/goal.h"
-#include "world/scenario.h"
+#include "world/world.h"
 
 namespace apprentice {
 

@@ -40,7 +40,7 @@
 #include "llm/retrieval.h"
 #include "util/result.h"
 #include "world/goal.h"
-#include "world/scenario.h"
+#include "world/world.h"
 
 namespace apprentice {
 

@@ -17,7 +17,7 @@
 #include "knowledge/goal_memory.h"
 #include "language/lexicon.h"
 #include "language/rule_reader.h"
-#include "world/scenario.h"
+#include "world/world.h"
 
 namespace apprentice {
 

@@ -20,7 +20,7 @@
 
 #include "knowledge/preferences.h"
 #include "language/rule_reader.h"
-#include "world/scenario.h"
+#include "world/world.h"
 
 namespace apprentice {
 

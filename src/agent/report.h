@@ -59,6 +59,9 @@ struct AgentReport {
   // adopted by analogy.
   std::vector<std::string> renamed;
   std::vector<std::string> analogies;
+  // What other robots learned while this one ran, as it said it ("Another
+  // robot just learned where the ketchup goes.").
+  std::vector<std::string> news;
   bool task_finished = false;  // the instructor said the task was done
 };
 

@@ -139,6 +139,9 @@ class TaskLearningAgent::Session {
   Step start_subtask(const language::SubtaskNamed& named);
   void finish_subtask();
   Step start_object(ObjectId object);
+  // Takes what other robots learned meanwhile into the agent's knowledge,
+  // saying so once per kind (agent_news.cc).
+  void take_news();
   Step achieve_current();
   void finish_object();
   std::optional<ObjectId> next_object(const Current& current) const;
@@ -279,6 +282,7 @@ class TaskLearningAgent::Session {
   std::vector<Lesson> lessons_;  // the teacher's lessons this session, oldest first
   AgentReport report_;           // the counters of search and actions; objects come from progress_
   std::optional<ObjectId> recent_place_;  // the place named last: what "the door" means
+  std::vector<std::string> announced_;    // the kinds whose news was said, in this session
   std::string advice_;  // the words of the last action advised by the LLM or the instructor
   // What the agent knew, in this world's words, and the analogies it offers.
   // Constructed last: it renames the agent's knowledge when the session starts.

@@ -31,7 +31,7 @@
 #include "knowledge/store.h"
 #include "language/lexicon.h"
 #include "world/goal.h"
-#include "world/scenario.h"
+#include "world/world.h"
 
 namespace apprentice {
 

@@ -16,7 +16,7 @@
 #include "vectors/word_vectors.h"
 #include "world/action.h"
 #include "world/goal.h"
-#include "world/scenario.h"
+#include "world/world.h"
 
 namespace apprentice {
 

@@ -184,6 +184,8 @@ Result<std::unique_ptr<AgentSession>> make_agent_session(const AgentSpec& spec, 
   KnowledgeStore* store = parts->store && spec.store_access != StoreAccess::kReadOnly ? &*parts->store : nullptr;
   parts->agent = std::make_unique<TaskLearningAgent>(options, std::move(knowledge), Understanding(), store,
                                                      parts->advisor);
+  // What other robots learn meanwhile (the store's news), read or write.
+  if (parts->store) parts->agent->watch(&*parts->store);
   return std::unique_ptr<AgentSession>(new AgentSession(std::move(parts)));
 }
 
@@ -265,7 +267,8 @@ std::string to_json(const SessionReport& report) {
                    {"objects", objects},
                    {"help_needed", agent.help_needed},
                    {"renamed", agent.renamed},
-                   {"analogies", agent.analogies}};
+                   {"analogies", agent.analogies},
+                   {"news", agent.news}};
   if (report.stopped) j["stopped"] = report.stop_reason;
   if (report.measured) {
     j["completion_rate"] = report.completion_rate;

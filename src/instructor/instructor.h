@@ -12,7 +12,7 @@
 #include "util/result.h"
 #include "world/action.h"
 #include "world/goal.h"
-#include "world/scenario.h"
+#include "world/world.h"
 
 namespace apprentice {
 

@@ -16,7 +16,7 @@
 #include "knowledge/rule.h"
 #include "util/result.h"
 #include "world/goal.h"
-#include "world/scenario.h"
+#include "world/world.h"
 
 namespace apprentice {
 

@@ -2,6 +2,7 @@
 
 #include <libpq-fe.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
@@ -9,6 +10,8 @@
 #include <optional>
 #include <thread>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "knowledge/store_location.h"
 #include "knowledge/store_codec.h"
@@ -27,6 +30,10 @@ constexpr int kCreationLockClass = 0x61707073;
 constexpr int kReconnectDelaysMs[] = {100, 250, 500, 1000, 2000, 2000, 2000, 2000};
 // How many times one call makes its connection again before it gives up.
 constexpr int kMostReconnects = 3;
+// The channel every save notifies, with a JSON array for payload: the
+// schema, then "goal" and the household and key, or "rule" and its
+// signature (news()).
+constexpr const char* kChannel = "apprentice_knowledge";
 
 using Texts = std::vector<std::string>;
 
@@ -93,8 +100,12 @@ class PostgresStore final : public StoreEngine {
   Status save_class_rule(const ClassRule& rule) override;
   Status remove_class_rule(const ClassRule& rule) override;
   Status forget_class_rule(const ClassRule& rule) override;
+  Result<StoreNews> news(const Domain& domain) override;
 
  private:
+  // The goal under `key` of this household, if it is still stored.
+  Result<std::optional<GoalKnowledge>> stored_goal(const Domain& domain, const GoalKey& key) const;
+  Result<std::optional<Rule>> stored_rule(const Domain& domain, const std::string& signature) const;
   PgResult run(const std::string& sql, const Texts& values = {}) const;
   // Runs `sql`, which must succeed, or gives its error.
   Status must(const std::string& sql, const Texts& values = {}) const;
@@ -126,6 +137,8 @@ class PostgresStore final : public StoreEngine {
   // The store's schema version: kKnowledgeSchemaVersion, or an older one a
   // reader reads as it is.
   int version_ = kKnowledgeSchemaVersion;
+  // The connection's current schema, which notifications name.
+  std::string schema_;
   PgConnection connection_;
 };
 
@@ -145,6 +158,8 @@ Status PostgresStore::must(const std::string& sql, const Texts& values) const {
 }
 
 Status PostgresStore::take_session_lock() const {
+  // Every save notifies kChannel (news()); a reader listens too.
+  if (auto s = must(std::string("LISTEN ") + kChannel); !s) return s;
   // Durable once a statement returns, whatever the server's default; a
   // reader writes nothing.
   if (auto s = must("SET synchronous_commit = on"); !s) return s;
@@ -180,6 +195,9 @@ Status PostgresStore::connect() {
                                                   "); create it first, for example with createdb");
     return make_error(ErrorCode::kIo, server + ": cannot connect to the PostgreSQL server of the knowledge store (" + why + ")");
   }
+  PgResult schema = run("SELECT coalesce(current_schema(), '')");
+  if (!succeeded(schema.get())) return tl::unexpected(statement_error(where_, schema.get(), connection_.get(), secret_));
+  schema_ = PQgetvalue(schema.get(), 0, 0);
   return take_session_lock();
 }
 
@@ -374,10 +392,12 @@ Status PostgresStore::save_goal(const GoalKnowledge& goal) {
   // A goal saved again under its key is replaced and moves to the end, as
   // SQLite's INSERT OR REPLACE does.
   return write(
-      "INSERT INTO goals(household, task, subtask, category, place, literals, object, source) "
+      "WITH saved AS (INSERT INTO goals(household, task, subtask, category, place, literals, object, source) "
       "VALUES ($1, $2, $3, $4, $5, $6, $7, $8) "
       "ON CONFLICT (household, task, subtask, category, place) DO UPDATE SET literals = EXCLUDED.literals, object = "
-      "EXCLUDED.object, source = EXCLUDED.source, id = nextval(pg_get_serial_sequence('goals', 'id'))",
+      "EXCLUDED.object, source = EXCLUDED.source, id = nextval(pg_get_serial_sequence('goals', 'id')) RETURNING 1) "
+      "SELECT pg_notify('apprentice_knowledge', json_build_array(current_schema(), 'goal', $1::text, $2::text, $3::text, "
+      "$4::text, $5::text)::text) FROM saved",
       [&] {
         return Texts{household_, goal.key.task, goal.key.subtask, goal.key.category, goal.key.place,
                      store_codec::encode_goal_literals(goal), goal.provenance.object, goal.provenance.source};
@@ -385,7 +405,11 @@ Status PostgresStore::save_goal(const GoalKnowledge& goal) {
 }
 
 Status PostgresStore::save_rule(const Domain& domain, const Rule& rule) {
-  return write("INSERT INTO rules(signature, body, object, source) VALUES ($1, $2, $3, $4) ON CONFLICT (signature) DO NOTHING",
+  // Notifies only when the rule is new.
+  return write("WITH saved AS (INSERT INTO rules(signature, body, object, source) VALUES ($1, $2, $3, $4) "
+               "ON CONFLICT (signature) DO NOTHING RETURNING 1) "
+               "SELECT pg_notify('apprentice_knowledge', json_build_array(current_schema(), 'rule', $1::text)::text) "
+               "FROM saved",
                [&] {
                  return Texts{rule_signature(domain, rule), store_codec::encode_rule(domain, rule), rule.provenance.object,
                               rule.provenance.source};
@@ -409,6 +433,65 @@ Status PostgresStore::remove_rule(const Domain& domain, const Rule& rule) {
 
 Status PostgresStore::remove_task(const std::string& name) {
   return write("DELETE FROM tasks WHERE household = $1 AND name = $2", [&] { return Texts{household_, name}; });
+}
+
+Result<std::optional<GoalKnowledge>> PostgresStore::stored_goal(const Domain& domain, const GoalKey& key) const {
+  PgResult r = run("SELECT literals, object, source FROM goals WHERE household = $1 AND task = $2 AND subtask = $3 AND "
+                   "category = $4 AND place = $5",
+                   {household_, key.task, key.subtask, key.category, key.place});
+  if (!succeeded(r.get())) return tl::unexpected(statement_error(where_, r.get(), connection_.get(), secret_));
+  if (PQntuples(r.get()) == 0) return std::nullopt;
+  auto goal = store_codec::decode_goal(domain, key, PQgetvalue(r.get(), 0, 0),
+                                       Provenance{PQgetvalue(r.get(), 0, 1), PQgetvalue(r.get(), 0, 2)});
+  if (!goal) return tl::unexpected(prefix_error(goal.error(), where_));
+  return std::optional<GoalKnowledge>(std::move(*goal));
+}
+
+Result<std::optional<Rule>> PostgresStore::stored_rule(const Domain& domain, const std::string& signature) const {
+  PgResult r = run("SELECT body, object, source FROM rules WHERE signature = $1", {signature});
+  if (!succeeded(r.get())) return tl::unexpected(statement_error(where_, r.get(), connection_.get(), secret_));
+  if (PQntuples(r.get()) == 0) return std::nullopt;
+  auto rule = store_codec::decode_rule(domain, PQgetvalue(r.get(), 0, 0),
+                                       Provenance{PQgetvalue(r.get(), 0, 1), PQgetvalue(r.get(), 0, 2)});
+  if (!rule) return tl::unexpected(prefix_error(rule.error(), where_));
+  return std::optional<Rule>(std::move(*rule));
+}
+
+Result<StoreNews> PostgresStore::news(const Domain& domain) {
+  StoreNews news;
+  // Reads what the server sent without waiting; a lost connection is made
+  // again (LISTEN with it) by the next save or load, and what was notified
+  // meanwhile is in what that load reads.
+  if (PQconsumeInput(connection_.get()) == 0) return news;
+  std::vector<GoalKey> goals;
+  std::vector<std::string> rules;
+  const int own = PQbackendPID(connection_.get());
+  while (PGnotify* raw = PQnotifies(connection_.get())) {
+    std::unique_ptr<PGnotify, decltype(&PQfreemem)> notice(raw, &PQfreemem);
+    if (notice->be_pid == own || std::strcmp(notice->relname, kChannel) != 0) continue;
+    const nlohmann::json said = nlohmann::json::parse(notice->extra, nullptr, false);
+    auto text = [&](std::size_t i) {
+      return said.is_array() && i < said.size() && said[i].is_string() ? said[i].get<std::string>() : std::string();
+    };
+    if (text(0) != schema_) continue;
+    if (text(1) == "goal" && text(2) == household_) {
+      GoalKey key{text(3), text(4), text(5), text(6)};
+      if (std::find(goals.begin(), goals.end(), key) == goals.end()) goals.push_back(std::move(key));
+    } else if (text(1) == "rule" && std::find(rules.begin(), rules.end(), text(2)) == rules.end()) {
+      rules.push_back(text(2));
+    }
+  }
+  for (const GoalKey& key : goals) {
+    auto goal = stored_goal(domain, key);
+    if (!goal) return tl::unexpected(goal.error());
+    if (*goal) news.goals.push_back(std::move(**goal));
+  }
+  for (const std::string& signature : rules) {
+    auto rule = stored_rule(domain, signature);
+    if (!rule) return tl::unexpected(rule.error());
+    if (*rule) news.rules.push_back(std::move(**rule));
+  }
+  return news;
 }
 
 Result<std::vector<std::string>> PostgresStore::households() const {

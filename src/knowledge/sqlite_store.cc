@@ -6,7 +6,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <cstdint>
 #include <cstring>
 #include <string_view>
 
@@ -67,6 +69,13 @@ constexpr const char* kHouseholdsQuery =
     "SELECT household FROM goals UNION SELECT household FROM tasks UNION SELECT household FROM class_rules "
     "UNION SELECT household FROM forgotten_rules ORDER BY 1";
 constexpr const char* kHouseholdsQueryV2 = "SELECT household FROM goals UNION SELECT household FROM tasks ORDER BY 1";
+// What news() reads: what was saved after the last ids seen.
+constexpr const char* kNewGoalsQuery =
+    "SELECT id, task, subtask, category, place, literals, object, source FROM goals WHERE household = ? AND id > ? "
+    "ORDER BY id";
+constexpr const char* kNewRulesQuery = "SELECT id, body, object, source FROM rules WHERE id > ? ORDER BY id";
+constexpr const char* kLastIdsQuery =
+    "SELECT (SELECT coalesce(max(id), 0) FROM goals), (SELECT coalesce(max(id), 0) FROM rules)";
 
 // What version meta names: kOldestMigratedSchemaVersion ..
 // kKnowledgeSchemaVersion, or 0 for anything else.
@@ -191,6 +200,10 @@ class SqliteStore final : public StoreEngine {
   Status save_class_rule(const ClassRule& rule) override;
   Status remove_class_rule(const ClassRule& rule) override;
   Status forget_class_rule(const ClassRule& rule) override;
+  Result<StoreNews> news(const Domain& domain) override;
+  // Takes what the store holds now as seen (news() reports only what comes
+  // after). Throws SQLite::Exception.
+  void mark_seen() const;
 
  private:
   // Runs the statements `statements()` gives in one transaction, each with
@@ -207,6 +220,11 @@ class SqliteStore final : public StoreEngine {
   // The schema version of the store: kKnowledgeSchemaVersion, or an older
   // one a reader reads as it is.
   int version_;
+  // What news() has seen: the store's data_version and the last goal and
+  // rule ids (a saved or replaced entry gets a new, larger id).
+  mutable std::int64_t data_version_ = -1;
+  mutable std::int64_t last_goal_id_ = 0;
+  mutable std::int64_t last_rule_id_ = 0;
   // The descriptor holding the flock(2). Declared before db_, so closed
   // after the database: closing any descriptor of a file drops the
   // process's POSIX locks on it, SQLite's among them.
@@ -292,6 +310,53 @@ Status SqliteStore::remove_task(const std::string& name) {
   return write("DELETE FROM tasks WHERE household = ? AND name = ?", [&] { return Texts{household_, name}; });
 }
 
+void SqliteStore::mark_seen() const {
+  data_version_ = db_->execAndGet("PRAGMA data_version").getInt64();
+  if (version_ == 1) return;
+  SQLite::Statement last(*db_, kLastIdsQuery);
+  if (!last.executeStep()) return;
+  last_goal_id_ = last.getColumn(0).getInt64();
+  last_rule_id_ = last.getColumn(1).getInt64();
+}
+
+Result<StoreNews> SqliteStore::news(const Domain& domain) {
+  StoreNews news;
+  auto located = [&](const Error& error) { return tl::unexpected(prefix_error(error, path_.string())); };
+  try {
+    // A version 1 store (read as it is) has no ids to follow by household.
+    if (version_ == 1) return news;
+    const std::int64_t now = db_->execAndGet("PRAGMA data_version").getInt64();
+    if (now == data_version_) return news;
+    SQLite::Transaction snapshot(*db_, SQLite::TransactionBehavior::DEFERRED);
+    SQLite::Statement goals(*db_, kNewGoalsQuery);
+    goals.bind(1, household_);
+    goals.bind(2, last_goal_id_);
+    while (goals.executeStep()) {
+      last_goal_id_ = std::max(last_goal_id_, goals.getColumn(0).getInt64());
+      GoalKey key{goals.getColumn(1).getString(), goals.getColumn(2).getString(), goals.getColumn(3).getString(),
+                  goals.getColumn(4).getString()};
+      auto goal = store_codec::decode_goal(domain, std::move(key), goals.getColumn(5).getString(),
+                                           Provenance{goals.getColumn(6).getString(), goals.getColumn(7).getString()});
+      if (!goal) return located(goal.error());
+      news.goals.push_back(std::move(*goal));
+    }
+    SQLite::Statement rules(*db_, kNewRulesQuery);
+    rules.bind(1, last_rule_id_);
+    while (rules.executeStep()) {
+      last_rule_id_ = std::max(last_rule_id_, rules.getColumn(0).getInt64());
+      auto rule = store_codec::decode_rule(domain, rules.getColumn(1).getString(),
+                                           Provenance{rules.getColumn(2).getString(), rules.getColumn(3).getString()});
+      if (!rule) return located(rule.error());
+      news.rules.push_back(std::move(*rule));
+    }
+    // Of this very snapshot: a commit after it changes the version again.
+    data_version_ = now;
+  } catch (const std::exception& e) {
+    return tl::unexpected(sqlite_error(path_, e));
+  }
+  return news;
+}
+
 Result<std::vector<std::string>> SqliteStore::households() const {
   std::vector<std::string> out;
   try {
@@ -368,6 +433,7 @@ Result<Knowledge> SqliteStore::load(const Domain& domain) const {
         }
       }
     }
+    mark_seen();
   } catch (const std::exception& e) {
     return tl::unexpected(sqlite_error(path_, e));
   }
@@ -469,8 +535,9 @@ Result<std::unique_ptr<StoreEngine>> open_sqlite_store(const std::filesystem::pa
       db->exec("DELETE FROM forgotten_rules");
       transaction.commit();
     }
-    return std::unique_ptr<StoreEngine>(
-        std::make_unique<SqliteStore>(path, household, *version, std::move(lock), std::move(db)));
+    auto store = std::make_unique<SqliteStore>(path, household, *version, std::move(lock), std::move(db));
+    store->mark_seen();
+    return std::unique_ptr<StoreEngine>(std::move(store));
   } catch (const std::exception& e) {
     return tl::unexpected(sqlite_error(path, e));
   }

@@ -77,6 +77,9 @@ class KnowledgeStore {
   Result<Knowledge> load(const Domain& domain) const { return engine_->load(domain); }
   // Every household with goals or tasks in the store.
   Result<std::vector<std::string>> households() const { return engine_->households(); }
+  // What other processes (other robots) learned since the store was
+  // opened, loaded or last asked (StoreEngine::news).
+  Result<StoreNews> news(const Domain& domain) { return engine_->news(domain); }
   const std::string& household() const { return household_; }
 
   // Where the store is, as messages name it: the SQLite file's path, or

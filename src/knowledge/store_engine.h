@@ -67,6 +67,15 @@ struct Knowledge {
   bool forgot(const ClassRule& rule) const { return forgotten_rules.find(rule) != nullptr; }
 };
 
+// What other processes saved into a store since it was opened, loaded or
+// last asked (StoreEngine::news): the goals of its household and the
+// fleet's rules, whole, in the order they were saved.
+struct StoreNews {
+  std::vector<GoalKnowledge> goals;
+  std::vector<Rule> rules;
+  bool empty() const { return goals.empty() && rules.empty(); }
+};
+
 class StoreEngine {
  public:
   virtual ~StoreEngine() = default;
@@ -98,6 +107,17 @@ class StoreEngine {
 
   // The households that have goals or tasks in the store, by name.
   virtual Result<std::vector<std::string>> households() const = 0;
+
+  // What another process saved since this engine was opened, loaded or
+  // last asked: goals of this household, rules of any (StoreNews). Cheap
+  // when nothing changed, and never waits: SQLite compares PRAGMA
+  // data_version, which changes when another connection commits;
+  // PostgreSQL reads the notifications its LISTEN received (every save
+  // sends one, NOTIFY, in the save's own transaction). The news may hold
+  // what this process saved itself meanwhile (SQLite, when another process
+  // saved too): callers keep what they know already. A goal removed again
+  // before it was asked about is not news.
+  virtual Result<StoreNews> news(const Domain& domain) = 0;
 };
 
 }  // namespace apprentice

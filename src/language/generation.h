@@ -13,7 +13,7 @@
 
 #include "world/action.h"
 #include "world/goal.h"
-#include "world/scenario.h"
+#include "world/world.h"
 
 namespace apprentice::language {
 

@@ -20,7 +20,7 @@
 #include "language/generation.h"  // capitalize, spoken_category
 #include "world/action.h"
 #include "world/goal.h"
-#include "world/scenario.h"
+#include "world/world.h"
 #include "world/unreachable.h"
 
 namespace apprentice::language {

@@ -25,7 +25,7 @@
 #include "language/grounding_types.h"
 #include "language/lexicon.h"
 #include "language/logical_form.h"
-#include "world/scenario.h"
+#include "world/world.h"
 
 namespace apprentice::language {
 

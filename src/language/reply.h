@@ -25,7 +25,7 @@
 #include "language/logical_form.h"
 #include "world/action.h"
 #include "world/goal.h"
-#include "world/scenario.h"
+#include "world/world.h"
 
 namespace apprentice::language {
 

@@ -26,7 +26,7 @@
 
 #include "language/lexicon.h"
 #include "language/logical_form.h"
-#include "world/scenario.h"
+#include "world/world.h"
 
 namespace apprentice::language {
 

@@ -1,9 +1,10 @@
 // A scenario file (YAML) holds a world and the task an instructor will
 // teach in it. The format is documented in docs/scenarios.md.
 //
-// The agent is given only the World; the TaskStructure reaches it through
-// the instructor's words, and the Intent is for the instructor and the
-// metrics alone.
+// The agent is given only the World (world/world.h); the TaskStructure
+// reaches it through the instructor's words, and the Intent is for the
+// instructor and the metrics alone. Nothing of the agent includes this
+// header (scripts/check-layers.py).
 #pragma once
 
 #include <filesystem>
@@ -19,19 +20,9 @@
 #include "world/state.h"
 #include "world/universe.h"
 #include "world/vocabulary.h"
+#include "world/world.h"
 
 namespace apprentice {
-
-// What the robot perceives: the action model, the objects and the state.
-// A value: copies share the immutable domain and universe and copy the
-// state, so each Simulator works on its own copy.
-struct World {
-  std::shared_ptr<const Domain> domain;
-  Vocabulary vocabulary;
-  std::shared_ptr<const Universe> universe;
-  State state;
-  std::string location;  // where the robot is: "kitchen"
-};
 
 struct Subtask {
   std::string verb;  // "clear"

@@ -9,7 +9,7 @@
 
 #include "util/result.h"
 #include "world/action.h"
-#include "world/scenario.h"
+#include "world/world.h"
 
 namespace apprentice {
 

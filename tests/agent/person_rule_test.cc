@@ -4,6 +4,7 @@
 
 #include "agent/person_rule.h"
 #include "common/paths.h"
+#include "world/scenario.h"
 
 namespace apprentice {
 namespace {

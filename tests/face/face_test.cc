@@ -2,6 +2,7 @@
 // that learns and performs, as every front end builds it.
 #include "face/apprentice.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <set>
 #include <string>
@@ -16,6 +17,7 @@
 #include "common/scenarios.h"
 #include "common/scratch.h"
 #include "instructor/simulated_instructor.h"
+#include "knowledge/store.h"
 #include "knowledge/store_engine.h"
 
 namespace apprentice {
@@ -149,6 +151,61 @@ TEST_F(FaceStore, TheStoreIsOwnedAndKeptAcrossSessions) {
   auto alone = (*again)->perform("tidy kitchen");
   ASSERT_TRUE(alone) << alone.error().describe();
   EXPECT_EQ(alone->assertions_achieved, alone->assertions_total);
+}
+
+// Live: a running agent takes in what another robot of its household
+// learned after it started (the store's news), and says so once.
+TEST_F(FaceStore, ARunningAgentSeesWhatAnotherRobotLearnedSinceItStarted) {
+  Scenario kitchen = testing::shipped_scenario("tidy-kitchen");
+  const std::string store = (dir_ / "fleet.sqlite").string();
+  AgentSpec spec = default_agent_spec();
+  spec.knowledge = store;
+  spec.household = "smiths";
+  {
+    auto teaching = make_agent_session(spec, kitchen);
+    ASSERT_TRUE(teaching) << teaching.error().describe();
+    SimulatedInstructor teacher(kitchen);
+    ASSERT_TRUE((*teaching)->learn(teacher));
+  }
+  auto taught = load_knowledge_read_only(store, *kitchen.world.domain, "smiths");
+  ASSERT_TRUE(taught) << taught.error().describe();
+  // The joneses' robot knows everything but one kind's goals.
+  const std::string kind = taught->goals.all().front().key.category;
+  std::vector<GoalKnowledge> kinds_goals;
+  {
+    auto joneses = KnowledgeStore::open(store, StoreAccess::kReadWrite, "joneses");
+    ASSERT_TRUE(joneses) << joneses.error().describe();
+    ASSERT_TRUE(joneses->save_task(taught->tasks.front()));
+    for (const GoalKnowledge& g : taught->goals.all()) {
+      if (g.key.category == kind) kinds_goals.push_back(g);
+      else ASSERT_TRUE(joneses->save_goal(g));
+    }
+  }
+  spec.household = "joneses";
+  spec.condition = "knowledge-only";
+  spec.store_access = StoreAccess::kReadOnly;
+  auto running = make_agent_session(spec, kitchen);
+  ASSERT_TRUE(running) << running.error().describe();
+  for (const GoalKnowledge& g : kinds_goals) ASSERT_EQ((*running)->knowledge().goals.find(g.key), nullptr);
+  // Another robot of the household learns that kind now.
+  {
+    auto robot2 = KnowledgeStore::open(store, StoreAccess::kReadWrite, "joneses");
+    ASSERT_TRUE(robot2) << robot2.error().describe();
+    for (const GoalKnowledge& g : kinds_goals) ASSERT_TRUE(robot2->save_goal(g));
+  }
+  auto alone = (*running)->perform("tidy kitchen");
+  ASSERT_TRUE(alone) << alone.error().describe();
+  EXPECT_TRUE(alone->agent.help_needed.empty()) << alone->agent.help_needed.front();
+  EXPECT_EQ(alone->assertions_achieved, alone->assertions_total);
+  std::string spoken = kind;
+  std::replace(spoken.begin(), spoken.end(), '-', ' ');
+  const std::string said = "Another robot just learned where the " + spoken + " goes.";
+  EXPECT_EQ(alone->agent.news, std::vector<std::string>{said});
+  EXPECT_EQ(nlohmann::json::parse(to_json(*alone))["news"], nlohmann::json::array({said}));
+  // Said once: a second run of the same session has nothing new to say.
+  auto again = (*running)->perform("tidy kitchen");
+  ASSERT_TRUE(again);
+  EXPECT_TRUE(again->agent.news.empty());
 }
 
 TEST_F(FaceStore, AStoreThatIsNotOneIsRefused) {

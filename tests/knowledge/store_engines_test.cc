@@ -10,6 +10,7 @@
 #include <libpq-fe.h>
 
 #include <atomic>
+#include <chrono>
 #include <thread>
 
 #include "knowledge/store.h"
@@ -600,6 +601,45 @@ TEST_P(StoreEngines, CopyingAStoreCopiesEveryHouseholdIntoItsOwn) {
   expect_filled(*smiths);
   ASSERT_EQ(joneses->goals.size(), 1u);
   EXPECT_EQ(joneses->goals.all()[0].literals, goal_for("ceramic-plate1", "(in ceramic-plate1 garbage1)").literals);
+}
+
+// Live: what another connection saves is news to a running store; its own
+// saves and other households' goals are not.
+TEST_P(StoreEngines, NewsIsWhatAnotherRobotSavedSinceTheStoreWasOpenedOrLastAsked) {
+  KnowledgeStore watcher = open_or_die(StoreAccess::kReadWrite, "smiths");
+  ASSERT_TRUE(watcher.load(domain_));
+  auto news = watcher.news(domain_);
+  ASSERT_TRUE(news) << news.error().describe();
+  EXPECT_TRUE(news->empty());
+  const std::vector<Rule> taught = rules();
+  {
+    KnowledgeStore robot2 = open_or_die(StoreAccess::kReadWrite, "smiths");
+    KnowledgeStore elsewhere = open_or_die(StoreAccess::kReadWrite, "joneses");
+    ASSERT_TRUE(robot2.save_goal(plate_goal()));
+    ASSERT_TRUE(elsewhere.save_goal(paper_plate_goal()));
+    ASSERT_TRUE(elsewhere.save_rule(domain_, taught[0]));
+  }
+  // Notifications reach PostgreSQL's listener a moment after the commit:
+  // ask until something comes (the benchmark measures how long it takes).
+  StoreNews got;
+  for (int tries = 0; tries < 1000 && got.goals.size() + got.rules.size() < 2; ++tries) {
+    auto more = watcher.news(domain_);
+    ASSERT_TRUE(more) << more.error().describe();
+    for (GoalKnowledge& g : more->goals) got.goals.push_back(std::move(g));
+    for (Rule& r : more->rules) got.rules.push_back(std::move(r));
+    if (got.goals.size() + got.rules.size() < 2) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  ASSERT_EQ(got.goals.size(), 1u);
+  EXPECT_EQ(got.goals[0], plate_goal());  // the joneses' paper plate is not the smiths' news
+  ASSERT_EQ(got.rules.size(), 1u);        // a rule is the fleet's, whoever taught it
+  EXPECT_EQ(got.rules[0], taught[0]);
+  // Told once; and what the watcher saves itself is not news to it.
+  ASSERT_TRUE(watcher.save_goal(paper_plate_goal()));
+  ASSERT_TRUE(watcher.save_rule(domain_, taught[1]));
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  auto after = watcher.news(domain_);
+  ASSERT_TRUE(after) << after.error().describe();
+  EXPECT_TRUE(after->empty());
 }
 
 std::string engine_name(const ::testing::TestParamInfo<Engine>& info) {

@@ -6,6 +6,7 @@
 
 #include "common/paths.h"
 #include "language/rule_reader.h"
+#include "world/scenario.h"
 
 namespace apprentice::language {
 namespace {
