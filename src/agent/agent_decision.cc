@@ -135,19 +135,20 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
   for (bool first = true;; first = false) {
     Decision decision = decide(proposals, places, policy);
     // What was learned for this very kind in another task or subtask is
-    // always worth a yes/no before asking where, however the other sources
-    // lean.
-    if (decision.kind == Decision::Kind::kAskWhere) {
-      auto memory = std::find_if(proposals.begin(), proposals.end(),
-                                 [](const DestinationProposal& p) { return p.source == ProposalSource::kMemory; });
-      if (memory != proposals.end()) {
-        auto belief = std::find_if(decision.beliefs.begin(), decision.beliefs.end(),
-                                   [&](const Belief& b) { return b.destination == memory->destination; });
-        decision.kind = Decision::Kind::kConfirm;
-        decision.destination = memory->destination;
-        decision.confidence = belief == decision.beliefs.end() ? memory->confidence : belief->probability;
-        decision.support = belief == decision.beliefs.end() ? std::vector<DestinationProposal>{*memory} : belief->support;
-      }
+    // always worth a yes/no, however the other sources lean: before asking
+    // where, and instead of a place that only other kinds suggest (the
+    // ceramic plate taught for the dishwasher is not sent to the garbage
+    // because the paper plate went there).
+    auto memory = std::find_if(proposals.begin(), proposals.end(),
+                               [](const DestinationProposal& p) { return p.source == ProposalSource::kMemory; });
+    if (memory != proposals.end() &&
+        (decision.kind == Decision::Kind::kAskWhere || decision.destination != memory->destination)) {
+      auto belief = std::find_if(decision.beliefs.begin(), decision.beliefs.end(),
+                                 [&](const Belief& b) { return b.destination == memory->destination; });
+      decision.kind = Decision::Kind::kConfirm;
+      decision.destination = memory->destination;
+      decision.confidence = belief == decision.beliefs.end() ? memory->confidence : belief->probability;
+      decision.support = belief == decision.beliefs.end() ? std::vector<DestinationProposal>{*memory} : belief->support;
     }
     if (!decision.destination) return std::optional<Goal>();
     std::optional<Goal> goal = goal_at(w, *decision.destination, object);

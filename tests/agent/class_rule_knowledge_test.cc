@@ -132,6 +132,20 @@ TEST_F(ClassRuleKnowledge, AForgottenRuleIsNotProposedAndStaysForgottenAfterARel
   for (const ClassRule& r : after.class_rules.all()) EXPECT_NE(r.class_name, "box");
 }
 
+// The proposer, asked about a kind never taught, proposes from the induced
+// rules (it once died here, unwinding a throw inside propose()).
+TEST_F(ClassRuleKnowledge, TheProposerProposesFromTheRulesForAKindNeverTaught) {
+  auto store = KnowledgeStore::open(path_);
+  ASSERT_TRUE(store.has_value()) << store.error().describe();
+  Knowledge knowledge = taught_knowledge(*store);
+  GoalProposer proposer(concepts_, knowledge.goals.all(), forgotten_keys(knowledge));
+  GoalKey key{"tidy kitchen", "clear", "shoe-box", "table"};
+  bool pantry_by_rule = false;
+  for (const DestinationProposal& p : proposer.propose(world_, key, testing_object(), {}))
+    if (p.source == ProposalSource::kInducedRule && p.rule && p.rule->class_name == "box") pantry_by_rule = true;
+  EXPECT_TRUE(pantry_by_rule);
+}
+
 TEST_F(ClassRuleKnowledge, ARuleIsNamedByWhatItIsAboutAndWhereItSendsThings) {
   ClassRule fruit;
   fruit.class_name = "edible fruit";
