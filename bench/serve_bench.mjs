@@ -11,6 +11,7 @@
 //               at once, every session saturating the server)
 //   --rounds N  teach each session's world N times over (default 2)
 //   --sessions N  sessions teaching at once (default 20)
+//   --loads-only  time the page's loads alone, with no sessions teaching
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
@@ -26,6 +27,7 @@ const binary = args[0] && !args[0].startsWith('--') ? args[0] : path.join(source
 const think = option('--think', 1000);
 const rounds = option('--rounds', 2);
 const SESSIONS = option('--sessions', 20);
+const loadsOnly = args.includes('--loads-only');
 
 function percentile(values, p) {
   const sorted = [...values].sort((a, b) => a - b);
@@ -129,36 +131,58 @@ async function pageLoads(context, address, sessionId) {
   return { start, resume, startOutside, resumeOutside };
 }
 
-// Loads with nothing kept by the browser (its script and style fetched
-// too): each in a fresh context, 10 of each.
-async function firstLoads(address, sessionId) {
-  const fresh = await chromium.launch({ executablePath: '/usr/bin/chromium', headless: true, args: chromiumFlags });
-  const out = { start: [], resume: [] };
+// Where a load's time went, in the page's clock: the page's own response
+// (its last byte) and the script's, from the navigation and resource
+// timings.
+function loadParts() {
+  const nav = performance.getEntriesByType('navigation')[0];
+  const script = performance.getEntriesByType('resource').find((e) => /\/app\.js/.test(e.name));
+  return { page: nav.responseEnd, script: script ? script.responseEnd : null };
+}
+
+// Loads with nothing of the page kept by the browser: its script and style
+// are fetched too. 10 of each, two ways: in a browser already running with
+// the page never seen (its cache emptied before each load; a new tab, as a
+// person opens the address), and in a fresh browser context each time (a
+// new profile: chromium also starts a renderer for it, which a person's
+// browser has running).
+async function firstLoads(context, address, sessionId) {
+  const out = { start: [], resume: [], freshStart: [], freshResume: [], page: [], script: [] };
+  const targets = [['start', address], ['resume', address + '#session=' + sessionId]];
   for (let i = 0; i < 10; ++i) {
-    for (const [what, url] of [['start', address], ['resume', address + '#session=' + sessionId]]) {
-      const context = await fresh.newContext();
+    for (const [what, url] of targets) {
       const page = await context.newPage();
       await page.addInitScript(markReady);
+      const cdp = await context.newCDPSession(page);
+      await cdp.send('Network.clearBrowserCache');
       await page.goto(url);
       await page.waitForFunction((w) => window.__ready[w] !== undefined, what);
       out[what].push(await page.evaluate((w) => window.__ready[w], what));
-      await context.close();
+      const parts = await page.evaluate(loadParts);
+      out.page.push(parts.page);
+      if (parts.script !== null) out.script.push(parts.script);
+      await page.close();
+    }
+  }
+  const fresh = await chromium.launch({ executablePath: '/usr/bin/chromium', headless: true, args: chromiumFlags });
+  for (let i = 0; i < 10; ++i) {
+    for (const [what, url] of targets) {
+      const own = await fresh.newContext();
+      const page = await own.newPage();
+      await page.addInitScript(markReady);
+      await page.goto(url);
+      await page.waitForFunction((w) => window.__ready[w] !== undefined, what);
+      out[what === 'start' ? 'freshStart' : 'freshResume'].push(await page.evaluate((w) => window.__ready[w], what));
+      await own.close();
     }
   }
   await fresh.close();
   return out;
 }
 
-const scratch = scratchDir('apprentice-bench-');
-const server = await startServer(binary, []);
-const context = await chromium.launchPersistentContext(path.join(scratch, 'profile'), {
-  executablePath: '/usr/bin/chromium', headless: true, args: chromiumFlags,
-});
-try {
-  const client = new PageClient(server.address);
-  const kitchen = replies(sourceDir, 'kitchen_replies.txt');
-  const laundry = replies(sourceDir, 'laundry_replies.txt');
-  const http = [], inPage = [];
+// SESSIONS teachers at once, one in the page and the others over HTTP: the
+// round trip of each reply, and the server's CPU.
+async function teachAtOnce(client, context, server, kitchen, laundry, http, inPage) {
   const began = performance.now();
   const cpuBefore = cpuMs(server.process.pid);
   const teachers = [teachInPage(context, server.address, kitchen, inPage)];
@@ -176,17 +200,34 @@ try {
   const count = http.length + inPage.length;
   console.log(`server CPU: ${(cpu / 1000).toFixed(2)} s for ${count} replies, ${(cpu / count).toFixed(1)} ms a reply; ` +
               `load average at the end ${load} on ${os.cpus().length} cores`);
+}
+
+const scratch = scratchDir('apprentice-bench-');
+const server = await startServer(binary, []);
+const context = await chromium.launchPersistentContext(path.join(scratch, 'profile'), {
+  executablePath: '/usr/bin/chromium', headless: true, args: chromiumFlags,
+});
+try {
+  const client = new PageClient(server.address);
+  const kitchen = replies(sourceDir, 'kitchen_replies.txt');
+  const laundry = replies(sourceDir, 'laundry_replies.txt');
+  const http = [], inPage = [];
+  if (!loadsOnly) await teachAtOnce(client, context, server, kitchen, laundry, http, inPage);
   const idle = await client.start('tidy-kitchen');
   await idle.question();
   const loads = await pageLoads(context, server.address, idle.id);
-  const first = await firstLoads(server.address, idle.id);
+  const first = await firstLoads(context, server.address, idle.id);
   idle.close();
   console.log(`page load, start screen ready, in the page: ${describe(loads.start)}`);
   console.log(`page load, session resumed to its question, in the page: ${describe(loads.resume)}`);
   console.log(`page load, start screen ready, seen by playwright: ${describe(loads.startOutside)}`);
   console.log(`page load, session resumed, seen by playwright: ${describe(loads.resumeOutside)}`);
-  console.log(`page load with nothing kept (a fresh context), start screen ready, in the page: ${describe(first.start)}`);
-  console.log(`page load with nothing kept (a fresh context), session resumed, in the page: ${describe(first.resume)}`);
+  console.log(`first load (cache emptied, browser running), start screen ready, in the page: ${describe(first.start)}`);
+  console.log(`first load (cache emptied, browser running), session resumed, in the page: ${describe(first.resume)}`);
+  console.log(`  of which the page's response, to its last byte: ${describe(first.page)}`);
+  console.log(`  and the script's response, to its last byte: ${describe(first.script)}`);
+  console.log(`first load in a fresh browser context, start screen ready, in the page: ${describe(first.freshStart)}`);
+  console.log(`first load in a fresh browser context, session resumed, in the page: ${describe(first.freshResume)}`);
 } finally {
   await context.close();
   await server.stop();

@@ -1,7 +1,6 @@
 #include "server.h"
 
 #include <atomic>
-#include <fstream>
 #include <map>
 #include <ostream>
 #include <thread>
@@ -11,8 +10,8 @@
 
 #include "catalogue.h"
 #include "knowledge/store_location.h"
+#include "page_files.h"
 #include "session_registry.h"
-#include "util/file.h"
 #include "util/json.h"
 #include "util/text.h"
 
@@ -26,10 +25,15 @@ namespace {
 constexpr const char* kCsrfHeader = "X-Apprentice-Request";
 constexpr const char* kTokenCookie = "apprentice_token";
 // A stream of events is closed after this long, and the page's EventSource
-// reconnects from the last event it saw: a connection the page dropped
-// without a word frees its thread within this time.
+// reconnects from the last event it saw.
 constexpr auto kStreamLifetime = std::chrono::seconds(60);
-constexpr auto kHeartbeat = std::chrono::seconds(15);
+// A stream waits this long for an event, and writes a comment line when
+// none came. The server learns that a page went away (a closed tab, a
+// dropped connection) only when a write to it fails, and the first write
+// after the browser closed the connection still succeeds (the browser
+// answers it with a reset): a closed page's stream ends, and frees its
+// thread and its place among the streams, within two of these.
+constexpr auto kStreamPoll = std::chrono::milliseconds(500);
 
 bool is_loopback(const std::string& host) {
   return host == "localhost" || host == "::1" || host.rfind("127.", 0) == 0;
@@ -55,11 +59,6 @@ std::string cookie(const httplib::Request& req, const std::string& name) {
   return "";
 }
 
-void send_error(httplib::Response& res, int status, const std::string& message) {
-  res.status = status;
-  res.set_content(dump_json(nlohmann::json{{"error", message}}), "application/json");
-}
-
 int status_for(const Error& error) {
   switch (error.code) {
     case ErrorCode::kInvalidInput:
@@ -69,69 +68,6 @@ int status_for(const Error& error) {
     case ErrorCode::kCancelled: return 410;
     default: return 500;
   }
-}
-
-struct StaticFile {
-  std::string body;
-  std::string type;
-  std::string version;  // a digest of the body, for the page's references
-};
-
-// 16 hex digits of FNV-1a over the text: which version of a file a page
-// names.
-std::string content_digest(std::string_view text) {
-  std::uint64_t hash = 14695981039346656037ull;
-  for (unsigned char c : text) hash = (hash ^ c) * 1099511628211ull;
-  static const char* kHex = "0123456789abcdef";
-  std::string out(16, '0');
-  for (int i = 15; i >= 0; --i, hash >>= 4) out[static_cast<std::size_t>(i)] = kHex[hash & 0xf];
-  return out;
-}
-
-// The page's files, read once at start: only these names are ever served.
-Result<std::map<std::string, StaticFile>> load_page(const std::filesystem::path& web_dir) {
-  static const std::map<std::string, std::string> kTypes{{".html", "text/html; charset=utf-8"},
-                                                         {".js", "text/javascript; charset=utf-8"},
-                                                         {".css", "text/css; charset=utf-8"},
-                                                         {".svg", "image/svg+xml"},
-                                                         {".png", "image/png"}};
-  std::map<std::string, StaticFile> files;
-  std::error_code ec;
-  for (const auto& entry : std::filesystem::directory_iterator(web_dir, ec)) {
-    auto type = kTypes.find(entry.path().extension().string());
-    if (!entry.is_regular_file() || type == kTypes.end()) continue;
-    auto body = read_input_file(entry.path());
-    if (!body) return tl::unexpected(body.error());
-    files["/" + entry.path().filename().string()] = StaticFile{std::move(*body), type->second, ""};
-  }
-  if (!files.contains("/index.html"))
-    return make_error(ErrorCode::kNotFound, (web_dir / "index.html").string() + ": the page is missing (is the data installed?)");
-  // The page names its script and style with their contents' digest
-  // ("/app.js?v=..."), so that the browser may keep them (serve_file) and
-  // a changed file is still fetched anew.
-  std::string& html = files["/index.html"].body;
-  for (auto& [name, file] : files) {
-    if (name == "/index.html") continue;
-    file.version = content_digest(file.body);
-    for (const std::string attribute : {"src=\"", "href=\""}) {
-      const std::string reference = attribute + name + "\"";
-      for (std::size_t at = html.find(reference); at != std::string::npos; at = html.find(reference, at + 1))
-        html.replace(at, reference.size(), attribute + name + "?v=" + file.version + "\"");
-    }
-  }
-  return files;
-}
-
-// The options a page starts from (GET /api/options), placed in the page
-// too as a JSON data block, so that its start screen needs no second
-// request. '<' is escaped, so that no text in it can end the block.
-std::string page_with_options(std::string html, const std::string& options_json) {
-  std::string data;
-  for (char c : options_json) data += c == '<' ? std::string("\\u003c") : std::string(1, c);
-  const std::string block = "<script type=\"application/json\" id=\"server-options\">" + data + "</script>\n";
-  const std::size_t head_end = html.find("</head>");
-  html.insert(head_end == std::string::npos ? 0 : head_end, block);
-  return html;
 }
 
 class WebServer {
@@ -251,7 +187,7 @@ void WebServer::create_session(const httplib::Request& req, httplib::Response& r
   auto session = sessions_.start(std::move(setup));
   if (!session) return send_error(res, status_for(session.error()), session.error().message);
   res.status = 201;
-  res.set_content(dump_json((*session)->description()), "application/json");
+  send_body(res, dump_json((*session)->description()), "application/json");
 }
 
 void WebServer::post_reply(const std::string& id, const httplib::Request& req, httplib::Response& res) {
@@ -275,7 +211,7 @@ void WebServer::post_reply(const std::string& id, const httplib::Request& req, h
   if (auto posted = session->reply(std::move(text), body["question"].get<std::uint64_t>()); !posted)
     return send_error(res, posted.error().code == ErrorCode::kFailedPrecondition ? 409 : status_for(posted.error()),
                       posted.error().message);
-  res.set_content("{}", "application/json");
+  send_body(res, "{}", "application/json");
 }
 
 void WebServer::stream_events(const std::string& id, const httplib::Request& req, httplib::Response& res) {
@@ -292,11 +228,10 @@ void WebServer::stream_events(const std::string& id, const httplib::Request& req
   if (!last.empty()) after = std::strtoull(last.c_str(), nullptr, 10);
   struct Stream {
     std::uint64_t next;
-    std::chrono::steady_clock::time_point opened, written;
+    std::chrono::steady_clock::time_point opened;
     bool first = true;
   };
-  auto now = std::chrono::steady_clock::now();
-  auto stream = std::make_shared<Stream>(Stream{after, now, now});
+  auto stream = std::make_shared<Stream>(Stream{after, std::chrono::steady_clock::now()});
   ++streams_;
   res.set_header("Cache-Control", "no-store");
   res.set_chunked_content_provider(
@@ -304,20 +239,17 @@ void WebServer::stream_events(const std::string& id, const httplib::Request& req
       [this, session, stream](std::size_t, httplib::DataSink& sink) {
         bool closed = false;
         std::vector<Event> events = stopping_ ? std::vector<Event>{}
-                                              : session->events().after(stream->next, std::chrono::milliseconds(500), &closed);
+                                              : session->events().after(stream->next, kStreamPoll, &closed);
         std::string out = stream->first ? "retry: 500\n\n" : "";
         stream->first = false;
         for (const Event& e : events) {
           out += "id: " + std::to_string(e.seq) + "\ndata: " + dump_json(e.body) + "\n\n";
           stream->next = e.seq;
         }
-        auto now = std::chrono::steady_clock::now();
-        if (out.empty() && now - stream->written > kHeartbeat) out = ": still here\n\n";
-        if (!out.empty()) {
-          if (!sink.write(out.data(), out.size())) return false;
-          stream->written = now;
-        }
-        if (stopping_ || (closed && events.empty()) || now - stream->opened > kStreamLifetime) sink.done();
+        if (out.empty()) out = ":\n\n";  // a comment: is the page still there?
+        if (!sink.write(out.data(), out.size())) return false;
+        if (stopping_ || (closed && events.empty()) || std::chrono::steady_clock::now() - stream->opened > kStreamLifetime)
+          sink.done();
         return true;
       },
       [this](bool) { --streams_; });
@@ -335,7 +267,7 @@ void WebServer::routes() {
     return httplib::Server::HandlerResponse::Unhandled;
   });
   http_.set_error_handler([](const httplib::Request&, httplib::Response& res) {
-    if (!res.body.empty()) return;
+    if (res.has_header("Content-Type")) return;  // a route's own answer
     if (res.status == 413) return send_error(res, 413, "the request is larger than the server accepts");
     if (res.status == 404) return send_error(res, 404, "there is nothing here");
     send_error(res, res.status, "the request could not be handled");
@@ -363,17 +295,17 @@ void WebServer::routes() {
     const bool versioned = !file->second.version.empty() && req.has_param("v") &&
                            req.get_param_value("v") == file->second.version;
     res.set_header("Cache-Control", versioned ? "max-age=31536000, immutable" : "no-cache");
-    res.set_content(file->second.body, file->second.type);
+    send_body(res, file->second.body, file->second.type);
   });
   http_.Get("/api/options", [this](const httplib::Request&, httplib::Response& res) {
-    res.set_content(options_json(), "application/json");
+    send_body(res, options_json(), "application/json");
   });
   http_.Post("/api/sessions", [this](const httplib::Request& req, httplib::Response& res) { create_session(req, res); });
   http_.Get(R"(/api/sessions/([0-9a-f]{32}))", [this](const httplib::Request& req, httplib::Response& res) {
     if (auto session = session_or_404(req.matches[1], res)) {
       nlohmann::json d = session->description();
       d["last_event"] = session->events().last_seq();
-      res.set_content(dump_json(d), "application/json");
+      send_body(res, dump_json(d), "application/json");
     }
   });
   http_.Get(R"(/api/sessions/([0-9a-f]{32})/events)",
@@ -383,7 +315,7 @@ void WebServer::routes() {
   http_.Get(R"(/api/sessions/([0-9a-f]{32})/log)", [this](const httplib::Request& req, httplib::Response& res) {
     if (auto session = session_or_404(req.matches[1], res)) {
       res.set_header("Content-Disposition", "attachment; filename=\"apprentice-" + session->id() + ".jsonl\"");
-      res.set_content(session->events().log_text(), "application/x-ndjson");
+      send_body(res, session->events().log_text(), "application/x-ndjson");
     }
   });
 }

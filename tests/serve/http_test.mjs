@@ -150,6 +150,64 @@ test('limits: event streams open at once, twice the sessions plus 8', async () =
   });
 });
 
+test('a dropped event stream, opened again with Last-Event-ID as the browser does, goes on after that event', async () => {
+  await withServer([], async (server, client) => {
+    const session = await client.start('tidy-kitchen');
+    const asked = await session.question();
+    assert.equal((await session.reply('tidy the kitchen', asked.seq)).status, 200);
+    const next = await session.question(asked.seq);
+    session.close();
+    // What the page's EventSource sends when it reconnects: the last event it saw.
+    const controller = new AbortController();
+    const response = await fetch(`${client.base}/api/sessions/${session.id}/events`,
+                                 { headers: { 'Last-Event-ID': String(asked.seq) }, signal: controller.signal });
+    assert.equal(response.status, 200);
+    assert.equal(response.headers.get('content-type'), 'text/event-stream');
+    let text = '';
+    const decoder = new TextDecoder();
+    for await (const chunk of response.body) {
+      text += decoder.decode(chunk, { stream: true });
+      if (text.includes(`id: ${next.seq}\n`)) break;
+    }
+    controller.abort();
+    const ids = [...text.matchAll(/^id: (\d+)$/gm)].map((m) => Number(m[1]));
+    assert.equal(ids[0], asked.seq + 1, 'the first event after the one seen');
+    assert.ok(ids.includes(next.seq));
+    assert.match(text, /"type":"reply"/);
+    assert.doesNotMatch(text, /What task should I learn\?/, 'an event seen before is sent again');
+  });
+});
+
+test('a page that goes away gives its event stream back within seconds, not at the next heartbeat', async (t) => {
+  await withServer(['--max-sessions', '1'], async (server, client) => {
+    const session = await client.start('tidy-kitchen');
+    await session.question();
+    const streams = [];
+    const open = async () => {
+      const controller = new AbortController();
+      const response = await fetch(`${client.base}/api/sessions/${session.id}/events`, { signal: controller.signal });
+      if (response.status === 200) streams.push(controller);
+      return response.status;
+    };
+    while ((await open()) === 200) assert.ok(streams.length <= 10, 'more than twice the sessions plus 8 streams');
+    assert.equal(streams.length, 9, 'the session\'s own stream and 9 more fill the 10 places');
+    // The pages go away (a tab closed drops its connection as an abort does):
+    // once the server has seen it, the places are free again. It used to
+    // see it only when a heartbeat 15 s later failed, up to 30 s after.
+    for (const s of streams.splice(0)) s.abort();
+    session.close();
+    const began = Date.now();
+    let free = 0;
+    while (free < 10) {
+      assert.ok(Date.now() - began < 8000, `only ${free} of 10 stream places were free again after 8 s`);
+      if ((await open()) === 200) ++free;
+      else await new Promise((resolve) => setTimeout(resolve, 100));
+    }
+    t.diagnostic(`all 10 places free again ${Date.now() - began} ms after the pages went away`);
+    for (const s of streams) s.abort();
+  });
+});
+
 test('the page carries its options, and names its script and style by version, which the browser may keep', async () => {
   await withServer([], async (server, client) => {
     const page = await client.request('GET', '/');
@@ -165,10 +223,25 @@ test('the page carries its options, and names its script and style by version, w
       assert.equal(kept.status, 200);
       assert.equal(kept.headers.get('cache-control'), 'max-age=31536000, immutable');
       assert.equal(kept.body, fs.readFileSync(path.join(sourceDir, 'data/web', file), 'utf8'));
+      // Never compressed, though the browser offers brotli: httplib's
+      // brotli, at its slowest quality on every request, was most of a
+      // first page load's time.
+      const asBrowser = await client.request('GET', `/${file}?v=${named[1]}`, undefined,
+                                             { 'Accept-Encoding': 'gzip, deflate, br, zstd' });
+      assert.equal(asBrowser.headers.get('content-encoding'), null, file);
+      assert.equal(asBrowser.body, kept.body);
       // Any other version, or none, is checked each time.
       assert.equal((await client.request('GET', `/${file}?v=0000000000000000`)).headers.get('cache-control'), 'no-cache');
       assert.equal((await client.request('GET', `/${file}`)).headers.get('cache-control'), 'no-cache');
     }
+    const browser = { 'Accept-Encoding': 'gzip, deflate, br, zstd' };
+    for (const route of ['/', '/api/options', '/nothing-here', '/api/sessions/' + '0'.repeat(32)]) {
+      const answer = await client.request('GET', route, undefined, browser);
+      assert.equal(answer.headers.get('content-encoding'), null, route);
+    }
+    assert.equal((await client.request('GET', '/nothing-here', undefined, browser)).body.error, 'there is nothing here');
+    assert.match((await client.request('GET', '/api/sessions/' + '0'.repeat(32), undefined, browser)).body.error,
+                 /^there is no such session/);
   });
 });
 
