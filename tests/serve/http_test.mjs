@@ -381,6 +381,30 @@ test('nothing a client sends names a path', async () => {
   });
 });
 
+test("the page's agent is teach's: the same replies get the same sentences and the same counts", async () => {
+  // With an undo on the way (the page's Undo button sends "undo"), and the reply it took back said again.
+  const kitchen = replies(sourceDir, 'kitchen_replies.txt');
+  const cereal = kitchen.indexOf('the cereal box goes in the pantry and shut it');
+  assert.ok(cereal > 0);
+  kitchen.splice(cereal + 1, 0, 'undo', kitchen[cereal]);
+  const scenario = path.join(sourceDir, 'data/scenarios/tidy-kitchen.yaml');
+  const teach = spawnSync(binary, ['teach', '--scenario', scenario], { input: kitchen.join('\n') + '\n', encoding: 'utf8', timeout: 60000 });
+  assert.equal(teach.status, 0, teach.stderr);
+  const atTerminal = teach.stdout.split('\n').filter((l) => l.startsWith('Agent: ')).map((l) => l.slice('Agent: '.length));
+  const summary = /The task is learned: 35 of 35 goal assertions hold, after (\d+) instructions\./.exec(teach.stdout);
+  assert.ok(summary, teach.stdout.slice(-400));
+  await withServer([], async (server, client) => {
+    const session = await client.start('tidy-kitchen');
+    const end = await session.teach(kitchen);
+    session.close();
+    assert.equal(end.type, 'end');
+    assert.equal(end.finished, true);
+    assert.equal(end.instructions, Number(summary[1]));
+    const onThePage = session.events.filter((e) => e.type === 'question' || e.type === 'say').map((e) => e.text);
+    assert.deepEqual(onThePage, atTerminal);
+  });
+});
+
 test('two sessions on one store, teaching at once, lose nothing', async () => {
   const store = path.join(scratch, 'shared.sqlite');
   const logs = path.join(scratch, 'study-logs');
