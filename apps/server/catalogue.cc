@@ -23,14 +23,39 @@ const Named* find(const std::vector<Named>& entries, std::string_view name) {
   return it == entries.end() ? nullptr : &*it;
 }
 
-// The `domain:` of uploaded YAML, with its line (1-based), if the text is a
-// mapping that has one; yaml-cpp's exceptions stay here. Text that does not
-// parse is left to the scenario reader, which says where.
-std::optional<std::pair<std::string, int>> domain_entry(std::string_view yaml) {
+// What an uploaded world's YAML says before it is read as a scenario: its
+// `domain:` with its line (1-based), and how many places and things it
+// would make (each object entry's `count`, or 1), with the line of
+// `objects:`. Counted first, so that a few lines asking for millions of
+// things are refused before they are made. yaml-cpp's exceptions stay
+// here; text that does not parse is left to the scenario reader, which
+// says where.
+struct Outline {
+  std::optional<std::pair<std::string, int>> domain;
+  std::size_t places = 0;
+  std::size_t things = 0;
+  int objects_line = 1;
+};
+
+std::optional<Outline> outline(std::string_view yaml) {
   try {
     YAML::Node root = YAML::Load(std::string(yaml));
-    if (!root.IsMap() || !root["domain"] || !root["domain"].IsScalar()) return std::nullopt;
-    return std::make_pair(root["domain"].Scalar(), root["domain"].Mark().line + 1);
+    if (!root.IsMap()) return std::nullopt;
+    Outline out;
+    if (root["domain"] && root["domain"].IsScalar())
+      out.domain = std::make_pair(root["domain"].Scalar(), root["domain"].Mark().line + 1);
+    if (root["places"] && root["places"].IsSequence()) out.places = root["places"].size();
+    for (const auto& entry : root)
+      if (entry.first.IsScalar() && entry.first.Scalar() == "objects") out.objects_line = entry.first.Mark().line + 1;
+    if (const YAML::Node objects = root["objects"]; objects && objects.IsSequence()) {
+      for (const YAML::Node& o : objects) {
+        long long count = 1;
+        if (o.IsMap() && o["count"] && o["count"].IsScalar() && YAML::convert<long long>::decode(o["count"], count))
+          count = std::max(1LL, count);
+        out.things += static_cast<std::size_t>(count);
+      }
+    }
+    return out;
   } catch (const std::exception&) {
     return std::nullopt;
   }
@@ -106,19 +131,27 @@ Result<std::optional<std::string>> Catalogue::store(std::string_view name) const
   return std::optional<std::string>(entry->path);
 }
 
-Result<Scenario> Catalogue::upload(std::string_view yaml, std::string_view file_name, std::size_t max_bytes) const {
+Result<Scenario> Catalogue::upload(std::string_view yaml, std::string_view file_name, const UploadLimits& limits) const {
   std::string shown = std::filesystem::path(std::string(file_name)).filename().string();
   if (shown.empty()) shown = "world.yaml";
-  if (yaml.size() > max_bytes)
-    return make_error(ErrorCode::kInvalidInput, shown + ": the world is larger than " + describe_size(max_bytes) +
+  if (yaml.size() > limits.max_bytes)
+    return make_error(ErrorCode::kInvalidInput, shown + ": the world is larger than " + describe_size(limits.max_bytes) +
                                                     ", the limit for an uploaded world");
   std::vector<std::string> allowed;
   for (const std::string& d : domains_) allowed.push_back("../domains/" + d + ".pddl");
-  if (auto domain = domain_entry(yaml);
-      domain && std::find(allowed.begin(), allowed.end(), domain->first) == allowed.end())
+  const std::optional<Outline> said = outline(yaml);
+  if (said && said->domain && std::find(allowed.begin(), allowed.end(), said->domain->first) == allowed.end())
     return make_error(ErrorCode::kInvalidInput,
-                      shown + ":" + std::to_string(domain->second) + ": an uploaded world must use one of the server's domains: " +
-                          join(allowed, " or ") + ", not " + apprentice::quoted(domain->first));
+                      shown + ":" + std::to_string(said->domain->second) + ": an uploaded world must use one of the server's domains: " +
+                          join(allowed, " or ") + ", not " + apprentice::quoted(said->domain->first));
+  if (said && said->places > limits.max_places)
+    return make_error(ErrorCode::kInvalidInput, shown + ": the world has " + std::to_string(said->places) +
+                                                    " places; an uploaded world may have at most " +
+                                                    std::to_string(limits.max_places));
+  if (said && said->things > limits.max_things)
+    return make_error(ErrorCode::kInvalidInput, shown + ":" + std::to_string(said->objects_line) + ": the world has " +
+                                                    std::to_string(said->things) + " things; an uploaded world may have at most " +
+                                                    std::to_string(limits.max_things));
   // Read as if it were beside the shipped worlds, so that ../domains/
   // resolves to the server's own; messages name the file as uploaded.
   const std::filesystem::path source = scenarios_dir_ / shown;

@@ -5,6 +5,7 @@
 // uploaded world may use only the server's own domains.
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -26,6 +27,14 @@ struct Named {
 // stores/kitchen.sqlite), a PostgreSQL location's database ("fleet" for
 // postgresql://robot@db.example:5432/fleet?sslmode=require).
 std::string store_name(std::string_view location);
+
+// What an uploaded world may be: its YAML's size, and the places and
+// things it makes (a few lines with `count:` could ask for millions).
+struct UploadLimits {
+  std::size_t max_bytes = std::size_t{256} << 10;
+  std::size_t max_places = 100;
+  std::size_t max_things = 1000;
+};
 
 class Catalogue {
  public:
@@ -50,10 +59,12 @@ class Catalogue {
   Result<std::optional<std::string>> store(std::string_view name) const;
   // An uploaded world (YAML text from the page, named `file_name` in
   // messages), checked as any scenario is: errors say the line and column
-  // (kInvalidInput). It must be at most `max_bytes`, and its `domain` must
-  // be one the server ships (../domains/NAME.pddl, as the shipped worlds
-  // say), so that nothing in it names a file of the server's.
-  Result<Scenario> upload(std::string_view yaml, std::string_view file_name, std::size_t max_bytes) const;
+  // (kInvalidInput). It must be within `limits` (its size is checked
+  // first, and its places and things before any is made), and its
+  // `domain` must be one the server ships (../domains/NAME.pddl, as the
+  // shipped worlds say), so that nothing in it names a file of the
+  // server's.
+  Result<Scenario> upload(std::string_view yaml, std::string_view file_name, const UploadLimits& limits) const;
 
  private:
   std::vector<Named> worlds_;

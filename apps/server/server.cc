@@ -111,7 +111,8 @@ std::string WebServer::options_json() const {
                                   {"default_store", catalogue_.default_store()},
                                   {"condition", options_.agent.condition},
                                   {"limits",
-                                   {{"max_body_bytes", l.max_body_bytes}, {"max_world_bytes", l.max_world_bytes},
+                                   {{"max_body_bytes", l.max_body_bytes}, {"max_world_bytes", l.world.max_bytes},
+                                    {"max_world_places", l.world.max_places}, {"max_world_things", l.world.max_things},
                                     {"max_reply_chars", l.max_reply_chars}, {"max_sessions", l.max_sessions},
                                     {"idle_seconds", l.idle.count()}}}});
 }
@@ -169,7 +170,7 @@ void WebServer::create_session(const httplib::Request& req, httplib::Response& r
       body["upload"]["yaml"].is_string()) {
     const nlohmann::json& upload = body["upload"];
     std::string file_name = upload.contains("name") && upload["name"].is_string() ? upload["name"].get<std::string>() : "";
-    scenario = catalogue_.upload(upload["yaml"].get<std::string>(), file_name, options_.limits.max_world_bytes);
+    scenario = catalogue_.upload(upload["yaml"].get<std::string>(), file_name, options_.limits.world);
     if (scenario) world_name = scenario->name + " (uploaded)";
   } else if (body.contains("world") && body["world"].is_string()) {
     world_name = body["world"].get<std::string>();

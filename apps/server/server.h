@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "catalogue.h"
 #include "face/apprentice.h"
 #include "knowledge/store_access.h"
 #include "util/result.h"
@@ -28,7 +29,7 @@ namespace apprentice::serve {
 
 struct ServeLimits {
   std::size_t max_body_bytes = std::size_t{320} << 10;   // any request's body
-  std::size_t max_world_bytes = std::size_t{256} << 10;  // an uploaded world
+  UploadLimits world;                                    // an uploaded world: bytes, places, things
   std::size_t max_reply_chars = 2000;                    // one reply, in bytes of UTF-8
   int max_sessions = 32;                                 // teaching at once
   std::chrono::seconds idle{30 * 60};                    // a session with no request for this long ends

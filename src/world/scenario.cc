@@ -75,24 +75,30 @@ namespace {
 
 // yaml-cpp keeps every entry of a mapping but answers a lookup with the
 // first, so a key given twice would silently lose its second value. Every
-// mapping of the tree is checked before anything is read.
-std::optional<std::pair<YAML::Mark, std::string>> find_duplicate_key(const YAML::Node& node) {
+// mapping of the tree is checked before anything is read, each once: an
+// alias (*name) is the very node its anchor (&name) made, so a list of
+// aliases to lists of aliases, a few hundred bytes, would otherwise be
+// walked billions of times. `seen`: the text positions of the lists and
+// mappings already checked (each starts at a position of its own).
+std::optional<std::pair<YAML::Mark, std::string>> find_duplicate_key(const YAML::Node& node, std::set<int>& seen) {
+  if (!node.IsSequence() && !node.IsMap()) return std::nullopt;
+  if (node.Mark().pos >= 0 && !seen.insert(node.Mark().pos).second) return std::nullopt;
   if (node.IsSequence()) {
     for (const YAML::Node& child : node)
-      if (auto found = find_duplicate_key(child)) return found;
-  } else if (node.IsMap()) {
-    std::map<std::string, YAML::Mark> seen;
-    for (const auto& entry : node) {
-      std::string key = entry.first.IsScalar() ? entry.first.Scalar() : "";
-      if (entry.first.IsScalar()) {
-        auto [where, fresh] = seen.emplace(key, entry.first.Mark());
-        if (!fresh)
-          return std::pair{entry.first.Mark(), "the key '" + key + "' is given twice in one mapping (first at line " +
-                                                   std::to_string(where->second.line + 1) + ", column " +
-                                                   std::to_string(where->second.column + 1) + ")"};
-      }
-      if (auto found = find_duplicate_key(entry.second)) return found;
+      if (auto found = find_duplicate_key(child, seen)) return found;
+    return std::nullopt;
+  }
+  std::map<std::string, YAML::Mark> keys;
+  for (const auto& entry : node) {
+    std::string key = entry.first.IsScalar() ? entry.first.Scalar() : "";
+    if (entry.first.IsScalar()) {
+      auto [where, fresh] = keys.emplace(key, entry.first.Mark());
+      if (!fresh)
+        return std::pair{entry.first.Mark(), "the key '" + key + "' is given twice in one mapping (first at line " +
+                                                 std::to_string(where->second.line + 1) + ", column " +
+                                                 std::to_string(where->second.column + 1) + ")"};
     }
+    if (auto found = find_duplicate_key(entry.second, seen)) return found;
   }
   return std::nullopt;
 }
@@ -106,7 +112,8 @@ class ScenarioBuilder {
 
   Result<Scenario> build(const YAML::Node& root) {
     if (!root.IsMap()) return fail(root, "expected a mapping with name, domain, places, objects, task and intent");
-    if (auto duplicate = find_duplicate_key(root)) return fail_at(duplicate->first, duplicate->second);
+    std::set<int> checked;
+    if (auto duplicate = find_duplicate_key(root, checked)) return fail_at(duplicate->first, duplicate->second);
     if (auto s = check_keys(root, {"name", "domain", "location", "reference", "places", "objects", "facts", "task",
                                    "intent"});
         !s)

@@ -126,6 +126,35 @@ test('limits: an oversized body, an oversized world, a reply too long, too many 
   });
 });
 
+test('limits: an uploaded world of a few lines that asks for millions of things, or aliases of aliases, is refused at once', async () => {
+  await withServer([], async (server, client) => {
+    const head = 'name: many\ndomain: ../domains/kitchen.pddl\nplaces:\n  - {category: floor, kind: surface}\n' +
+                 '  - {category: bin, kind: receptacle}\n';
+    const entries = Array.from({ length: 30 }, () => '  - {category: block, at: floor1, count: 100000}');
+    const tail = '\ntask:\n  name: tidy\n  subtasks:\n    - {verb: clear, place: floor1}\n' +
+                 'intent:\n  - {subtask: clear, category: block, place: bin1}\n';
+    const many = await client.request('POST', '/api/sessions', { upload: { name: 'many.yaml', yaml: head + 'objects:\n' + entries.join('\n') + tail } });
+    assert.equal(many.status, 400);
+    assert.equal(many.body.error, 'many.yaml:6: the world has 3000000 things; an uploaded world may have at most 1000');
+    const places = Array.from({ length: 101 }, (_, i) => `  - {category: shelf, kind: surface}`).join('\n');
+    const wide = await client.request('POST', '/api/sessions', {
+      upload: { name: 'wide.yaml', yaml: 'name: wide\ndomain: ../domains/kitchen.pddl\nplaces:\n' + places + '\nobjects: []\n' } });
+    assert.equal(wide.status, 400);
+    assert.equal(wide.body.error, 'wide.yaml: the world has 101 places; an uploaded world may have at most 100');
+    // Twelve levels of nine aliases: 9^12 lists if each alias were walked.
+    let bomb = 'a0: &a0 [x, x, x, x, x, x, x, x, x]\n';
+    for (let level = 1; level <= 12; ++level) bomb += `a${level}: &a${level} [${Array(9).fill('*a' + (level - 1)).join(', ')}]\n`;
+    const aliases = await client.request('POST', '/api/sessions', { upload: { name: 'aliases.yaml', yaml: bomb + head } });
+    assert.equal(aliases.status, 400);
+    assert.match(aliases.body.error, /^aliases\.yaml:1:1: unknown key 'a0'/);
+    const limits = (await client.request('GET', '/api/options')).body.limits;
+    assert.equal(limits.max_world_things, 1000);
+    assert.equal(limits.max_world_places, 100);
+    // The server goes on: a session starts.
+    (await client.start('tidy-kitchen')).close();
+  });
+});
+
 test('limits: event streams open at once, twice the sessions plus 8', async () => {
   await withServer(['--max-sessions', '1'], async (server, client) => {
     const session = await client.start('tidy-kitchen');
