@@ -313,6 +313,7 @@ class TaskLearningAgent::Session {
   std::deque<std::string> queued_steps_;
   // The teacher's own questions and one-off actions.
   void answer_whats_left();
+  std::string whats_left_of_task() const;
   void answer_where(const language::Command& command);
   void answer_why();
   void do_now(const std::vector<Action>& actions);
