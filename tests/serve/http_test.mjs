@@ -420,7 +420,7 @@ test("the page's agent is teach's: the same replies get the same sentences and t
   const teach = spawnSync(binary, ['teach', '--scenario', scenario], { input: kitchen.join('\n') + '\n', encoding: 'utf8', timeout: 60000 });
   assert.equal(teach.status, 0, teach.stderr);
   const atTerminal = teach.stdout.split('\n').filter((l) => l.startsWith('Agent: ')).map((l) => l.slice('Agent: '.length));
-  const summary = /The task is learned: 35 of 35 goal assertions hold, after (\d+) instructions\./.exec(teach.stdout);
+  const summary = /The task is learned: 35 of 35 parts of the goal are met, after (\d+) instructions\./.exec(teach.stdout);
   assert.ok(summary, teach.stdout.slice(-400));
   await withServer([], async (server, client) => {
     const session = await client.start('tidy-kitchen');
