@@ -218,8 +218,11 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
   DecisionPolicy policy = agent_.options_.decision;
   // The LLM placed the thing by the person's own rule: our reading of the
   // same words disagreeing is no dispute (the LLM reads them better).
-  if (!rules_said_.empty() && !llm_preferences_.placed_by().empty())
+  // It is also no independent expert then: our reading counts half.
+  if (!rules_said_.empty() && !llm_preferences_.placed_by().empty()) {
     policy.not_disputing.push_back(ProposalSource::kPersonRule);
+    policy.weights.try_emplace(ProposalSource::kPersonRule, 0.5);
+  }
   bool together_refused = false;
   for (bool first = true;; first = false) {
     Decision decision = decide(proposals, places, policy);
