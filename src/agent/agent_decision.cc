@@ -39,6 +39,13 @@ std::optional<ObjectId> placed_at(const World& world, const Goal& goal, ObjectId
   return std::nullopt;
 }
 
+// The fleet's yes/no: "In most households I know of (3 of 4), the ketchup
+// on the table goes in the fridge, and the fridge ends closed. Here too?"
+std::string fleet_question(const World& world, ObjectId object, const Goal& goal, const DestinationProposal& fleet) {
+  return language::capitalize(fleet_phrase(fleet)) + ", " +
+         language::goal_outcome(world, object, goal, language::spoken_name_and_location(world, object)) + ". Here too?";
+}
+
 bool is_analogy(const DestinationProposal& p) { return p.reason.starts_with("analogy: "); }
 
 std::string percent(double confidence) {
@@ -111,6 +118,10 @@ std::vector<DestinationProposal> TaskLearningAgent::Session::proposals_for(Objec
   const GoalKey key = goal_key(object);
   std::vector<DestinationProposal> proposals = proposer_.propose(world(), key, object, said_rules_.all());
   if (auto analogy = transfer_.analogy(world(), key, object)) proposals.push_back(analogy_proposal(*analogy));
+  // What other households of the store chose for this kind.
+  if (agent_.options_.fleet_prior)
+    for (DestinationProposal& p : agent_.knowledge_.fleet.propose(key))
+      if (goal_at(world(), p.destination, object)) proposals.push_back(std::move(p));
   if (agent_.options_.condition.llm)
     if (auto llm = llm_placement_proposal(object)) proposals.push_back(*llm);
   // What the teacher refused for this kind is no longer proposed.
@@ -167,9 +178,11 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
                         ", but I am not sure enough (confidence " + percent(decision.confidence) + ")";
         return std::optional<Goal>();
       }
-      std::string asked = "Does " + language::spoken_name_and_location(w, object) + " go " +
-                          (evidence.empty() ? "here" : evidence) + ": " + language::goal_outcome(w, object, *goal, "it") +
-                          "?";
+      std::string asked =
+          decision.support.front().source == ProposalSource::kFleet
+              ? fleet_question(w, object, *goal, decision.support.front())
+              : "Does " + language::spoken_name_and_location(w, object) + " go " + (evidence.empty() ? "here" : evidence) +
+                    ": " + language::goal_outcome(w, object, *goal, "it") + "?";
       auto answer = answer_to_proposal(question(QuestionKind::kConfirmGoal, asked, object, goal), object);
       if (!answer) return tl::unexpected(answer.error());
       if (answer->instead) {

@@ -52,6 +52,11 @@ void TaskLearningAgent::Session::begin_lesson(const std::string& reply) {
 Status TaskLearningAgent::Session::store_goal(const GoalKnowledge& goal, std::optional<GoalKnowledge> previous) {
   if (!agent_.store_) return {};
   if (auto s = agent_.store_->save_goal(goal); !s) return s;
+  // Durable from here (the fleet's kill test reads these lines: a goal
+  // logged saved must be in the store, whatever befalls the process).
+  std::string saved = format_goal_knowledge(goal);
+  std::replace(saved.begin(), saved.end(), '\n', ' ');
+  spdlog::debug("goal saved: {}", saved);
   if (!lessons_.empty()) {
     StoreWrite write;
     write.kind = StoreWrite::Kind::kGoal;
