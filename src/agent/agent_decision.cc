@@ -68,6 +68,7 @@ GoalSource goal_source_of(const Decision& decision) {
     case ProposalSource::kInducedRule: return GoalSource::kRule;
     case ProposalSource::kPersonRule: return GoalSource::kPersonRule;
     case ProposalSource::kLlmPlacement:
+    case ProposalSource::kLlmExamples:
     case ProposalSource::kLlmRule: return GoalSource::kLlm;
     case ProposalSource::kFleet: return GoalSource::kFleet;
   }
@@ -123,7 +124,7 @@ std::vector<DestinationProposal> TaskLearningAgent::Session::proposals_for(Objec
     for (DestinationProposal& p : agent_.knowledge_.fleet.propose(key))
       if (goal_at(world(), p.destination, object)) proposals.push_back(std::move(p));
   if (agent_.options_.condition.llm)
-    if (auto llm = llm_placement_proposal(object)) proposals.push_back(*llm);
+    for (DestinationProposal& llm : llm_placement_proposals(object)) proposals.push_back(std::move(llm));
   // What the teacher refused for this kind is no longer proposed.
   for (const auto& [kind, refused] : refused_)
     if (kind == key.category) proposals = without_destination(proposals, refused);

@@ -5,6 +5,7 @@
 // (it asks which), and a reply it cannot use (it says why, with replies
 // that would work, and asks again).
 #include <algorithm>
+#include <map>
 
 #include "agent/class_rule_knowledge.h"
 #include "agent/goal_proposals.h"
@@ -338,8 +339,8 @@ void TaskLearningAgent::Session::status(const Question& asked) {
 void TaskLearningAgent::Session::answer_whats_left() {
   const World& w = world();
   if (!progress_.current) {
-    say(progress_.task.name.empty() ? "I have not been given a task yet." : "I am not working on a part of the task now.",
-        Voice::kResponse);
+    if (progress_.task.name.empty()) say("I have not been given a task yet.", Voice::kResponse);
+    else say(whats_left_of_task(), Voice::kResponse);
     return;
   }
   std::vector<ObjectId> left;
@@ -348,6 +349,36 @@ void TaskLearningAgent::Session::answer_whats_left() {
   std::string where = current().relation + " " + language::spoken_places(w, current().places);
   if (left.empty()) say("Nothing else is left " + where + ".", Voice::kResponse);
   else say("Still " + where + ": " + language::spoken_things(w, left) + ".", Voice::kResponse);
+}
+
+// Between parts of the task: the parts done, and the things not dealt with
+// yet where they are ("Not dealt with yet: on the desk, the mug and the
+// pen; in the bag, the apple."). The agent cannot know which of them the
+// task means, so it says all of them and leaves the choice to the teacher.
+std::string TaskLearningAgent::Session::whats_left_of_task() const {
+  const World& w = world();
+  std::vector<std::string> parts;
+  for (const LearnedSubtask& s : progress_.task.subtasks)
+    parts.push_back(s.verb + " what is " + s.relation + " the " + language::spoken_category(s.place_category));
+  std::string said = parts.empty() ? "No part of the task is done yet."
+                                   : "So far I have learned to " + language::list_phrase(parts) + ".";
+  std::vector<ObjectId> places;
+  std::map<ObjectId, std::vector<ObjectId>> at;
+  for (ObjectId o : w.universe->of_kind(ObjectKind::kItem)) {
+    if (progress_.evaluated.count(o)) continue;
+    std::optional<ObjectId> place = language::place_of(w, o);
+    if (!place) continue;
+    if (!at.count(*place)) places.push_back(*place);
+    at[*place].push_back(o);
+  }
+  if (places.empty()) return said + " Every thing here has been dealt with; say \"that's all\" if the task is done.";
+  std::vector<std::string> groups;
+  for (ObjectId place : places)
+    groups.push_back(std::string(language::relation_word(w, place)) + " " + language::spoken_name(w, place) + ", " +
+                     language::spoken_things(w, at[place]));
+  std::string list;
+  for (std::size_t i = 0; i < groups.size(); ++i) list += (i == 0 ? "" : "; ") + groups[i];
+  return said + " Not dealt with yet: " + list + ". Tell me what to do next, or say \"that's all\".";
 }
 
 void TaskLearningAgent::Session::answer_where(const language::Command& command) {

@@ -24,6 +24,9 @@ DecisionPolicy default_decision_policy() {
   // same WordNet and vectors: not independent experts.
   policy.weights[ProposalSource::kSimilarity] = 0.45;
   policy.weights[ProposalSource::kInducedRule] = 0.45;
+  // The LLM's summary as our reader applies it repeats what the LLM's own
+  // placement by that summary says, less well.
+  policy.weights[ProposalSource::kLlmRule] = 0.6;
   return policy;
 }
 
@@ -152,7 +155,8 @@ std::string evidence_phrase(const World& world, std::span<const DestinationPropo
   for (const DestinationProposal& p : support) {
     if (p.source == ProposalSource::kPersonRule && p.rule && !p.rule->said.empty()) said.push_back(p.rule->said);
     else if (p.source == ProposalSource::kFleet) fleet = fleet != nullptr ? fleet : &p;
-    else if (p.source == ProposalSource::kLlmPlacement || p.source == ProposalSource::kLlmRule) llm = true;
+    else if (p.source == ProposalSource::kLlmPlacement || p.source == ProposalSource::kLlmExamples ||
+             p.source == ProposalSource::kLlmRule) llm = true;
     else
       for (const std::string& kind : p.evidence)
         if (like.size() < 2 && std::find(like.begin(), like.end(), kind) == like.end()) like.push_back(kind);

@@ -84,6 +84,23 @@ void LlmPreferences::consult(LlmAdvisor& llm, const World& world, const std::vec
   placed_by_ = person_rule.empty() ? summary_ : person_rule;
   for (const auto& [thing, place] : llm.place(receptacles, placed_by_, examples, names))
     for (ObjectId id : named[thing]) placements_[id] = place_named.at(place);
+  if (!person_rule.empty() || summary_.empty()) return;
+  // The summary's own check, and a second opinion from the examples alone.
+  std::vector<std::string> taught_things;
+  for (const llm::ThingPlace& example : examples) taught_things.push_back(example.first);
+  std::vector<llm::ThingPlace> back = llm.place(receptacles, summary_, {}, taught_things);
+  if (!back.empty())
+    summary_keeps_examples_ = std::all_of(examples.begin(), examples.end(), [&](const llm::ThingPlace& example) {
+      return std::find(back.begin(), back.end(), example) != back.end();
+    });
+  for (const auto& [thing, place] : llm.place(receptacles, "", examples, names))
+    for (ObjectId id : named[thing]) by_examples_[id] = place_named.at(place);
+}
+
+std::optional<ObjectId> LlmPreferences::place_by_examples(ObjectId thing) const {
+  auto it = by_examples_.find(thing);
+  if (it == by_examples_.end()) return std::nullopt;
+  return it->second;
 }
 
 std::optional<ObjectId> LlmPreferences::place_for(ObjectId thing) const {

@@ -38,6 +38,14 @@ class LlmPreferences {
 
   // The place the LLM gave `thing`, if it placed it.
   std::optional<ObjectId> place_for(ObjectId thing) const;
+  // Where the LLM put `thing` from the examples alone, asked beside the
+  // placement by its summary (TidyBot's "examples only"); a second opinion
+  // that does not go through the summary's words.
+  std::optional<ObjectId> place_by_examples(ObjectId thing) const;
+  // Whether the LLM's summary, given back to it, puts every example where
+  // it was taught; nullopt when no summary was checked. A summary that
+  // loses an example is a lossy account of the person.
+  std::optional<bool> summary_keeps_examples() const { return summary_keeps_examples_; }
   // Its summary of the examples ("" if none was asked or it gave none), and
   // that summary as the rule reader reads it.
   const std::string& summary() const { return summary_; }
@@ -52,6 +60,8 @@ class LlmPreferences {
   std::optional<language::RuleReading> summary_rule_;
   std::string placed_by_;
   std::map<ObjectId, ObjectId> placements_;
+  std::map<ObjectId, ObjectId> by_examples_;
+  std::optional<bool> summary_keeps_examples_;
 };
 
 // A place as a person names it, without an article: "left storage box".

@@ -202,10 +202,11 @@ class TaskLearningAgent::Session {
   // summary's rules join rules_said_ (RuleSource::kLlm). Nothing without an
   // LLM that has the preference prompts.
   void consult_llm(ObjectId object);
-  // The LLM's placement of `object` as a proposal for the decision
-  // (ProposalSource::kLlmPlacement, kLlmPlacementConfidence, with the rule
-  // it placed by as its reason); nullopt when it did not place it.
-  std::optional<DestinationProposal> llm_placement_proposal(ObjectId object) const;
+  // The LLM's placements of `object` as proposals for the decision: by its
+  // summary or the person's rule (ProposalSource::kLlmPlacement, surer when
+  // its summary puts the examples back where they were taught), and by the
+  // examples alone (kLlmExamples); none when it did not place it.
+  std::vector<DestinationProposal> llm_placement_proposals(ObjectId object) const;
   // Where rules said in this session apply: the task and the subtask under
   // way, and the kind of place cleared; empty fields before the task.
   GoalScope said_scope() const;
@@ -312,6 +313,7 @@ class TaskLearningAgent::Session {
   std::deque<std::string> queued_steps_;
   // The teacher's own questions and one-off actions.
   void answer_whats_left();
+  std::string whats_left_of_task() const;
   void answer_where(const language::Command& command);
   void answer_why();
   void do_now(const std::vector<Action>& actions);

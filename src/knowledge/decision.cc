@@ -50,6 +50,7 @@ std::string_view proposal_source_name(ProposalSource source) {
     case ProposalSource::kInducedRule: return "induced rule";
     case ProposalSource::kPersonRule: return "person's rule";
     case ProposalSource::kLlmPlacement: return "llm placement";
+    case ProposalSource::kLlmExamples: return "llm by examples";
     case ProposalSource::kLlmRule: return "llm summary";
     case ProposalSource::kFleet: return "fleet";
   }

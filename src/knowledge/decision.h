@@ -34,12 +34,13 @@ enum class ProposalSource {
   kAnalogy,       // WordNet's nearest kind learned before (agent/transfer.h)
   kInducedRule,   // a class rule induced from the examples
   kPersonRule,    // a class rule the person said
-  kLlmPlacement,  // the LLM placed the thing
+  kLlmPlacement,  // the LLM placed the thing (by its summary, or by the person's rule)
+  kLlmExamples,   // the LLM placed the thing by the examples alone, without a summary
   kLlmRule,       // a class rule read from the LLM's summary
   kFleet,         // other robots' knowledge
 };
 // "memory", "similarity", "analogy", "induced rule", "person's rule", "llm placement",
-// "llm summary", "fleet".
+// "llm by examples", "llm summary", "fleet".
 std::string_view proposal_source_name(ProposalSource source);
 // The source a class rule's proposals come from: induced, the person's, the
 // LLM's summary, the fleet's.

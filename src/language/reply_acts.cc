@@ -16,6 +16,7 @@
 
 #include "language/generation.h"
 #include "language/narration.h"
+#include "language/parser.h"
 #include "language/reply_reading.h"
 #include "language/utterance.h"
 #include "util/text.h"
@@ -139,6 +140,11 @@ std::optional<Command> question(const Grounder& grounder, const World& world, co
     if (const auto* set = std::get_if<CandidateSet>(&found)) named = set->objects;
     return Command{Command::Kind::kWhere, phrase, named, {}};
   }
+  // "what have we done so far?", "how far are we?": where the teaching is.
+  if (is_one_of(first, {"what", "how", "whats"}) &&
+      (has(words, {"so", "far"}) || has(words, {"how", "far"}) || has(words, {"have", "we", "done"}) ||
+       has(words, {"have", "you", "done"}) || has(words, {"did", "we", "do"})))
+    return Command{Command::Kind::kStatus, "", {}, {}};
   bool asks = is_one_of(first, {"what", "how", "is", "are", "anything", "any", "whats", "which"});
   bool left = has(words, {"left"}) || has(words, {"remaining"}) || has(words, {"still"}) ||
               has(words, {"else"}) || has(words, {"how", "many"}) || has(words, {"how", "much"}) ||
@@ -333,6 +339,12 @@ Reply read_answer(const Grounder& grounder, const World& world, const ReplyConte
     auto at = std::find(words.begin(), words.end(), word);
     if (at == words.end() || (grounder.lexicon().knows(word) && !is_interjection(word) && !is_marker(word))) break;
     if (!slip_of(world, word).empty()) break;  // a slip of a name here: the meaning hangs on it
+    // A noun after a determiner ("by the thingamajig", "in the cubby") is
+    // what the reply is about: the meaning hangs on it.
+    if (at - words.begin() >= 2 && is_determiner(*(at - 1)) &&
+        is_one_of(*(at - 2), {"in", "on", "into", "onto", "by", "near", "beside", "behind", "under", "next", "to", "at",
+                              "with", "inside", "above", "below", "from"}))
+      break;
     words.erase(at);
     skipped.push_back(word);
     text = quoted_words(words);
@@ -393,6 +405,20 @@ std::vector<Words> step_parts(std::string_view text) {
   return parts;
 }
 
+// "counter next", "the folding table": a place of the world said with no
+// verb and nothing said of it ("the table's clear", "the bag still has
+// stuff in it" say something).
+bool names_a_place_alone(const Grounder& grounder, const World& world, const Words& part) {
+  ReferenceContext context{world, grounder.lexicon(), std::nullopt};
+  bool place = false;
+  for (const std::string& w : part) {
+    if (is_copula(w) || is_one_of(w, {"has", "have", "still", "more", "there", "it", "that", "this"})) return false;
+    if (is_determiner(w)) continue;
+    if (std::holds_alternative<CandidateSet>(candidates_for(NounPhrase{"", {w}}, Role::kPlace, context))) place = true;
+  }
+  return place;
+}
+
 // The verb a part begins with, as a subtask's reading took it.
 bool starts_with_verb(const Words& part, const std::string& verb) {
   Words v = split_words(verb);
@@ -438,6 +464,15 @@ std::optional<std::pair<Reply, std::vector<std::string>>> several_steps(const Gr
     }
     const bool step = std::holds_alternative<SubtaskNamed>(reply) || std::holds_alternative<LoopNamed>(reply) ||
                       std::holds_alternative<Finished>(reply) || std::holds_alternative<Proceed>(reply);
+    // "counter next, then we're done" with no verb known for "counter
+    // next": acting on the ending alone would drop a part of the task, so
+    // the part not understood is asked back.
+    if (!step && !usable(reply) && names_a_place_alone(grounder, world, part))
+      for (std::size_t j = 0; j < parts.size(); ++j) {
+        if (j == i) continue;
+        Reply other = read_reply(grounder, world, at, quoted_words(without_interjections(parts[j])));
+        if (std::holds_alternative<Finished>(other)) return std::make_pair(reply, std::vector<std::string>{});
+      }
     if (!step) return std::nullopt;
     if (const auto* named = std::get_if<SubtaskNamed>(&reply)) verb = named->verb;
     names_a_part = names_a_part || std::holds_alternative<SubtaskNamed>(reply) || std::holds_alternative<LoopNamed>(reply);
@@ -449,6 +484,60 @@ std::optional<std::pair<Reply, std::vector<std::string>>> several_steps(const Gr
   }
   if (!names_a_part) return std::nullopt;
   return std::make_pair(*first, rest);
+}
+
+// "you left it open", "someone left the lid up": what a person did, told,
+// not what the agent should do.
+bool tells_what_someone_did(const Words& words) {
+  for (std::size_t i = 1; i < words.size(); ++i)
+    if (words[i] == "left" && is_one_of(words[i - 1], {"you", "someone", "somebody", "they", "he", "she", "we", "i",
+                                                        "kids", "who", "guest", "guests"}))
+      return true;
+  return false;
+}
+
+// A close action for `place`, grounded; nullopt when it cannot be closed.
+std::optional<Action> closing(const Grounder& grounder, const World& world, ObjectId place) {
+  ActionCommand command;
+  command.verb = ActionVerb::kClose;
+  command.object = NounPhrase{"", {world.universe->name(place)}};
+  Interpretation grounded = grounder.ground(command, world, std::nullopt);
+  if (!grounded.ok()) return std::nullopt;
+  return std::get<Action>(grounded.result);
+}
+
+// "the jeans go in the hamper and shut the washing machine door": a
+// closing of a place no thing of the goal goes to is a one-off action, not
+// part of the goal. The closings are taken out of the goal and returned.
+// The script's grammar keeps its goals as they are (its sentences say
+// exactly what the goal holds).
+std::vector<Action> other_closings(const Grounder& grounder, const World& world, std::string_view text, Reply& reply) {
+  auto* given = std::get_if<GoalGiven>(&reply);
+  if (given == nullptr || parse(text).has_value()) return {};
+  const Vocabulary& v = world.vocabulary;
+  std::vector<ObjectId> to;
+  auto collect = [&](const Goal& g) {
+    for (const Literal& l : g.literals)
+      if (l.positive && l.fact.arity == 2 && (l.fact.predicate == v.in || l.fact.predicate == v.on))
+        to.push_back(l.fact.args[1]);
+  };
+  collect(given->goal);
+  for (const Goal& g : given->others) collect(g);
+  std::vector<ObjectId> closed;
+  auto strip = [&](Goal& g) {
+    std::erase_if(g.literals, [&](const Literal& l) {
+      bool other = l.positive && l.fact.arity == 1 && l.fact.predicate == v.closed &&
+                   std::find(to.begin(), to.end(), l.fact.args[0]) == to.end();
+      if (other && std::find(closed.begin(), closed.end(), l.fact.args[0]) == closed.end()) closed.push_back(l.fact.args[0]);
+      return other;
+    });
+  };
+  strip(given->goal);
+  for (Goal& g : given->others) strip(g);
+  std::vector<Action> actions;
+  for (ObjectId place : closed)
+    if (auto a = closing(grounder, world, place)) actions.push_back(*a);
+  return actions;
 }
 
 }  // namespace
@@ -472,6 +561,8 @@ ReplyActs read_acts(const Grounder& grounder, const World& world, const ReplyCon
   std::vector<Reply> before, after;  // undos; questions and one-off actions
   std::vector<const Segment*> answer, doors;
   std::vector<std::vector<Action>> door_actions;
+  std::vector<bool> door_first;  // said before the answer
+  std::vector<Reply> first_doors;  // one-off actions said before the answer, done first
   // Corrections of a read-back are made at the next goal question.
   const bool corrects = context.asked == Asked::kGoal;
   Marker lead;
@@ -516,8 +607,13 @@ ReplyActs read_acts(const Grounder& grounder, const World& world, const ReplyCon
       after.push_back(*q);
       continue;
     }
+    if (!answer.empty() && tells_what_someone_did(s.words)) {
+      out.notes.push_back("I took " + quote(s.text) + " as a remark.");
+      continue;
+    }
     if (context.asked != Asked::kAction)
       if (auto actions = door_action(grounder, world, context, s.words)) {
+        door_first.push_back(answer.empty());
         doors.push_back(&s);
         door_actions.push_back(*actions);
         continue;
@@ -599,23 +695,42 @@ ReplyActs read_acts(const Grounder& grounder, const World& world, const ReplyCon
   std::optional<ObjectId> goes_to = destination(world, reply);
   for (std::size_t i = 0; i < doors.size(); ++i) {
     const std::vector<Action>& actions = door_actions[i];
-    bool own = goes_to && actions.size() == 1 && world.domain->actions[actions.front().schema].name != "open" &&
-               actions.front().arguments().size() == 1 && actions.front().arguments()[0] == *goes_to;
+    std::vector<Action> actions_said = door_actions[i];
+    // "close the doors", "lids on": the doors of the place the goal names.
+    if (goes_to && actions_said.size() > 1 && is_door_word(doors[i]->words.back()))
+      std::erase_if(actions_said, [&](const Action& a) { return a.arguments().empty() || a.arguments()[0] != *goes_to; });
+    if (actions_said.empty()) actions_said = actions;
+    bool own = goes_to && actions_said.size() == 1 && world.domain->actions[actions_said.front().schema].name != "open" &&
+               actions_said.front().arguments().size() == 1 && actions_said.front().arguments()[0] == *goes_to;
     if (own) {
-      Reply with = read_answer(grounder, world, at, answer_text + ", " + doors[i]->text, out.notes);
+      std::string door_text = actions_said.size() < actions.size() ? "close it" : doors[i]->text;
+      Reply with = read_answer(grounder, world, at, answer_text + ", " + door_text, out.notes);
       if (usable(with)) {
         reply = with;
-        answer_text += ", " + doors[i]->text;
+        answer_text += ", " + door_text;
         if (correcting) out.after_undo = answer_text;
         continue;
       }
     }
-    after.insert(after.begin(), Command{Command::Kind::kDo, "", {}, actions});
+    if (door_first[i]) first_doors.push_back(Command{Command::Kind::kDo, "", {}, actions});
+    else after.insert(after.begin(), Command{Command::Kind::kDo, "", {}, actions});
   }
+  if (answered) {
+    std::vector<Action> closings = other_closings(grounder, world, answer_text, reply);
+    if (!closings.empty()) after.push_back(Command{Command::Kind::kDo, "", {}, closings});
+  }
+  // "why are you asking, it's a needle": a "why" said with an answer is
+  // the teacher's remark, not a question to answer.
+  if (answered && usable(reply))
+    std::erase_if(after, [](const Reply& r) {
+      const auto* c = std::get_if<Command>(&r);
+      return c != nullptr && c->kind == Command::Kind::kWhy;
+    });
   for (Reply& r : before) out.acts.push_back(std::move(r));
+  for (Reply& r : first_doors) out.acts.push_back(std::move(r));
   // Without an answer, the undo, the question or the action stands alone;
   // with nothing at all, the whole reply's reading (why it is unusable).
-  if (answered && (usable(reply) || (before.empty() && after.empty()))) out.acts.push_back(reply);
+  if (answered && (usable(reply) || (before.empty() && after.empty() && first_doors.empty()))) out.acts.push_back(reply);
   for (Reply& r : after) out.acts.push_back(std::move(r));
   if (out.acts.empty()) out.acts.push_back(answered ? reply : whole);
   return out;

@@ -498,8 +498,32 @@ std::vector<std::string> without_fillers(std::vector<std::string> words, const R
   return out;
 }
 
+// A lid said on or off, as its state: "with the lid on", "lid down" are
+// "lid closed"; "put the lid back on" is "close the lid"; "lid off", "lid
+// up" are "lid open".
+std::vector<std::string> lid_states(std::vector<std::string> w) {
+  for (std::size_t i = 0; i < w.size(); ++i) {
+    if (!is_one_of(w[i], {"lid", "lids", "cover"})) continue;
+    std::size_t j = i + 1;
+    if (j < w.size() && w[j] == "back") ++j;
+    if (j >= w.size() || !is_one_of(w[j], {"on", "down", "off", "up"})) continue;
+    if (j + 1 < w.size() && !is_clause_break(w[j + 1]) && !is_filler(w[j + 1])) continue;
+    const bool closed = is_one_of(w[j], {"on", "down"});
+    // "put the lid (back) on": the verb said before the lid.
+    std::size_t verb = i >= 2 && is_determiner(w[i - 1]) ? i - 2 : i - 1;
+    if (i >= 1 && verb < i && is_one_of(w[verb], {"put", "pop", "stick", "snap"})) {
+      w[verb] = closed ? "close" : "open";
+      w.erase(w.begin() + static_cast<std::ptrdiff_t>(i + 1), w.begin() + static_cast<std::ptrdiff_t>(j + 1));
+    } else {
+      w.erase(w.begin() + static_cast<std::ptrdiff_t>(i + 1), w.begin() + static_cast<std::ptrdiff_t>(j + 1));
+      w.insert(w.begin() + static_cast<std::ptrdiff_t>(i + 1), closed ? "closed" : "open");
+    }
+  }
+  return w;
+}
+
 std::vector<Clause> read_clauses(const std::vector<std::string>& words, const ReplyVocabulary& vocabulary) {
-  std::vector<std::string> kept = without_fillers(words, vocabulary);
+  std::vector<std::string> kept = lid_states(without_fillers(words, vocabulary));
   std::vector<Clause> clauses;
   std::vector<std::string> current;
   auto flush = [&] {

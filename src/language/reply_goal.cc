@@ -103,8 +103,8 @@ class EventReader {
   }
 
   // A place from a phrase, remembered as the place named last.
-  std::optional<ObjectId> place(const Chunk& chunk, std::optional<Choice>& failure) {
-    Choice choice = resolver_.choose(chunk, Role::kPlace);
+  std::optional<ObjectId> place(const Chunk& chunk, std::optional<Choice>& failure, bool recent = true) {
+    Choice choice = resolver_.choose(chunk, Role::kPlace, recent);
     if (const auto* id = std::get_if<ObjectId>(&choice)) {
       resolver_.named_place(*id);
       return *id;
@@ -293,7 +293,10 @@ class EventReader {
       return std::nullopt;
     }
     if (c.negated) return std::nullopt;  // "not in the pantry"
-    auto place_id = place(*where, failure);
+    // A destination named by kind among look-alikes ("in the drawer") is
+    // asked which, even after a placement in one of them: the teacher may
+    // mean the other.
+    auto place_id = place(*where, failure, false);
     if (!place_id) {
       if (verb == VerbClass::kDiscard && !destination && std::holds_alternative<Problem>(*failure))
         failure = Problem{"I don't see a trash can here; where should it go?", std::nullopt};

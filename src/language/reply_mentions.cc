@@ -133,20 +133,20 @@ std::variant<std::vector<ObjectId>, Problem> Resolver::located(std::vector<Objec
   return kept;
 }
 
-Choice Resolver::choose(const Chunk& chunk, Role role) const {
+Choice Resolver::choose(const Chunk& chunk, Role role, bool recent) const {
   auto found = candidates(chunk, role);
   if (auto* problem = std::get_if<Problem>(&found)) return *problem;
-  return choose(std::get<std::vector<ObjectId>>(found), chunk.text(), role);
+  return choose(std::get<std::vector<ObjectId>>(found), chunk.text(), role, recent);
 }
 
-Choice Resolver::choose(const std::vector<ObjectId>& objects, const std::string& phrase, Role role) const {
+Choice Resolver::choose(const std::vector<ObjectId>& objects, const std::string& phrase, Role role, bool recent) const {
   if (objects.empty()) return Problem{"I don't see anything like \"" + phrase + "\" here.", std::nullopt};
   if (objects.size() == 1) return objects.front();
   auto asked = in_.context.object;
   if (role != Role::kPlace && asked && std::find(objects.begin(), objects.end(), *asked) != objects.end())
     return *asked;
   // "the drawer" after a placement in the top drawer is that drawer.
-  if (auto place = last_place(); place && role != Role::kItem && std::find(objects.begin(), objects.end(), *place) != objects.end())
+  if (auto place = recent ? last_place() : last_place_; place && role != Role::kItem && std::find(objects.begin(), objects.end(), *place) != objects.end())
     return *place;
   if (interchangeable(in_.world, objects)) return objects.front();
   return Ambiguous{phrase, objects, say_which_question(in_.world, objects)};

@@ -273,6 +273,39 @@ std::optional<Reply> goal_for_a_class(const Grounder& grounder, const World& wor
       });
       span.second = end - span.first;
     }
+    // "everything in this crate", "everything else on the shelf": only
+    // what is at that place ("this" and "that" one: where the thing asked
+    // about is).
+    after = span.first + span.second;
+    if (spanned && after + 1 < words.size() && is_one_of(words[after], {"in", "on", "from", "inside"})) {
+      std::size_t k = after + 1;
+      std::string determiner;
+      if (is_determiner(words[k])) determiner = words[k++];
+      // Where they are, not where they go: a verb follows ("the rest on the
+      // floor" says where the rest go).
+      if (k + 1 < words.size() && is_one_of(words[k + 1], {"go", "goes", "belong", "belongs", "can", "should", "need",
+                                                            "needs", "is", "are", "gets", "get", "will"})) {
+        std::vector<ObjectId> places;
+        std::optional<ObjectId> asked_at = place_of(world, *c.object);
+        if (is_one_of(determiner, {"this", "that"}) && asked_at) {
+          places.push_back(*asked_at);
+        } else {
+          for (ObjectId p = 0; p < world.universe->size(); ++p) {
+            if (world.universe->info(p).kind == ObjectKind::kItem) continue;
+            std::vector<std::string> forms = singular_forms(words[k]);
+            if (std::find(forms.begin(), forms.end(), name_parts(world.universe->info(p).category).back()) != forms.end())
+              places.push_back(p);
+          }
+        }
+        if (!places.empty()) {
+          std::erase_if(members, [&](ObjectId o) {
+            std::optional<ObjectId> at = place_of(world, o);
+            return !at || std::find(places.begin(), places.end(), *at) == places.end();
+          });
+          span.second = k + 1 - span.first;
+        }
+      }
+    }
   } else {
     const auto* unusable = std::get_if<Unusable>(&first);
     if (unusable == nullptr || !unusable->failure || unusable->failure->kind != FailureKind::kUngroundedObject)

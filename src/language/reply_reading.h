@@ -50,8 +50,12 @@ class Resolver {
   // The one thing a phrase names: the object asked about if it fits, else
   // the only candidate, else the first of look-alikes no one can tell apart
   // (same kind, place and properties), else the question which.
-  Choice choose(const Chunk& chunk, Role role) const;
-  Choice choose(const std::vector<ObjectId>& objects, const std::string& phrase, Role role) const;
+  // `recent`: whether the conversation's place named last settles
+  // look-alikes ("close the drawer" after a placement in the top drawer);
+  // a new destination ("in the drawer") is asked which, unless this reply
+  // named one of them.
+  Choice choose(const Chunk& chunk, Role role, bool recent = true) const;
+  Choice choose(const std::vector<ObjectId>& objects, const std::string& phrase, Role role, bool recent = true) const;
 
   // Whether the phrase, which names something else first, may also name
   // the object asked about: its name ends with the phrase's noun as a

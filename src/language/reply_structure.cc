@@ -79,6 +79,13 @@ bool verb_like(const std::string& word, const ReplyInput& in, std::string& base)
   return true;
 }
 
+// A word of the world's location ("living" of "living room"): never the
+// task's verb.
+bool names_location(const std::string& word, const ReplyInput& in) {
+  Words room = split_words(to_lower(in.world.location));
+  return std::find(room.begin(), room.end(), word) != room.end();
+}
+
 // "the kitchen needs tidying", "kitchen tidying", "the kitchen needs to be
 // tidied": the verb's form after what it is done to.
 std::optional<TaskNamed> gerund_task(const Words& words, const ReplyInput& in) {
@@ -87,8 +94,12 @@ std::optional<TaskNamed> gerund_task(const Words& words, const ReplyInput& in) {
     std::string base;
     if (w.ends_with("ing") || w.ends_with("ed")) base = in.vocabulary.any_verb(w);
     // "kitchen cleanup": a verb run together with its particle.
-    if (base.empty() && w.size() > 4 && w.ends_with("up")) base = in.vocabulary.any_verb(w.substr(0, w.size() - 2));
-    if (base.empty() || base == w) continue;
+    if (base.empty() && w.size() > 4 && w.ends_with("up")) {
+      std::string stem = w.substr(0, w.size() - 2);
+      if (stem.ends_with("-")) stem.pop_back();  // "clean-up"
+      base = in.vocabulary.any_verb(stem);
+    }
+    if (base.empty() || base == w || names_location(w, in)) continue;
     std::string name = base;
     for (std::size_t k = 0; k < words.size(); ++k) {
       const std::string& o = words[k];
@@ -466,7 +477,9 @@ Reply read_task(const ReplyInput& in) {
   // ("to garage", "to kid").
   std::vector<Words> said;
   std::vector<bool> describes;
+  std::vector<Words> framed;  // the pieces as said, frame and all
   for (const Words& piece : pieces(without_fillers(in.words, in.vocabulary))) {
+    framed.push_back(piece);
     said.push_back(after_frame(piece));
     const Words& rest = said.back();
     bool subject_first = piece.size() > 1 && is_determiner(piece[0]) && !is_frame_word(piece[1]);
@@ -475,13 +488,22 @@ Reply read_task(const ReplyInput& in) {
   }
   std::string verb;
   const Words* words = nullptr;
-  for (std::size_t i = 0; i < said.size() && words == nullptr; ++i) {
-    const Words& piece = said[i];
-    // "I just got back from the store": "back" is a particle here, not "to back".
-    if (!piece.empty() && !describes[i] && !is_determiner(piece.front()) && !is_object_pronoun(piece.front()) &&
-        !is_particle(piece.front()) && verb_like(piece.front(), in, verb))
-      words = &piece;
-  }
+  // A piece said as a request ("can you help me turn it over?") before one
+  // that tells ("room 412 just checked out").
+  // Then a piece that starts with a verb as a request says it ("Dishes.
+  // Put them away.": "dishes" is not "to dish").
+  for (int pass = 0; pass < 3; ++pass)
+    for (std::size_t i = 0; i < said.size() && words == nullptr; ++i) {
+      const Words& piece = said[i];
+      // Said as a request, with its verb as a request says it ("been" in
+      // "it's been a long day" is not).
+      const bool plain = !piece.empty() && in.vocabulary.any_verb(piece.front()) == piece.front();
+      if ((pass == 0 && (piece.size() == framed[i].size() || !plain)) || (pass == 1 && !plain)) continue;
+      // "I just got back from the store": "back" is a particle here, not "to back".
+      if (!piece.empty() && !describes[i] && !is_determiner(piece.front()) && !is_object_pronoun(piece.front()) &&
+          !is_particle(piece.front()) && !names_location(piece.front(), in) && verb_like(piece.front(), in, verb))
+        words = &piece;
+    }
   if (!words) {
     Words all;
     for (const Words& piece : said) all.insert(all.end(), piece.begin(), piece.end());
@@ -519,22 +541,36 @@ Reply read_task(const ReplyInput& in) {
     }
   }
   // The task's place is the world's location: said ("clean up the
-  // bathroom after my shower", "tidy the garden shed") or pointed at ("tidy
-  // up in here", "this room", "it" for the room), never a filler or a
-  // time ("ugh", "after my shower").
+  // bathroom after my shower", "tidy the garden shed"), pointed at ("tidy
+  // up in here", "this room", "it" for the room), said as another name for
+  // a room ("the lounge", "the kids room"), or said as a time ("clean up
+  // after the party"); never a filler or a word no one knows. What the task
+  // is done to is kept when it is neither ("put the groceries away", "do
+  // the laundry").
   Words room = split_words(to_lower(in.world.location));
   if (!room.empty()) {
-    auto at = std::search(object.begin(), object.end(), room.begin(), room.end());
-    bool pointed = !object.empty() && std::all_of(object.begin(), object.end(), [](const std::string& w) {
-      return is_one_of(w, {"in", "here", "this", "room", "place", "it", "ugh", "um", "lol", "hmm", "oh", "so"});
+    // "after the party", "before I leave": a time, not what the task is done to.
+    auto time = std::find_if(object.begin(), object.end(), [](const std::string& w) {
+      return is_one_of(w, {"after", "before", "around", "for", "at", "when", "while", "until", "since"});
     });
-    if (at != object.end() || pointed) object = room;
+    bool when = time == object.begin() && !object.empty();
+    object.erase(time, object.end());
+    auto at = std::search(object.begin(), object.end(), room.begin(), room.end());
+    const Lexicon& lexicon = in.grounder.lexicon();
+    auto roomlike = [&](const std::string& w) {
+      if (is_one_of(w, {"in", "here", "this", "room", "place", "it", "ugh", "um", "lol", "hmm", "oh", "so"})) return true;
+      if (lexicon.has_wordnet() && !lexicon.knows(w)) return true;
+      std::vector<std::string> one{w};
+      return !lexicon.kinds_under("room", one).empty();
+    };
+    bool pointed = object.empty() || std::any_of(object.begin(), object.end(), roomlike);
+    if (at != object.end() || pointed || when) object = room;
   }
   std::string name = verb_name(verb, particle);
   if (particle == "off" || particle == "down" || particle == "over" || particle == "aside") name = verb + " " + particle;
   // "clean up after the party": "up" stays before a preposition, whose
   // object is the task's.
-  if (!object.empty() && is_one_of(object.front(), {"after", "before", "around"}) && words->size() > 1 &&
+  if (room.empty() && !object.empty() && is_one_of(object.front(), {"after", "before", "around"}) && words->size() > 1 &&
       (*words)[1] == "up")
     name = verb + " up";
   for (const std::string& w : object) name += " " + w;

@@ -247,6 +247,23 @@ TEST_F(Conversation, SayingDoneAtAGoalQuestionLeavesTheObject) {
   EXPECT_EQ(s.knowledge.goals.size(), 1u);
 }
 
+// "what's left?" between parts of the task says what is done and which
+// things have not been dealt with yet, where they are.
+TEST_F(Conversation, WhatsLeftBetweenPartsSaysThePartsDoneAndTheThingsNotDealtWith) {
+  CallbackInstructor instructor(replies({"Tidy kitchen.", "what's left?", kStructure[1], kStructure[2], kKetchupGoal,
+                                         "You are done.", "Repeat.", kPaperPlateGoal, "what's left?", "You are done."}),
+                                true);
+  Session s = teach(two_, instructor);
+  ASSERT_TRUE(s.report.has_value()) << s.report.error().describe();
+  EXPECT_THAT(instructor.heard, Contains("No part of the task is done yet. Not dealt with yet: on the table, the ketchup "
+                                         "and the paper plate. Tell me what to do next, or say \"that's all\"."))
+      << s.transcript;
+  EXPECT_THAT(instructor.heard, Contains(HasSubstr("So far I have learned to clear what is on the table. Every thing "
+                                                   "here has been dealt with")))
+      << s.transcript;
+  EXPECT_TRUE(holds(two_, s.final_state)) << s.transcript;
+}
+
 TEST_F(Conversation, AKnownTaskIsDoneAndOnlyWhatIsNewIsAsked) {
   Knowledge known;
   {

@@ -162,6 +162,58 @@ TEST(TidyBotWithAnLlm, TheLlmsPlacementsAreWeighedAgainstTheExamplesAndTheRule) 
   EXPECT_EQ(note.scenarios[1].tally.wrong, 0) << "the person said mugs go on the top shelf";
 }
 
+// The LLM is asked twice more beside its summary's placements: its summary
+// given back to it with the things taught (does it put them back where they
+// were taught?), and the new things with the examples alone. A summary that
+// loses an example makes its placements less sure; a placement from the
+// examples that disagrees makes the thing less sure.
+TEST(TidyBotWithAnLlm, ASummaryThatLosesAnExampleIsTrustedLess) {
+  auto scenarios = parse_tidybot_scenarios(testing::kTwoScenarios, "two.yml");
+  ASSERT_TRUE(scenarios);
+  scenarios->resize(1);  // the shirts and the blocks
+  const std::string summary =
+      R"({"scenario": 7, "method": "summarization", "step": "summary", "receptacles": ["hamper", "toy chest"], "examples": [["polo shirt", "hamper"], ["wooden block", "toy chest"]], "completion": "", "summary": "Put shirts in the hamper and blocks in the toy chest."})"
+      "\n"
+      R"({"scenario": 7, "method": "summarization", "step": "placement", "receptacles": ["hamper", "toy chest"], "summary": "Put shirts in the hamper and blocks in the toy chest.", "objects": ["flannel shirt", "foam block", "polo shirt 2"], "completion": "", "placements": [["flannel shirt", "hamper"], ["foam block", "toy chest"], ["polo shirt 2", "hamper"]]})"
+      "\n";
+  auto back = [](const char* shirt_goes) {
+    return std::string(
+               R"({"scenario": 7, "method": "summarization", "step": "placement", "receptacles": ["hamper", "toy chest"], "summary": "Put shirts in the hamper and blocks in the toy chest.", "objects": ["polo shirt", "wooden block"], "completion": "", "placements": [["polo shirt", ")") +
+           shirt_goes + R"("], ["wooden block", "toy chest"]]})" "\n";
+  };
+  const std::string by_examples =
+      R"({"scenario": 7, "method": "examples-only", "step": "placement", "receptacles": ["hamper", "toy chest"], "examples": [["polo shirt", "hamper"], ["wooden block", "toy chest"]], "objects": ["flannel shirt", "foam block", "polo shirt 2"], "completion": "", "placements": [["flannel shirt", "hamper"], ["foam block", "hamper"], ["polo shirt 2", "hamper"]]})"
+      "\n";
+  apprentice::testing::ScratchDir scratch;
+  auto run = [&](const std::string& name, const std::string& answers) -> SettingResult {
+    const auto corpus = scratch / (name + ".jsonl");
+    std::ofstream(corpus) << answers;
+    BenchmarkOptions options;
+    options.prompts_dir = apprentice::testing::source_path("data/prompts");
+    options.domain = apprentice::testing::source_path("data/domains/kitchen.pddl");
+    options.llm = [corpus] { return llm::make_llm_client("corpus:" + corpus.string(), llm::LlmOptions{}); };
+    options.settings = {*parse_setting("a-alone+llm")};
+    auto results = run_tidybot(*scenarios, options);
+    EXPECT_TRUE(results) << results.error().describe();
+    return results ? results->results.front() : SettingResult{};
+  };
+  const SettingResult keeps = run("keeps", summary + back("hamper"));
+  const SettingResult loses = run("loses", summary + back("toy chest"));
+  const SettingResult disagrees = run("disagrees", summary + back("hamper") + by_examples);
+  for (const SettingResult* r : {&keeps, &loses, &disagrees}) {
+    ASSERT_EQ(r->scenarios.size(), 1u);
+    ASSERT_EQ(r->scenarios[0].objects.size(), 3u);
+    EXPECT_EQ(r->total.wrong, 0);
+  }
+  // The flannel shirt: the same sources but the LLM's, which is surer when
+  // its summary kept the examples.
+  EXPECT_EQ(keeps.scenarios[0].objects[0].proposed, "hamper");
+  EXPECT_LT(loses.scenarios[0].objects[0].belief, keeps.scenarios[0].objects[0].belief);
+  // The foam block: the examples alone put it in the hamper.
+  EXPECT_EQ(disagrees.scenarios[0].objects[1].proposed, "toy chest");
+  EXPECT_LT(disagrees.scenarios[0].objects[1].belief, keeps.scenarios[0].objects[1].belief);
+}
+
 TEST(TidyBotRecorded, TidyBotsOwnAnswersAreScoredAsItScoresThem) {
   apprentice::testing::ScratchDir scratch;
   const auto corpus = scratch / "answers.jsonl";

@@ -1,4 +1,4 @@
-// The fresh reply corpora (tests/language/fresh/set1, set2, set3): every labelled
+// The fresh reply corpora (tests/language/fresh/set1 to set4): every labelled
 // reply read with read_reply in the context its line describes, and scored
 // against its meaning (fresh_corpus.h). The figures are a measurement and
 // are printed, not asserted; what is asserted is that the scorer works:
@@ -96,6 +96,14 @@ TEST(FreshCorpus, Set3IsReadAndScored) {
   Report report = score_set("set3", lines);
   EXPECT_EQ(lines, 187u);
   for (const char* act : {"goal", "task", "subtask", "undo", "question", "command", "leave", "yes", "no"})
+    EXPECT_GT(report.by_act[act].total(), 0) << act;
+}
+
+TEST(FreshCorpus, Set4IsReadAndScored) {
+  std::size_t lines = 0;
+  Report report = score_set("set4", lines);
+  EXPECT_EQ(lines, 341u);
+  for (const char* act : {"goal", "task", "subtask", "undo", "question", "command", "leave", "yes", "no", "choose"})
     EXPECT_GT(report.by_act[act].total(), 0) << act;
 }
 
