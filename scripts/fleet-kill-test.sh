@@ -32,8 +32,10 @@
 #     same task taught that kind otherwise), counted apart;
 # and that every world is done alone from fleet-1 afterwards (`apprentice
 # run --household fleet-1` exits 0, "No help was needed."). Prints one
-# line per kill and a summary; exits 1 if a goal was lost or a world is not
-# done alone, 2 if the setup failed.
+# line per kill and a summary; exits 1 if a goal was lost or a world with a
+# task of its own is not done alone (three of the worlds share the task
+# "tidy kitchen", so one of them may find a goal replaced by another's),
+# 2 if the setup failed.
 #
 #   scripts/fleet-kill-test.sh [KILLS]       # default 50
 #   APPRENTICE=build/apprentice BENCH_FLEET=build/bench/bench_fleet
@@ -149,15 +151,22 @@ for ((h = 1; h <= households; ++h)); do
   read -r s l o r < <(/usr/bin/python3 "$work/check.py" "$work/knowledge.json" "$work/logged")
   stored=$((stored + s)) logged=$((logged + l)) lost=$((lost + o)) replaced=$((replaced + r))
 done
-alone=0 needed_help=()
+task_of() { sed -n '/^task:/,/^[a-z]/s/^  name: //p' "$root/data/scenarios/$1.yaml" | head -1; }
+alone=0 needed_help=() failed_alone=0
 for w in "${worlds[@]}"; do
-  task=$(sed -n '/^task:/,/^[a-z]/s/^  name: //p' "$root/data/scenarios/$w.yaml" | head -1)
+  task=$(task_of "$w")
   if "$app" run --scenario "$root/data/scenarios/$w.yaml" --knowledge "$store" --household fleet-1 --task "$task" \
     >"$work/run.$w" 2>&1 && grep -q "No help was needed." "$work/run.$w"; then
     alone=$((alone + 1))
   else
     needed_help+=("$w")
     echo "  $w, run alone: $(tail -1 "$work/run.$w")"
+    # A world whose task another world shares may have had a goal of its
+    # own replaced by the other's (one household, one goal per key): not
+    # a loss. One with a task of its own must be done alone.
+    shared=0
+    for v in "${worlds[@]}"; do [[ $v != "$w" && $(task_of "$v") == "$task" ]] && shared=1; done
+    ((shared)) || failed_alone=$((failed_alone + 1))
   fi
 done
 total_runs=0
@@ -168,4 +177,4 @@ echo "fleet-kill-test: $kills SIGKILLs ($after_saves after the learner had saved
 echo "fleet-kill-test: the households hold $stored goals; $logged distinct goals were logged as saved;" \
   "lost: $lost; replaced by another world's goal for the same key: $replaced"
 echo "fleet-kill-test: $alone of ${#worlds[@]} worlds done alone from fleet-1 afterwards${needed_help[*]:+ (not: ${needed_help[*]})}"
-[[ $lost -eq 0 && $alone -eq ${#worlds[@]} ]] || exit 1
+[[ $lost -eq 0 && $failed_alone -eq 0 ]] || exit 1

@@ -17,6 +17,8 @@
 #include <random>
 #include <set>
 #include <thread>
+#include <utility>
+#include <vector>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -264,6 +266,65 @@ TEST_F(PostgresStore, WritersKilledMidWriteLoseNoConfirmedGoal) {
   }
   std::cout << killed << " of " << kWriters << " writers killed; " << confirmed.size() << " goals confirmed, "
             << stored.size() << " stored\n";
+}
+
+// Two households writing the same kinds at the same moment, each with its
+// own place for them: each keeps its own, none of the other's.
+TEST_F(PostgresStore, TwoHouseholdsWritingTheSameKindsAtOnceEachKeepTheirOwn) {
+  constexpr int kKinds = 60;
+  const std::vector<std::pair<std::string, std::string>> households{
+      {"smiths", std::string(kCeramicPlateGoal)}, {"joneses", "(in ceramic-plate1 garbage1)"}};
+  auto goal_of = [&](const std::string& goal_text, int n) {
+    auto k = generalize_goal(world_, GoalKey{"tidy kitchen", "clear", "kind-" + std::to_string(n), "table"},
+                             object(world_, "ceramic-plate1"), goal(world_, goal_text), Provenance{"", "test"});
+    EXPECT_TRUE(k.has_value());
+    return *k;
+  };
+  int go[2];
+  ASSERT_EQ(::pipe(go), 0);
+  std::vector<pid_t> writers;
+  for (const auto& [household, goal_text] : households) {
+    pid_t pid = ::fork();
+    if (pid == 0) {
+      ::close(go[1]);
+      auto store = KnowledgeStore::open(database_->url(), StoreAccess::kReadWrite, household);
+      if (!store) {
+        std::fprintf(stderr, "%s: %s\n", household.c_str(), store.error().describe().c_str());
+        ::_exit(10);
+      }
+      char byte;
+      (void)::read(go[0], &byte, 1);  // both start when the pipe closes
+      for (int n = 0; n < kKinds; ++n)
+        if (auto saved = store->save_goal(goal_of(goal_text, n)); !saved) {
+          std::fprintf(stderr, "%s: %s\n", household.c_str(), saved.error().describe().c_str());
+          ::_exit(11);
+        }
+      ::_exit(0);
+    }
+    writers.push_back(pid);
+  }
+  ::close(go[0]);
+  ::close(go[1]);
+  for (pid_t pid : writers) {
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "writer exit status " << status;
+  }
+  for (const auto& [household, goal_text] : households) {
+    auto store = KnowledgeStore::open(database_->url(), StoreAccess::kReadOnly, household);
+    ASSERT_TRUE(store.has_value()) << store.error().describe();
+    auto loaded = store->load(domain_);
+    ASSERT_TRUE(loaded.has_value()) << loaded.error().describe();
+    ASSERT_EQ(loaded->goals.size(), static_cast<std::size_t>(kKinds)) << household;
+    for (int n = 0; n < kKinds; ++n) {
+      const GoalKnowledge wanted = goal_of(goal_text, n);
+      const GoalKnowledge* kept = loaded->goals.find(wanted.key);
+      ASSERT_NE(kept, nullptr) << household << " lost kind-" << n;
+      EXPECT_EQ(kept->literals, wanted.literals) << household << ", kind-" << n;
+    }
+    // The other household's goals are its fleet's prior, not its own.
+    EXPECT_EQ(loaded->fleet.size(), static_cast<std::size_t>(kKinds)) << household;
+  }
 }
 
 // Knowledge learned into SQLite, exported into PostgreSQL and imported back
