@@ -3,6 +3,7 @@
 #include "agent/explanation.h"
 #include "knowledge/store_engine.h"
 #include "language/narration.h"
+#include "language/narration_summary.h"
 #include "world_view.h"
 
 namespace apprentice::serve {
@@ -42,8 +43,7 @@ std::string summary(const Scenario& scenario, const State& state, bool finished,
   if (scenario.has_intent && !scenario.goal_assertions().empty()) {
     int achieved = count_achieved_assertions(scenario, state);
     auto total = static_cast<long long>(scenario.goal_assertions().size());
-    text += ": " + std::to_string(achieved) + " of " + language::count_phrase(total, "goal assertion") +
-            (achieved == 1 ? " holds, " : " hold, ") + after + ".";
+    text += ": " + language::goal_parts_met(achieved, total) + ", " + after + ".";
   } else {
     text += ", " + after + ".";
   }

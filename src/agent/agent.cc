@@ -57,6 +57,7 @@ Result<AgentReport> TaskLearningAgent::perform(Simulator& simulator, const std::
 TaskLearningAgent::Session::Session(TaskLearningAgent& agent, Simulator& simulator, Dialogue* dialogue,
                                     bool learning)
     : agent_(agent), simulator_(simulator), dialogue_(dialogue), learning_(learning),
+      lessons_(agent.store_, *simulator.world().domain),
       transfer_(agent.knowledge_, simulator.world(), agent.understanding_.lexicon()),
       concepts_(agent.understanding_.lexicon(), agent.understanding_.vectors()),
       proposer_(concepts_, transfer_.prior_goals(), forgotten_keys(agent.knowledge_)) {
@@ -270,7 +271,7 @@ Status TaskLearningAgent::Session::remember_task() {
     previous = *existing;
     *existing = progress_.task;
   }
-  return store_task(std::move(previous));
+  return lessons_.store_task(progress_.task, std::move(previous));
 }
 
 // --- Subtasks and their objects ----------------------------------------------

@@ -219,7 +219,7 @@ Status TaskLearningAgent::Session::learn_rules(const InProgress& work) {
     Rule copy = rule;
     if (!agent_.knowledge_.rules.add(*world().domain, std::move(rule))) continue;
     ++progress_.rules_learned;
-    if (auto s = store_rule(copy); !s) return s;
+    if (auto s = lessons_.store_rule(copy); !s) return s;
   }
   return {};
 }

@@ -404,11 +404,12 @@ void TaskLearningAgent::Session::answer_where(const language::Command& command) 
 }
 
 void TaskLearningAgent::Session::answer_why() {
-  if (lessons_.empty()) {
+  const std::string* last = lessons_.last_reply();
+  if (last == nullptr) {
     say("I have only done what I already knew; you have not told me anything yet this session.", Voice::kResponse);
     return;
   }
-  say(with_period("Because of what you told me last: \"" + lessons_.back().reply + "\"") +
+  say(with_period("Because of what you told me last: \"" + *last + "\"") +
           " If that was wrong, say undo, or tell me what you meant.",
       Voice::kResponse);
 }
@@ -486,7 +487,7 @@ Status TaskLearningAgent::Session::forget(const std::string& kind) {
   for (const GoalKey& key : keys) {
     agent_.knowledge_.goals.remove(key);
     // An undo must not bring it back either.
-    for (Lesson& lesson : lessons_) lesson.knowledge.goals.remove(key);
+    lessons_.forget_goal(key);
     if (agent_.store_) {
       if (auto s = agent_.store_->remove_goal(key); !s) return s;
     }
@@ -517,10 +518,7 @@ Result<bool> TaskLearningAgent::Session::forget_rule_named(const std::string& wh
   for (const ClassRule& rule : named) {
     if (auto s = forget_rule(agent_.knowledge_, agent_.store_, rule); !s) return tl::unexpected(s.error());
     // An undo must not bring it back either.
-    for (Lesson& lesson : lessons_) {
-      lesson.knowledge.class_rules.remove(rule);
-      lesson.knowledge.forgotten_rules.add(rule);
-    }
+    lessons_.forget_class_rule(rule);
     said_rules_.remove(rule);
     proposer_.forget(rule);
   }

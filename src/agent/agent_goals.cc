@@ -308,7 +308,7 @@ Status TaskLearningAgent::Session::learn_goal(ObjectId object, const Goal& goal,
   agent_.knowledge_.goals.add(*knowledge);
   progress_.last_goal = knowledge->key;
   ++progress_.goals_learned;
-  return store_goal(*knowledge, std::move(previous));
+  return lessons_.store_goal(*knowledge, std::move(previous));
 }
 
 }  // namespace apprentice

@@ -74,14 +74,7 @@ Status TaskLearningAgent::Session::store_class_rule(const ClassRule& rule) {
   said_rules_.add(rule);
   agent_.knowledge_.class_rules.add(rule);
   agent_.knowledge_.forgotten_rules.remove(rule);
-  if (!lessons_.empty()) {
-    StoreWrite write;
-    write.kind = StoreWrite::Kind::kClassRule;
-    write.class_rule = rule;
-    lessons_.back().writes.push_back(std::move(write));
-  }
-  if (!agent_.store_) return {};
-  return agent_.store_->save_class_rule(rule);
+  return lessons_.store_class_rule(rule);
 }
 
 Status TaskLearningAgent::Session::keep_induced_rules_learned() {

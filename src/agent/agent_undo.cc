@@ -1,12 +1,11 @@
-// Lessons and undo. Each reply that teaches the agent something opens a
-// lesson, which keeps the progress, the knowledge and the world as they
-// were before it, and every write to the store until the next lesson.
-// "undo" forgets the last lesson: it reverts those writes, restores the
-// knowledge and the progress, and puts the world back by acting (the world
-// changes only through the simulator), so the question that lesson
-// answered comes again.
+// Undo, as the session does it. Each reply that teaches the agent something
+// opens a lesson (agent/lessons.h), which keeps the progress, the knowledge
+// and the world as they were before it, and every write to the store until
+// the next lesson. "undo" forgets the last lesson: the lessons revert those
+// writes and restore the knowledge and the progress; the session says so
+// and puts the world back by acting (the world changes only through the
+// simulator), so the question that lesson answered comes again.
 #include <algorithm>
-#include <set>
 #include <utility>
 
 #include "agent/session.h"
@@ -37,100 +36,19 @@ Goal difference(const State& now, const State& target) {
 
 void TaskLearningAgent::Session::begin_lesson(const std::string& reply) {
   if (!learning_ || dialogue_ == nullptr) return;
-  // The progress without the per-object records, which only grow: copying
-  // them at every lesson would cost O(objects) each time.
-  std::set<ObjectId> evaluated = std::exchange(progress_.evaluated, {});
-  std::vector<ObjectId> evaluated_order = std::exchange(progress_.evaluated_order, {});
-  std::vector<ObjectReport> objects = std::exchange(progress_.objects, {});
-  lessons_.push_back(Lesson{reply, progress_, evaluated_order.size(), objects.size(), agent_.knowledge_,
-                            world().state, simulator_.history().size(), {}});
-  progress_.evaluated = std::move(evaluated);
-  progress_.evaluated_order = std::move(evaluated_order);
-  progress_.objects = std::move(objects);
-}
-
-Status TaskLearningAgent::Session::store_goal(const GoalKnowledge& goal, std::optional<GoalKnowledge> previous) {
-  if (!agent_.store_) return {};
-  if (auto s = agent_.store_->save_goal(goal); !s) return s;
-  // Durable from here (the fleet's kill test reads these lines: a goal
-  // logged saved must be in the store, whatever befalls the process).
-  std::string saved = format_goal_knowledge(goal);
-  std::replace(saved.begin(), saved.end(), '\n', ' ');
-  spdlog::debug("goal saved: {}", saved);
-  if (!lessons_.empty()) {
-    StoreWrite write;
-    write.kind = StoreWrite::Kind::kGoal;
-    write.goal_key = goal.key;
-    write.previous_goal = std::move(previous);
-    lessons_.back().writes.push_back(std::move(write));
-  }
-  return {};
-}
-
-Status TaskLearningAgent::Session::store_rule(const Rule& rule) {
-  if (!agent_.store_) return {};
-  if (auto s = agent_.store_->save_rule(*world().domain, rule); !s) return s;
-  if (!lessons_.empty()) {
-    StoreWrite write;
-    write.kind = StoreWrite::Kind::kRule;
-    write.rule = rule;
-    lessons_.back().writes.push_back(std::move(write));
-  }
-  return {};
-}
-
-Status TaskLearningAgent::Session::store_task(std::optional<TaskKnowledge> previous) {
-  if (!agent_.store_) return {};
-  if (auto s = agent_.store_->save_task(progress_.task); !s) return s;
-  if (!lessons_.empty()) {
-    StoreWrite write;
-    write.kind = StoreWrite::Kind::kTask;
-    write.task_name = progress_.task.name;
-    write.previous_task = std::move(previous);
-    lessons_.back().writes.push_back(std::move(write));
-  }
-  return {};
+  lessons_.begin(reply, progress_, agent_.knowledge_, world().state, simulator_.history().size());
 }
 
 TaskLearningAgent::Session::Step TaskLearningAgent::Session::undo() {
-  if (lessons_.empty()) {
+  auto undone = lessons_.undo(progress_, agent_.knowledge_);
+  if (!undone) return stop(undone.error());
+  if (!*undone) {
     say("There is nothing to undo yet.", Voice::kResponse);
     return {};
   }
-  Lesson lesson = std::move(lessons_.back());
-  lessons_.pop_back();
-  KnowledgeStore* store = agent_.store_;
-  for (const StoreWrite& write : lesson.writes)
-    if (write.kind == StoreWrite::Kind::kClassRule) said_rules_.remove(*write.class_rule);
-  for (auto write = lesson.writes.rbegin(); store != nullptr && write != lesson.writes.rend(); ++write) {
-    Status status;
-    switch (write->kind) {
-      case StoreWrite::Kind::kGoal:
-        status = write->previous_goal ? store->save_goal(*write->previous_goal) : store->remove_goal(write->goal_key);
-        break;
-      case StoreWrite::Kind::kRule: status = store->remove_rule(*world().domain, *write->rule); break;
-      case StoreWrite::Kind::kTask:
-        status = write->previous_task ? store->save_task(*write->previous_task) : store->remove_task(write->task_name);
-        break;
-      case StoreWrite::Kind::kClassRule: status = store->remove_class_rule(*write->class_rule); break;
-    }
-    if (!status) return stop(status.error());
-  }
-  agent_.knowledge_ = std::move(lesson.knowledge);
-  // Back to the progress before the lesson: its records are those of now,
-  // cut to their sizes then.
-  std::set<ObjectId> evaluated = std::move(progress_.evaluated);
-  std::vector<ObjectId> evaluated_order = std::move(progress_.evaluated_order);
-  std::vector<ObjectReport> objects = std::move(progress_.objects);
-  for (std::size_t i = lesson.evaluated_count; i < evaluated_order.size(); ++i) evaluated.erase(evaluated_order[i]);
-  evaluated_order.resize(lesson.evaluated_count);
-  objects.resize(lesson.objects_count);
-  progress_ = std::move(lesson.progress);
-  progress_.evaluated = std::move(evaluated);
-  progress_.evaluated_order = std::move(evaluated_order);
-  progress_.objects = std::move(objects);
-  say(with_period("I forgot what you told me last: \"" + lesson.reply + "\""), Voice::kResponse);
-  put_world_back(lesson.world, lesson.history);
+  for (const ClassRule& rule : (*undone)->class_rules) said_rules_.remove(rule);
+  say(with_period("I forgot what you told me last: \"" + (*undone)->reply + "\""), Voice::kResponse);
+  put_world_back((*undone)->world, (*undone)->history);
   return tl::unexpected(Stop{});
 }
 

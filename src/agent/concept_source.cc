@@ -29,6 +29,10 @@ int physical_rank(int lexicographer_file) {
   }
 }
 
+// A class word's synset holding at most this many synsets (itself
+// included) is a collective name for its parent's things.
+constexpr double kCollectiveSize = 5;
+
 // The weights of a word's senses, most frequent first.
 constexpr double kSenseWeights[] = {1.0, 0.5, 0.25};
 
@@ -75,9 +79,16 @@ LexicalConcepts::LexicalConcepts(const language::Lexicon& lexicon, const vectors
     : lexicon_(&lexicon), vectors_(vectors) {}
 
 bool LexicalConcepts::known_word(std::string_view word) const {
-  if (vectors_ != nullptr && vectors_->contains(word)) return true;
   const language::WordNet* wordnet = lexicon_->wordnet();
-  return wordnet != nullptr && wordnet->has_noun(word);
+  if (wordnet != nullptr && wordnet->has_noun(word)) return true;
+  // A hyphenated word WordNet knows as words apart ("ice-cream": "ice
+  // cream") is read as those words, whatever odd token the vectors hold.
+  if (wordnet != nullptr && word.find('-') != std::string_view::npos) {
+    std::string spaced(word);
+    std::replace(spaced.begin(), spaced.end(), '-', ' ');
+    if (wordnet->has_noun(spaced)) return false;
+  }
+  return vectors_ != nullptr && vectors_->contains(word);
 }
 
 std::vector<std::pair<language::SynsetOffset, double>> LexicalConcepts::senses(const std::string& lemma) const {
@@ -203,8 +214,18 @@ KindProfile LexicalConcepts::profile(std::string_view kind) const {
 std::vector<ConceptClass> LexicalConcepts::classes_named(std::string_view words) const {
   std::vector<ConceptClass> out;
   std::vector<std::string> said = name_words(words, [this](std::string_view w) { return known_word(w); });
-  for (const auto& [sense, weight] : senses(join(said, " ")))
+  const language::WordNet* wordnet = lexicon_->wordnet();
+  for (const auto& [sense, weight] : senses(join(said, " "))) {
     out.push_back(ConceptClass{concept_id(sense), class_name(sense), weight, class_size(sense), 0});
+    // A word for a class that holds almost no kinds of its own names its
+    // parent's things ("clothes" is WordNet's apparel, beside the clothing
+    // that garments are; "dinnerware" beside tableware): the parent, one
+    // step up.
+    if (class_size(sense) > kCollectiveSize || wordnet == nullptr) continue;
+    if (auto s = wordnet->synset(sense))
+      for (language::SynsetOffset parent : s->hypernyms)
+        out.push_back(ConceptClass{concept_id(parent), class_name(parent), weight, class_size(parent), 1});
+  }
   return out;
 }
 

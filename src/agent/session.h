@@ -17,7 +17,9 @@
 #include "agent/agent.h"
 #include "agent/concept_source.h"
 #include "agent/goal_proposals.h"
+#include "agent/lessons.h"
 #include "agent/llm_preferences.h"
+#include "agent/progress.h"
 #include "knowledge/decision.h"
 #include "knowledge/preferences.h"
 #include "agent/transfer.h"
@@ -48,71 +50,11 @@ class TaskLearningAgent::Session {
   using Step = Flow<void>;
   static tl::unexpected<Stop> stop(Error error) { return tl::unexpected<Stop>(Stop{std::move(error)}); }
 
-  // The subtask being worked on, and how far: the paper's way (a loop
-  // announced first) does one object, asks whether the subtask is done,
-  // and loops once told "Repeat."; a subtask named with its place alone
-  // loops over its places' objects at once.
-  struct Current {
-    enum class Mode { kFirstObject, kEndQuestion, kAwaitRepeat, kLoop };
-    std::string verb;
-    std::string relation;  // "on" or "in"
-    std::vector<ObjectId> places;
-    Mode mode = Mode::kLoop;
-  };
-  // An object whose goal is known, being achieved.
-  struct InProgress {
-    ObjectId object = 0;
-    Goal goal;
-    ObjectReport report;
-    State start;  // the world when its actions began
-    std::vector<Action> actions;       // executed towards the goal
-    std::vector<std::string> sources;  // where each came from
-    std::vector<std::string> llm_steps;  // the steps as the LLM prompt shows them
-  };
-  // How far the teaching has come.
-  struct Progress {
-    TaskKnowledge task;
-    std::optional<Current> current;
-    std::optional<Current> queued;  // named before the current subtask ended
-    std::optional<std::vector<ObjectId>> announced_loop;  // "Repeat ... while an object is on the table."
-    std::deque<LearnedSubtask> known_to_do;  // a known task's subtasks still to do
-    bool asked_about_task = false;  // the task-step question was asked at least once
-    bool finishing = false;         // the teacher said the task is done; the current loop ends first
-    bool finished = false;
-    // evaluated, objects and evaluated_order only grow (a lesson keeps their
-    // sizes, not copies: see begin_lesson).
-    std::set<ObjectId> evaluated;
-    std::vector<ObjectId> evaluated_order;  // evaluated, in the order inserted
-    std::optional<InProgress> in_progress;
-    std::vector<ObjectReport> objects;
-    int goals_learned = 0;
-    int rules_learned = 0;
-    // The goal the last object was given, learned or remembered: what "socks
-    // too" and "same again" mean.
-    std::optional<GoalKey> last_goal;
-  };
-  // What one reply of the teacher taught, with what undo needs to forget
-  // it: the progress, knowledge and world before it, and the writes to the
-  // store since.
-  struct StoreWrite {
-    enum class Kind { kGoal, kRule, kTask, kClassRule } kind = Kind::kGoal;
-    GoalKey goal_key;
-    std::optional<GoalKnowledge> previous_goal;
-    std::optional<Rule> rule;
-    std::optional<ClassRule> class_rule;  // a person's rule, said in the lesson
-    std::optional<TaskKnowledge> previous_task;
-    std::string task_name;
-  };
-  struct Lesson {
-    std::string reply;
-    Progress progress;  // without evaluated, evaluated_order and objects: their sizes are below
-    std::size_t evaluated_count = 0;
-    std::size_t objects_count = 0;
-    Knowledge knowledge;
-    State world;
-    std::size_t history = 0;
-    std::vector<StoreWrite> writes;
-  };
+  // How far the teaching has come (agent/progress.h): what a step reads and
+  // changes, and what a lesson keeps.
+  using Current = teaching::Current;
+  using InProgress = teaching::InProgress;
+  using Progress = teaching::Progress;
   // A reply usable at the question asked; none when a program's replies
   // could not be used within its attempts.
   struct Heard {
@@ -177,13 +119,10 @@ class TaskLearningAgent::Session {
   Status execute(const Action& action);
   bool person() const { return dialogue_ != nullptr && dialogue_->instructor_is_person(); }
 
-  // Lessons and undo (agent_undo.cc).
+  // Lessons and undo (agent_undo.cc; the lessons themselves, with the
+  // writes to the store they made, are agent/lessons.h). A lesson opens
+  // only while a teacher teaches.
   void begin_lesson(const std::string& reply);
-  // Writes to the store (when there is one), kept in the open lesson with
-  // what they replaced.
-  Status store_goal(const GoalKnowledge& goal, std::optional<GoalKnowledge> previous);
-  Status store_rule(const Rule& rule);
-  Status store_task(std::optional<TaskKnowledge> previous);
   // A person's rule, kept in the knowledge and the store, and said_rules_.
   Status store_class_rule(const ClassRule& rule);
   // The rules the goals induce, kept in the store with their evidence when
@@ -280,7 +219,7 @@ class TaskLearningAgent::Session {
   Dialogue* dialogue_;  // null when performing alone
   bool learning_;
   Progress progress_;
-  std::vector<Lesson> lessons_;  // the teacher's lessons this session, oldest first
+  Lessons lessons_;  // the teacher's lessons this session, and what each wrote to the store
   AgentReport report_;           // the counters of search and actions; objects come from progress_
   std::optional<ObjectId> recent_place_;  // the place named last: what "the door" means
   std::vector<std::string> announced_;    // the kinds whose news was said, in this session

@@ -70,6 +70,33 @@ std::optional<double> silent_relevance(const Scenario& scenario, const std::vect
 
 }  // namespace
 
+ConditionResult condition_result(const Scenario& scenario, const Condition& condition, SessionReport report) {
+  ConditionResult result;
+  result.condition = condition.name;
+  result.assertions_total = report.assertions_total;
+  result.assertions_achieved = report.assertions_achieved;
+  result.completion_rate = report.completion_rate;
+  result.objects_total = report.objects_total;
+  result.objects_done = report.objects_done;
+  result.counts = report.counts;
+  if (condition.llm && condition.instruction && result.counts.yes_no > 0)
+    result.relevance = 100.0 * result.counts.yes / result.counts.yes_no;
+  if (condition.llm && !condition.instruction) result.relevance = silent_relevance(scenario, report.agent.objects);
+  result.uses_llm = condition.llm;
+  result.llm_calls = report.llm_calls;
+  result.llm_tokens = report.llm_tokens;
+  result.llm_failures = report.llm_failures;
+  result.llm_stopped = report.llm_stopped;
+  result.llm_stopped_after_calls = report.llm_stopped_after_calls;
+  result.llm_stop_error = report.llm_stop_error;
+  result.llm_ensemble = report.llm_ensemble;
+  result.llm_description = report.llm_description;
+  result.search_nodes = report.agent.search_nodes;
+  result.report = std::move(report.agent);
+  result.transcript = std::move(report.transcript);
+  return result;
+}
+
 Result<ConditionResult> run_condition(const Scenario& scenario, const Condition& condition,
                                       const ExperimentOptions& options) {
   if (auto s = check_runnable(scenario); !s) return tl::unexpected(s.error());
@@ -108,29 +135,7 @@ Result<ConditionResult> run_condition(const Scenario& scenario, const Condition&
   if (!report) return tl::unexpected(report.error());
   if (report->stopped) return make_error(ErrorCode::kCancelled, report->stop_reason);
 
-  ConditionResult result;
-  result.condition = condition.name;
-  result.assertions_total = report->assertions_total;
-  result.assertions_achieved = report->assertions_achieved;
-  result.completion_rate = report->completion_rate;
-  result.objects_total = report->objects_total;
-  result.objects_done = report->objects_done;
-  result.counts = report->counts;
-  if (condition.llm && condition.instruction && result.counts.yes_no > 0)
-    result.relevance = 100.0 * result.counts.yes / result.counts.yes_no;
-  if (condition.llm && !condition.instruction) result.relevance = silent_relevance(scenario, report->agent.objects);
-  result.uses_llm = condition.llm;
-  result.llm_calls = report->llm_calls;
-  result.llm_tokens = report->llm_tokens;
-  result.llm_failures = report->llm_failures;
-  result.llm_stopped = report->llm_stopped;
-  result.llm_stopped_after_calls = report->llm_stopped_after_calls;
-  result.llm_stop_error = report->llm_stop_error;
-  result.llm_ensemble = report->llm_ensemble;
-  result.llm_description = report->llm_description;
-  result.search_nodes = report->agent.search_nodes;
-  result.report = std::move(report->agent);
-  result.transcript = std::move(report->transcript);
+  ConditionResult result = condition_result(scenario, condition, std::move(*report));
   result.wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
   return result;
 }

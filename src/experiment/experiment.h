@@ -94,6 +94,12 @@ struct ExperimentOptions {
 // intent. kInvalidInput saying what is missing otherwise.
 Status check_runnable(const Scenario& scenario);
 
+// The face's report of one condition's session as the experiment's row:
+// the one place the two meet (the counts, the LLM's totals and the
+// agent's report move over; Relevant% is worked out here). The wall time
+// is the caller's.
+ConditionResult condition_result(const Scenario& scenario, const Condition& condition, SessionReport report);
+
 // Runs one condition on a copy of `scenario`'s world; nothing is kept
 // beyond the result (and DIR/<condition>.sqlite with knowledge_out).
 // Errors: kInvalidInput for an LLM condition without `options.llm`; the

@@ -10,53 +10,84 @@ namespace apprentice {
 
 namespace {
 
+// "toys" -> "toy", "boxes" -> "box", "supplies" -> "supply": enough to
+// find a class's own word in a thing's name ("toy hammer", "tissue box").
+std::string singular(std::string word) {
+  if (word.size() > 4 && word.ends_with("ies")) return word.substr(0, word.size() - 3) + "y";
+  if (word.size() > 4 && (word.ends_with("ches") || word.ends_with("shes") || word.ends_with("sses") || word.ends_with("xes")))
+    return word.substr(0, word.size() - 2);
+  if (word.size() > 3 && word.ends_with("s") && !word.ends_with("ss")) return word.substr(0, word.size() - 1);
+  return word;
+}
+
+std::vector<std::string> name_words_of(const KindProfile& thing) {
+  std::vector<std::string> words;
+  for (const std::string& m : thing.modifiers)
+    for (const std::string& w : split_words(m)) words.push_back(singular(w));
+  for (const std::string& w : split_words(thing.head)) words.push_back(singular(w));
+  return words;
+}
+
 bool in_name(const KindProfile& thing, const std::string& word) {
-  if (std::find(thing.modifiers.begin(), thing.modifiers.end(), word) != thing.modifiers.end()) return true;
-  for (const std::string& w : split_words(thing.head))
-    if (w == word) return true;
-  return false;
+  const std::vector<std::string> words = name_words_of(thing);
+  return std::find(words.begin(), words.end(), singular(word)) != words.end();
 }
 
-bool wordnet_covers(const ClassRule& rule, const KindProfile& thing, const ConceptSource& concepts) {
-  if (!rule.class_id.empty())
-    return std::any_of(thing.classes.begin(), thing.classes.end(), [&](const ConceptClass& c) { return c.id == rule.class_id; });
-  if (rule.class_name.empty()) return false;
-  for (const ConceptClass& said : concepts.classes_named(rule.class_name))
-    for (const ConceptClass& c : thing.classes)
-      if (c.id == said.id) return true;
-  return false;
-}
+}  // namespace
 
-// How well the thing fits the rule's class, before the clauses compete;
-// `sure` is set when WordNet or the thing's own words put it in the class.
-double class_score(const ClassRule& rule, const KindProfile& thing, const ConceptSource& concepts,
-                   const SaidRuleWeights& weights, bool& sure) {
-  double score = 0;
-  sure = false;
-  std::vector<std::string> words = rule.modifiers;
-  if (!rule.class_name.empty()) {
-    words.push_back(rule.class_name);
-    if (wordnet_covers(rule, thing, concepts)) {
-      score += weights.wordnet;
-      sure = true;
-    }
+ClauseEvidence clause_evidence(const ClassRule& rule, const KindProfile& thing, const ConceptSource& concepts) {
+  ClauseEvidence e;
+  if (!rule.class_id.empty()) {
+    e.wordnet = std::any_of(thing.classes.begin(), thing.classes.end(), [&](const ConceptClass& c) { return c.id == rule.class_id; });
+  } else if (!rule.class_name.empty()) {
+    for (const ConceptClass& said : concepts.classes_named(rule.class_name))
+      for (const ConceptClass& c : thing.classes)
+        if (c.id == said.id) (said.depth == 0 ? e.wordnet : e.wordnet_parent) = true;
+    if (e.wordnet) e.wordnet_parent = false;
+    // The class's own word in the thing's name: "toy hammer", "tissue box".
+    const std::vector<std::string> class_words = split_words(rule.class_name);
+    e.word_in_name = !class_words.empty() && in_name(thing, class_words.back());
   }
   if (!rule.modifiers.empty()) {
     const bool all = std::all_of(rule.modifiers.begin(), rule.modifiers.end(),
                                  [&](const std::string& m) { return in_name(thing, m); });
-    if (all) score += weights.modifier;
-    sure = sure && all;
-    if (all && rule.class_name.empty()) sure = true;
-    if (!all && !rule.class_name.empty()) score -= weights.modifier_missing;
+    e.modifiers_in_name = all;
+    e.modifiers_missing = !all;
   }
-  if (!thing.vector.empty()) {
-    std::vector<float> phrase = concepts.vector_of(join(words, " "));
-    if (!phrase.empty()) score += weights.vector * cosine(thing.vector, phrase);
+  std::vector<std::string> words = rule.modifiers;
+  if (!rule.class_name.empty()) words.push_back(rule.class_name);
+  if (words.empty()) return e;
+  const std::vector<float> phrase = concepts.vector_of(join(words, " "));
+  if (phrase.empty()) return e;
+  e.has_vectors = true;
+  if (!thing.vector.empty()) e.name_cosine = cosine(thing.vector, phrase);
+  if (!thing.head_vector.empty()) e.head_cosine = cosine(thing.head_vector, phrase);
+  e.word_cosine = e.name_cosine;
+  for (const std::vector<float>& v : thing.word_vectors) e.word_cosine = std::max(e.word_cosine, cosine(v, phrase));
+  // The names of the classes WordNet puts the thing in, near it: a hoodie
+  // is a garment, which is near "clothes"; a barbell, sports equipment.
+  for (const ConceptClass& c : thing.classes) {
+    if (c.depth > kAncestorDepth) continue;
+    const std::vector<float> name = concepts.vector_of(c.name);
+    if (!name.empty()) e.class_cosine = std::max(e.class_cosine, cosine(name, phrase) * c.weight);
   }
-  return score;
+  return e;
 }
 
-}  // namespace
+bool ClauseEvidence::sure() const { return wordnet || word_in_name; }
+
+double SaidRuleWeights::score(const ClassRule& rule, const ClauseEvidence& e) const {
+  double s = 0;
+  if (e.wordnet) s += wordnet;
+  if (e.wordnet_parent) s += wordnet_parent;
+  if (e.word_in_name) s += word_in_name;
+  if (e.modifiers_in_name) s += modifier;
+  if (e.modifiers_missing && !rule.class_name.empty()) s -= modifier_missing;
+  s += name_vector * e.name_cosine + word_vector * e.word_cosine + head_vector * e.head_cosine +
+       class_vector * e.class_cosine;
+  return s;
+}
+
 
 std::vector<DestinationProposal> said_rule_proposals(std::span<const ClassRule> rules, const KindProfile& thing,
                                                      RuleSource source, const ConceptSource& concepts,
@@ -70,22 +101,23 @@ std::vector<DestinationProposal> said_rule_proposals(std::span<const ClassRule> 
   // A rule for the rest takes the thing only when no other clause is sure
   // of it ("outerwear in the closet and other clothes on the bed": the
   // parka is outerwear).
+  std::vector<ClauseEvidence> evidence;
+  for (const ClassRule* rule : mine) evidence.push_back(clause_evidence(*rule, thing, concepts));
   std::vector<double> scores(mine.size(), 0.0);
   bool another_is_sure = false;
   for (std::size_t i = 0; i < mine.size(); ++i) {
     if (mine[i]->rest) continue;
-    bool sure = false;
-    scores[i] = class_score(*mine[i], thing, concepts, weights, sure);
-    another_is_sure = another_is_sure || sure;
+    scores[i] = weights.score(*mine[i], evidence[i]);
+    another_is_sure = another_is_sure || evidence[i].sure();
   }
   for (std::size_t i = 0; i < mine.size(); ++i) {
     const ClassRule& rule = *mine[i];
     if (!rule.rest) continue;
-    bool sure = false;
-    const double own = rule.class_name.empty() && rule.modifiers.empty() ? weights.rest
-                                                                         : class_score(rule, thing, concepts, weights, sure);
+    const double own = rule.class_name.empty() && rule.modifiers.empty() ? weights.rest : weights.score(rule, evidence[i]);
     scores[i] = own - (another_is_sure ? weights.rest_penalty : 0.0);
   }
+  if (source == RuleSource::kLlm)
+    for (double& s : scores) s *= weights.llm_sharpness;
   const double top = std::max(*std::max_element(scores.begin(), scores.end()), weights.none);
   double total = std::exp(weights.none - top);
   for (double& s : scores) total += s = std::exp(s - top);

@@ -32,6 +32,11 @@ std::vector<std::pair<std::string, int>> unmet_assertions(const Scenario& scenar
   return unmet;
 }
 
+std::string goal_parts_met(long long achieved, long long total) {
+  return std::to_string(achieved) + " of " + count_phrase(total, "part") + " of the goal " +
+         (achieved == 1 ? "is" : "are") + " met";
+}
+
 std::string teaching_summary(const Scenario& scenario, const State& end, const TeachingEnd& how) {
   std::vector<Literal> assertions = scenario.goal_assertions();
   int achieved = 0;
@@ -41,9 +46,8 @@ std::string teaching_summary(const Scenario& scenario, const State& end, const T
   const std::string instructions = count_phrase(how.instructions, "instruction");
   if (assertions.empty()) out += ", after " + instructions + ".\n";
   else
-    out += ": " + std::to_string(achieved) + " of " +
-           count_phrase(static_cast<long long>(assertions.size()), "goal assertion") +
-           (achieved == 1 ? " holds" : " hold") + ", after " + instructions + ".\n";
+    out += ": " + goal_parts_met(achieved, static_cast<long long>(assertions.size())) + ", after " + instructions +
+           ".\n";
   World now = scenario.world;
   now.state = end;
   for (const auto& [sentence, times] : unmet_assertions(scenario, now))
@@ -59,7 +63,7 @@ std::string performance_summary(const PerformanceEnd& how) {
   if (how.measured) {
     char percent[32];
     std::snprintf(percent, sizeof percent, "%.1f", how.completion);
-    out += std::to_string(how.achieved) + " of " + count_phrase(how.total, "goal assertion") + " (" + percent + "%), ";
+    out += goal_parts_met(how.achieved, how.total) + " (" + percent + "%), ";
   }
   out += count_phrase(how.actions, "action") + ", 0 instructions, " +
          count_phrase(static_cast<long long>(how.search_nodes), "search node") + ", 0 LLM calls.\n";

@@ -30,7 +30,12 @@ struct TeachingEnd {
   std::string how_to_keep;
 };
 
-// "The task is learned: 28 of 30 goal assertions hold, after 40
+// How much of a world's goal holds, in a person's words: "28 of 30 parts of
+// the goal are met" ("1 of 14 parts of the goal is met"). A part is one goal
+// assertion of the scenario's intent (the experiment's term).
+std::string goal_parts_met(long long achieved, long long total);
+
+// "The task is learned: 28 of 30 parts of the goal are met, after 40
 // instructions.", a "Not done: ..." line per unmet assertion, then where
 // the knowledge is kept, or that nothing was saved. One line each, each
 // ending in a newline.
@@ -48,8 +53,8 @@ struct PerformanceEnd {
   std::vector<std::string> help_needed;
 };
 
-// "Performed with learned knowledge alone: 30 of 30 goal assertions
-// (100.0%), 44 actions, 0 instructions, 0 search nodes, 0 LLM calls.", what
+// "Performed with learned knowledge alone: 30 of 30 parts of the goal are
+// met (100.0%), 44 actions, 0 instructions, 0 search nodes, 0 LLM calls.", what
 // was carried over from other worlds, and where help would have been
 // needed ("No help was needed."). One line each.
 std::string performance_summary(const PerformanceEnd& how);

@@ -322,6 +322,29 @@ std::string slip_of(const World& world, const std::string& word) {
 
 std::string quote(const std::string& s) { return "\"" + s + "\""; }
 
+// The first word of a phrase nothing here fits that only describes ("wet",
+// "dirty", "empty", "obviously"): an adjective or an "-ly" adverb to
+// WordNet, no property of anything here and no part of a name here; "" when
+// none.
+std::string unmodelled_modifier(const Grounder& grounder, const World& world, const Words& phrase) {
+  const Lexicon& lexicon = grounder.lexicon();
+  if (!lexicon.has_wordnet()) return "";
+  for (const std::string& w : phrase) {
+    if (is_determiner(w) || w.size() < 3) continue;
+    bool describes = !lexicon.adjective_lemmas(w).empty() || (w.ends_with("ly") && lexicon.knows(w));
+    if (!describes) continue;
+    bool here = false;
+    for (const ObjectInfo& info : world.universe->objects()) {
+      std::vector<std::string> parts = name_parts(info.category);
+      if (std::find(info.properties.begin(), info.properties.end(), w) != info.properties.end() ||
+          std::find(parts.begin(), parts.end(), w) != parts.end())
+        here = true;
+    }
+    if (!here) return w;
+  }
+  return "";
+}
+
 // The answer's words read at the question; a word neither the world nor
 // WordNet knows ("nah", "lol", "btw") is skipped when the rest then reads
 // whole, and the notes say so. A word the meaning hangs on is not guessed
@@ -330,9 +353,22 @@ Reply read_answer(const Grounder& grounder, const World& world, const ReplyConte
                   std::vector<std::string>& notes) {
   const Reply first = read_reply(grounder, world, context, text);
   Reply reply = first;
-  std::vector<std::string> skipped;
+  std::vector<std::string> skipped, modifiers;
   for (int tries = 0; tries < 3 && !usable(reply); ++tries) {
     const auto* u = std::get_if<Unusable>(&reply);
+    if (u != nullptr && u->failure && u->failure->kind == FailureKind::kUngroundedObject) {
+      // "the wet one", "the empty can", "in the trash obviously": a word
+      // that describes, which the world does not model, narrows nothing.
+      std::string modifier = unmodelled_modifier(grounder, world, split_words(u->failure->detail));
+      Words words = reply_words(text);
+      auto at = std::find(words.begin(), words.end(), modifier);
+      if (modifier.empty() || at == words.end()) break;
+      words.erase(at);
+      modifiers.push_back(modifier);
+      text = quoted_words(words);
+      reply = read_reply(grounder, world, context, text);
+      continue;
+    }
     if (u == nullptr || !u->failure || u->failure->kind != FailureKind::kUnknownWord) break;
     const std::string word = u->failure->detail;
     Words words = reply_words(text);
@@ -352,6 +388,8 @@ Reply read_answer(const Grounder& grounder, const World& world, const ReplyConte
   }
   if (!usable(reply)) return first;
   for (const std::string& word : skipped) notes.push_back("I took " + quote(word) + " as a filler.");
+  for (const std::string& word : modifiers)
+    notes.push_back("I took " + quote(word) + " as telling nothing apart: nothing here is told apart by it.");
   return reply;
 }
 
@@ -492,6 +530,15 @@ bool tells_what_someone_did(const Words& words) {
   for (std::size_t i = 1; i < words.size(); ++i)
     if (words[i] == "left" && is_one_of(words[i - 1], {"you", "someone", "somebody", "they", "he", "she", "we", "i",
                                                         "kids", "who", "guest", "guests"}))
+      return true;
+  return false;
+}
+
+// "there by the X", "here next to the X": a spot said by another thing.
+bool there_described(const Words& words) {
+  for (std::size_t i = 0; i + 1 < words.size(); ++i)
+    if (is_one_of(words[i], {"there", "here"}) &&
+        is_one_of(words[i + 1], {"by", "near", "next", "beside", "behind", "under", "above", "below", "between", "against"}))
       return true;
   return false;
 }
@@ -715,6 +762,10 @@ ReplyActs read_acts(const Grounder& grounder, const World& world, const ReplyCon
     if (door_first[i]) first_doors.push_back(Command{Command::Kind::kDo, "", {}, actions});
     else after.insert(after.begin(), Command{Command::Kind::kDo, "", {}, actions});
   }
+  // "over there by the thingamajig", "here next to the sink": "there" is
+  // a spot said by another thing, not the place named last; asked back.
+  if (answered && usable(reply) && there_described(reply_words(answer_text)))
+    reply = Unusable{"I can't tell which place \"there\" is. Please name the place.", example_replies(world, at), std::nullopt, {}};
   if (answered) {
     std::vector<Action> closings = other_closings(grounder, world, answer_text, reply);
     if (!closings.empty()) after.push_back(Command{Command::Kind::kDo, "", {}, closings});

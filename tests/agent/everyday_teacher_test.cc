@@ -192,7 +192,7 @@ void expect_taught_within_floor(const std::string& relative_path) {
   const int floor = counter.floor();
   EXPECT_EQ(taught.exit_code, 0) << taught.screen;
   std::string total = std::to_string(scenario.goal_assertions().size());
-  EXPECT_THAT(taught.screen, ::testing::HasSubstr("The task is learned: " + total + " of " + total + " goal assertions hold"))
+  EXPECT_THAT(taught.screen, ::testing::HasSubstr("The task is learned: " + total + " of " + total + " parts of the goal are met"))
       << taught.screen;
   EXPECT_LE(taught.turns * 10, floor * 11) << "turns " << taught.turns << ", floor " << floor << "\n" << taught.screen;
   EXPECT_GE(taught.turns, floor) << taught.screen;
@@ -210,7 +210,7 @@ void expect_taught_by_a_messy_teacher(const std::string& relative_path) {
   if (std::getenv("APPRENTICE_SHOW_SCREEN") != nullptr) std::cout << taught.screen << "\n";
   EXPECT_EQ(taught.exit_code, 0) << taught.screen;
   std::string total = std::to_string(scenario.goal_assertions().size());
-  EXPECT_THAT(taught.screen, ::testing::HasSubstr("The task is learned: " + total + " of " + total + " goal assertions hold"))
+  EXPECT_THAT(taught.screen, ::testing::HasSubstr("The task is learned: " + total + " of " + total + " parts of the goal are met"))
       << taught.screen;
   // The answers to "what's left?": between parts, and within one.
   EXPECT_THAT(taught.screen, ::testing::HasSubstr("So far I have learned to ")) << taught.screen;

@@ -104,7 +104,7 @@ TEST_F(Teach, LearnsTheTaskFromAScriptOnStdinSayingWhatItUnderstoodAndDid) {
                 "Agent: What should I do next to tidy the kitchen?\n"
                 "Instructor: You are done.\n"
                 "Agent: So the task is done.\n"
-                "The task is learned: 3 of 3 goal assertions hold, after 8 instructions.\n" + kept());
+                "The task is learned: 3 of 3 parts of the goal are met, after 8 instructions.\n" + kept());
   Knowledge knowledge = stored();
   EXPECT_EQ(knowledge.goals.size(), 2u);
   ASSERT_EQ(knowledge.tasks.size(), 1u);
@@ -112,8 +112,9 @@ TEST_F(Teach, LearnsTheTaskFromAScriptOnStdinSayingWhatItUnderstoodAndDid) {
 }
 
 TEST_F(Teach, QuietKeepsOnlyTheQuestionsAndTheSummary) {
-  std::vector<std::string> args = teach_args();
-  args.push_back("--quiet");
+  // The world given first, without --scenario, as a newcomer types it.
+  std::vector<std::string> args = {APPRENTICE_BINARY, "teach", scenario_.string(), "--knowledge",
+                                   knowledge().string(), "--quiet"};
   Process teach(args);
   ASSERT_TRUE(teach.write(lines(full_script())));
   EXPECT_EQ(teach.wait(), 0) << teach.out() << teach.err();
@@ -121,7 +122,7 @@ TEST_F(Teach, QuietKeepsOnlyTheQuestionsAndTheSummary) {
   EXPECT_THAT(teach.out(), Not(HasSubstr("Agent: So ")));
   EXPECT_THAT(teach.out(), Not(HasSubstr("Agent: I opened")));
   EXPECT_THAT(teach.out(), HasSubstr("Agent: Where should the ketchup on the table go?\nInstructor: "));
-  EXPECT_THAT(teach.out(), EndsWith("The task is learned: 3 of 3 goal assertions hold, after 8 instructions.\n" + kept()));
+  EXPECT_THAT(teach.out(), EndsWith("The task is learned: 3 of 3 parts of the goal are met, after 8 instructions.\n" + kept()));
 }
 
 TEST_F(Teach, TheInstructorTeachesActionsWithoutSearchAndRefusalsArePlainEnglish) {
@@ -148,7 +149,7 @@ TEST_F(Teach, TheInstructorTeachesActionsWithoutSearchAndRefusalsArePlainEnglish
                                      "Agent: I am not holding the ketchup, so I cannot put it in the fridge.\n"));
   EXPECT_THAT(teach.out(), HasSubstr("Instructor: Close the fridge.\n"
                                      "Agent: I opened the fridge, put the ketchup in it, and closed it.\n"));
-  EXPECT_THAT(teach.out(), HasSubstr("3 of 3 goal assertions hold, after 15 instructions."));
+  EXPECT_THAT(teach.out(), HasSubstr("3 of 3 parts of the goal are met, after 15 instructions."));
 }
 
 TEST_F(Teach, HelpAndStatusAnswerThePersonAndAreNotInstructions) {
@@ -172,7 +173,7 @@ TEST_F(Teach, HelpAndStatusAnswerThePersonAndAreNotInstructions) {
                                      "about the ketchup. So far I know 0 goals and 0 rules, after 3 instructions this "
                                      "session.\n" +
                                      question + "Instructor: " + kKetchupGoal + "\n"));
-  EXPECT_THAT(teach.out(), HasSubstr("3 of 3 goal assertions hold, after 8 instructions."));
+  EXPECT_THAT(teach.out(), HasSubstr("3 of 3 parts of the goal are met, after 8 instructions."));
 }
 
 TEST_F(Teach, UndoForgetsTheLastGoalInMemoryAndStoreAndPutsTheWorldBack) {
@@ -199,7 +200,7 @@ TEST_F(Teach, UndoForgetsTheLastGoalInMemoryAndStoreAndPutsTheWorldBack) {
                         "the table.\n"
                         "Agent: Where should the ketchup on the table go?\n"));
   // "undo" is not an instruction; the wrong goal was one.
-  EXPECT_THAT(teach.out(), HasSubstr("3 of 3 goal assertions hold, after 9 instructions."));
+  EXPECT_THAT(teach.out(), HasSubstr("3 of 3 parts of the goal are met, after 9 instructions."));
   Knowledge knowledge = stored();
   ASSERT_EQ(knowledge.goals.size(), 2u);
   for (const GoalKnowledge& g : knowledge.goals.all()) {
@@ -219,7 +220,7 @@ TEST_F(Teach, UndoOfAStepOfTheTaskStructureAsksForItAgain) {
                                      "Instructor: undo\n"
                                      "Agent: I forgot what you told me last: \"Clear an object that is on the table.\"\n"
                                      "Agent: What should I do next to tidy the kitchen?\n"));
-  EXPECT_THAT(teach.out(), HasSubstr("3 of 3 goal assertions hold, after 9 instructions."));
+  EXPECT_THAT(teach.out(), HasSubstr("3 of 3 parts of the goal are met, after 9 instructions."));
   EXPECT_EQ(stored().tasks.at(0).subtasks.size(), 1u);
 }
 
@@ -233,7 +234,7 @@ TEST_F(Teach, ForgetAKindOfObjectForgetsWhereItGoes) {
   EXPECT_THAT(teach.out(), HasSubstr("Agent: I have not learned where to put zebra, so there is nothing to forget.\n"));
   // A plural names the kind too.
   EXPECT_THAT(teach.out(), HasSubstr("Agent: I forgot where the ketchup goes; I will ask when I meet one.\n"));
-  EXPECT_THAT(teach.out(), HasSubstr("Stopped: 2 of 3 goal assertions hold, after 4 instructions.\n"));
+  EXPECT_THAT(teach.out(), HasSubstr("Stopped: 2 of 3 parts of the goal are met, after 4 instructions.\n"));
   EXPECT_EQ(stored().goals.size(), 0u);
 }
 
@@ -255,7 +256,7 @@ TEST_F(Teach, CtrlDMidWayStopsCleanlyAndTeachingAgainAsksOnlyWhatIsNew) {
   EXPECT_EQ(code, 1) << "the goal was not reached: " << teach.out() << teach.err();
   // A clean message on its own line, naming what is not done, no error.
   EXPECT_THAT(teach.out(), EndsWith("Agent: Is there more to clear on the table, or is that all?\nInstructor: \n"
-                                    "Stopped: 2 of 3 goal assertions hold, after 4 instructions.\n"
+                                    "Stopped: 2 of 3 parts of the goal are met, after 4 instructions.\n"
                                     "Not done: the paper plate should be in the garbage.\n" +
                                     kept()));
   EXPECT_THAT(teach.err(), Not(HasSubstr("rror")));
@@ -278,7 +279,7 @@ TEST_F(Teach, CtrlDMidWayStopsCleanlyAndTeachingAgainAsksOnlyWhatIsNew) {
                                      "Agent: I opened the fridge, put the ketchup in it, and closed it.\n"
                                      "Agent: Where should the paper plate on the table go?\n"));
   EXPECT_THAT(again.out(), HasSubstr("Agent: What should I do next to tidy the kitchen?\n"));
-  EXPECT_THAT(again.out(), HasSubstr("The task is learned: 3 of 3 goal assertions hold, after 3 instructions."));
+  EXPECT_THAT(again.out(), HasSubstr("The task is learned: 3 of 3 parts of the goal are met, after 3 instructions."));
   EXPECT_THAT(again.out(), Not(HasSubstr(kKetchupGoal)));
   EXPECT_EQ(stored().goals.size(), 2u);
 }
@@ -287,7 +288,7 @@ TEST_F(Teach, EndOfInputBeforeAnythingIsStillCleanAndNamesWhatIsNotDone) {
   // Only the fridge's door holds already (it starts closed).
   Process teach(teach_args());
   EXPECT_EQ(teach.wait(), 1);
-  EXPECT_THAT(teach.out(), EndsWith("Instructor: \nStopped: 1 of 3 goal assertions holds, after 0 instructions.\n"
+  EXPECT_THAT(teach.out(), EndsWith("Instructor: \nStopped: 1 of 3 parts of the goal is met, after 0 instructions.\n"
                                     "Not done: the ketchup should be in the fridge.\n"
                                     "Not done: the paper plate should be in the garbage.\n" +
                                     kept()));
@@ -364,7 +365,7 @@ TEST_F(Teach, APlayroomTaughtAsAPersonTalks) {
   EXPECT_THAT(teach.out(), HasSubstr("Instructor: the cars go into the blue one\nAgent: So the toy car goes in the blue bin.\n"));
   EXPECT_THAT(teach.out(), HasSubstr("Instructor: same as the book on the floor\nAgent: So the picture book goes on the bookshelf.\n"));
   EXPECT_THAT(teach.out(), HasSubstr("Instructor: crayons go with the blocks\nAgent: So the crayon goes in the red bin.\n"));
-  EXPECT_THAT(teach.out(), HasSubstr("The task is learned: 14 of 14 goal assertions hold, after 13 instructions.\n"));
+  EXPECT_THAT(teach.out(), HasSubstr("The task is learned: 14 of 14 parts of the goal are met, after 13 instructions.\n"));
 }
 
 // Two parts of the task said in one reply: the second is taken when the
@@ -382,7 +383,7 @@ TEST_F(Teach, TwoPartsSaidInOneReplyAreDoneInTurn) {
   EXPECT_EQ(teach.wait(), 0) << teach.out() << teach.err();
   EXPECT_THAT(teach.out(), HasSubstr("Agent: There is nothing left on the floor.\n"
                                      "Agent: So I empty what is in the crates, one thing at a time.\n"));
-  EXPECT_THAT(teach.out(), HasSubstr("The task is learned: 14 of 14 goal assertions hold, after 12 instructions.\n"));
+  EXPECT_THAT(teach.out(), HasSubstr("The task is learned: 14 of 14 parts of the goal are met, after 12 instructions.\n"));
 }
 
 // "we're done" before any part of the task is taught is not the end of
@@ -428,7 +429,7 @@ TEST_F(Teach, RepliesTheAgentCannotUseAreSaidSoWithExamplesAndAskedAgain) {
   // unusable reply still counts.
   EXPECT_THAT(teach.out(), ::testing::ContainsRegex("in the moon\\.\nAgent: [^\n]+ You could say, for example, \"[^\n]+\n"
                                                     "Agent: Where should the ketchup on the table go\\?\n"));
-  EXPECT_THAT(teach.out(), HasSubstr("3 of 3 goal assertions hold, after 9 instructions."));
+  EXPECT_THAT(teach.out(), HasSubstr("3 of 3 parts of the goal are met, after 9 instructions."));
 }
 
 TEST_F(Teach, APersonIsNeverGivenUpOn) {
@@ -439,7 +440,7 @@ TEST_F(Teach, APersonIsNeverGivenUpOn) {
   for (int i = 0; i < 6; ++i) script.insert(script.begin() + 3, "blah blah");
   ASSERT_TRUE(teach.write(lines(script)));
   EXPECT_EQ(teach.wait(), 0) << teach.out() << teach.err();
-  EXPECT_THAT(teach.out(), HasSubstr("3 of 3 goal assertions hold, after 14 instructions."));
+  EXPECT_THAT(teach.out(), HasSubstr("3 of 3 parts of the goal are met, after 14 instructions."));
 }
 
 // Said ahead: a goal for another thing this subtask will come to is learned
@@ -458,7 +459,7 @@ TEST_F(Teach, AGoalForAThingStillToComeIsLearnedForWhenItComes) {
                                      "Agent: Where should the ketchup on the table go?\n"));
   EXPECT_THAT(teach.out(), HasSubstr("Agent: Next, the paper plate on the table: it goes in the garbage.\n"));
   EXPECT_THAT(teach.out(), Not(HasSubstr("Where should the paper plate")));
-  EXPECT_THAT(teach.out(), HasSubstr("3 of 3 goal assertions hold, after 7 instructions."));
+  EXPECT_THAT(teach.out(), HasSubstr("3 of 3 parts of the goal are met, after 7 instructions."));
   EXPECT_EQ(stored().goals.size(), 2u);
 }
 
@@ -502,7 +503,7 @@ TEST_F(Teach, ALaundryTaughtAsAPersonTalks) {
   EXPECT_THAT(out, HasSubstr("Instructor: clear it\nAgent: So I clear what is on the folding table, one thing at a time.\n"));
   EXPECT_THAT(out, HasSubstr("Instructor: same again\nAgent: So the bleach goes on the high shelf.\n"));
   EXPECT_THAT(out, HasSubstr("Instructor: same as the tissue\nAgent: So the lint goes in the wastebasket.\n"));
-  EXPECT_THAT(out, HasSubstr("The task is learned: 14 of 14 goal assertions hold, after 17 instructions.\n"));
+  EXPECT_THAT(out, HasSubstr("The task is learned: 14 of 14 parts of the goal are met, after 17 instructions.\n"));
   // A goal for each of the ten kinds, the jeans' among them.
   Knowledge knowledge = stored(laundry);
   EXPECT_EQ(knowledge.goals.size(), 10u);
@@ -581,7 +582,7 @@ TEST_F(Teach, AGarageTaughtPlaceByPlace) {
                              "Agent: What should I do with the things in the buckets? You could say, for example, "
                              "\"clear the buckets\""));
   EXPECT_THAT(out, HasSubstr("Instructor: empty them\nAgent: So I empty what is in the buckets, one thing at a time.\n"));
-  EXPECT_THAT(out, HasSubstr("The task is learned: 16 of 16 goal assertions hold"));
+  EXPECT_THAT(out, HasSubstr("The task is learned: 16 of 16 parts of the goal are met"));
 }
 
 // "tools go in the top drawer": WordNet has the hammer, the screwdrivers
@@ -623,7 +624,7 @@ TEST_F(Teach, AGroceryRunTaughtAsAPersonTalks) {
   EXPECT_THAT(out, HasSubstr("Instructor: crackers, cereal and granola bars in the pantry, close it\n"
                              "Agent: So the saltines go in the pantry, and the pantry ends closed.\n"
                              "Agent: The same goes for the cereal box and the granola bars, when I come to them.\n"));
-  EXPECT_THAT(out, HasSubstr("The task is learned: 18 of 18 goal assertions hold, after 15 instructions.\n"));
+  EXPECT_THAT(out, HasSubstr("The task is learned: 18 of 18 parts of the goal are met, after 15 instructions.\n"));
 }
 
 }  // namespace

@@ -84,7 +84,7 @@ Agent: There is nothing left on the table.
 Agent: What should I do next to tidy the kitchen?
 Instructor: You are done.
 Agent: So the task is done.
-The task is learned: 3 of 3 goal assertions hold, after 3 instructions.
+The task is learned: 3 of 3 parts of the goal are met, after 3 instructions.
 What you taught me is kept in STORE.
 )";
 

@@ -61,7 +61,34 @@ TEST_F(Conventions, AnUnknownFlagIsReportedBeforeAMissingOne) {
   EXPECT_EQ(r.err, "apprentice: teach: unknown option \"--frob\". See 'apprentice help teach'.\n");
   Invocation missing = run({"teach"});
   EXPECT_EQ(missing.exit_code, 2);
-  EXPECT_EQ(missing.err, "apprentice: teach: --scenario is required. See 'apprentice help teach'.\n");
+  EXPECT_EQ(missing.err,
+            "apprentice: teach: no world given: name a scenario file, as in 'apprentice teach FILE' or "
+            "'--scenario FILE'. See 'apprentice help teach'.\n");
+}
+
+// What a newcomer types first, `apprentice teach kitchen.yaml`, works as
+// --scenario does, in every command that works in one world.
+TEST_F(Conventions, TheWorldMayBeGivenWithoutScenario) {
+  for (const std::string command : {"world", "plan", "export-pddl", "experiment", "run"}) {
+    std::vector<std::string> flagged{command, "--scenario", kitchen(), "--frob"};
+    std::vector<std::string> bare{command, kitchen(), "--frob"};
+    // Both forms reach the same check of the rest of the line.
+    EXPECT_EQ(run(flagged).err, run(bare).err) << command;
+  }
+  Invocation flagged = run({"world", "--scenario", kitchen(), "--json"});
+  Invocation bare = run({"world", kitchen(), "--json"});
+  EXPECT_EQ(bare.exit_code, 0) << bare.err;
+  EXPECT_EQ(bare.out, flagged.out);
+  EXPECT_THAT(bare.out, HasSubstr("\"fridge1\""));
+  Invocation plan = run({"plan", kitchen(), "--goal", "(closed fridge1)"});
+  EXPECT_EQ(plan.exit_code, 0) << plan.err;
+  EXPECT_THAT(plan.out, StartsWith(";; status solved, 0 steps"));
+  Invocation twice = run({"world", kitchen(), "--scenario", kitchen()});
+  EXPECT_EQ(twice.exit_code, 2);
+  EXPECT_THAT(twice.err, HasSubstr("the world is already given by --scenario"));
+  Invocation two = run({"world", kitchen(), kitchen()});
+  EXPECT_EQ(two.exit_code, 2);
+  EXPECT_THAT(two.err, HasSubstr("unexpected argument"));
 }
 
 TEST_F(Conventions, AMistypedFlagGetsTheNearestOne) {

@@ -76,7 +76,7 @@ TEST(Face, LearningWithTheSimulatedInstructorGivesTableThree) {
   EXPECT_EQ(report->counts.words, 603);
   EXPECT_EQ(report->assertions_achieved, report->assertions_total);
   EXPECT_EQ(report->objects_done, 30);
-  EXPECT_THAT(report->summary, HasSubstr("The task is learned: 35 of 35 goal assertions hold, after 40 instructions."));
+  EXPECT_THAT(report->summary, HasSubstr("The task is learned: 35 of 35 parts of the goal are met, after 40 instructions."));
   EXPECT_THAT(report->summary, HasSubstr("Nothing was saved."));
   // Where each goal came from keeps its name in the JSON: the teacher's
   // first of a kind, then memory for the rest of that kind.
@@ -90,7 +90,7 @@ TEST(Face, LearningWithTheSimulatedInstructorGivesTableThree) {
   ASSERT_TRUE(alone) << alone.error().describe();
   EXPECT_EQ(alone->assertions_achieved, alone->assertions_total);
   EXPECT_TRUE(alone->agent.help_needed.empty());
-  EXPECT_THAT(alone->summary, HasSubstr("Performed with learned knowledge alone: 35 of 35 goal assertions (100.0%)"));
+  EXPECT_THAT(alone->summary, HasSubstr("Performed with learned knowledge alone: 35 of 35 parts of the goal are met (100.0%)"));
   nlohmann::json j = nlohmann::json::parse(to_json(*alone));
   EXPECT_EQ(j["instructions"], 0);
   EXPECT_EQ(j["assertions_achieved"], 35);

@@ -115,5 +115,37 @@ TEST(SaidRules, ModifiersInTheNameDecideAndAnExceptionIsHonoured) {
   EXPECT_LT(excepted.front().confidence, 0.5);
 }
 
+TEST(SaidRules, TheClassWordInTheNameIsEvidence) {
+  TableConcepts concepts;
+  std::vector<ClassRule> rules = {said("toys", in("drawer")), said("clothes", in("basket"))};
+  // Neither WordNet nor the vectors know the toy hammer here: its name
+  // says "toy".
+  KindProfile hammer = thing("toy hammer", {}, {});
+  hammer.head = "hammer";
+  hammer.modifiers = {"toy"};
+  auto proposals = said_rule_proposals(rules, hammer, RuleSource::kPerson, concepts);
+  ASSERT_FALSE(proposals.empty());
+  EXPECT_EQ(proposals.front().destination, in("drawer"));
+  EXPECT_GT(proposals.front().confidence, 0.5);
+  ClauseEvidence evidence = clause_evidence(rules[0], hammer, concepts);
+  EXPECT_TRUE(evidence.word_in_name);
+  EXPECT_TRUE(evidence.sure());
+  EXPECT_FALSE(clause_evidence(rules[1], hammer, concepts).word_in_name);
+}
+
+TEST(SaidRules, AnLlmsSummaryIsReadLessSurelyThanThePersonsOwnWords) {
+  TableConcepts concepts;
+  std::vector<ClassRule> rules = {said("toys", in("storage-box")), said("clothes", on("chair"))};
+  std::vector<ClassRule> summary = rules;
+  for (ClassRule& rule : summary) rule.source = RuleSource::kLlm;
+  const KindProfile bear = thing("teddy bear", {"plaything"}, {0.7f, 0.7f});
+  auto person = said_rule_proposals(rules, bear, RuleSource::kPerson, concepts);
+  auto llm = said_rule_proposals(summary, bear, RuleSource::kLlm, concepts);
+  ASSERT_FALSE(person.empty());
+  ASSERT_FALSE(llm.empty());
+  EXPECT_EQ(llm.front().destination, person.front().destination);
+  EXPECT_LT(llm.front().confidence, person.front().confidence);
+}
+
 }  // namespace
 }  // namespace apprentice

@@ -120,7 +120,7 @@ test('limits: an oversized body, an oversized world, a reply too long, too many 
     const stop = await second.question();
     assert.equal((await second.reply('quit', stop.seq)).status, 200);
     const end = await second.waitFor((e) => e.type === 'end');
-    assert.match(end.text, /^Stopped: 1 of 14 goal assertions holds, after 0 instructions\./);
+    assert.match(end.text, /^Stopped: 1 of 14 parts of the goal is met, after 0 instructions\./);
     const fourth = await client.start('tidy-kitchen');
     first.close(); second.close(); fourth.close();
   });

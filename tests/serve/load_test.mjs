@@ -26,7 +26,7 @@ test('20 sessions teach at once, nothing lost, none seeing another', { timeout: 
       const w = worlds[names[i]];
       const s = sessions[i];
       assert.equal(ends[i].type, 'end', s.id);
-      assert.match(ends[i].text, new RegExp(`^The task is learned: ${w.total} of ${w.total} goal assertions hold, after ${w.lines.length} instructions`));
+      assert.match(ends[i].text, new RegExp(`^The task is learned: ${w.total} of ${w.total} parts of the goal are met, after ${w.lines.length} instructions`));
       // Every reply heard once, in the order sent.
       assert.deepEqual(s.events.filter((e) => e.type === 'reply').map((e) => e.text), w.lines);
       const seqs = s.events.map((e) => e.seq);

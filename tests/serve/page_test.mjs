@@ -97,7 +97,7 @@ test('the kitchen taught to 100% through the page, with an undo and a reload on 
   }
   const summary = page.locator('#conversation li.summary');
   await summary.waitFor();
-  assert.match(await summary.textContent(), /The task is learned: 35 of 35 goal assertions hold, after 28 instructions/);
+  assert.match(await summary.textContent(), /The task is learned: 35 of 35 parts of the goal are met, after 28 instructions/);
   await drawn(page);
   assert.equal(await placeOf(page, 'cereal-box1'), 'pantry1');
   assert.equal(await placeOf(page, 'metal-fork2'), 'drawer1');
@@ -139,7 +139,7 @@ test('two tabs on two worlds at once, each its own session; a "Which ...?" answe
   assert.doesNotMatch(await playroom.locator('#conversation').textContent(), /kitchen|plate/);
   await playroom.getByRole('button', { name: 'Stop' }).click();
   await playroom.locator('#conversation li.summary').waitFor();
-  assert.match(await playroom.locator('#conversation li.summary .text').textContent(), /^Stopped: 4 of 14 goal assertions hold/);
+  assert.match(await playroom.locator('#conversation li.summary .text').textContent(), /^Stopped: 4 of 14 parts of the goal are met/);
   // The kitchen goes on after the playroom stopped.
   await reply(kitchen, 'in the dishwasher, close it');
   assert.equal(await lastQuestion(kitchen), 'Where should the metal fork on the table go?');
