@@ -201,6 +201,53 @@ std::map<const CLI::App*, std::vector<CLI::Option*>> defer_requirements(CLI::App
   return required;
 }
 
+// The world a command works in, given either way: `apprentice teach FILE`
+// or `apprentice teach --scenario FILE` (not both). `serve` takes several.
+class WorldArguments {
+ public:
+  void add(CLI::App* command, std::string& scenario) {
+    Argument& world = worlds_[command];
+    world.scenario = &scenario;
+    command->add_option("--scenario", scenario, "Scenario file (YAML); it may also be given first, without --scenario");
+    command->add_option("world", world.given, "Scenario file (YAML): the same as --scenario FILE");
+  }
+  void add_many(CLI::App* command, std::vector<std::string>& scenarios) {
+    Argument& world = worlds_[command];
+    world.many = &scenarios;
+    command->add_option("world", world.many_given, "Worlds to offer, as --scenario FILE (after those given with --scenario)");
+  }
+  // Once `command`'s line is parsed: its world where the command reads it,
+  // or a CLI error naming what is wrong.
+  void take(const CLI::App* command) {
+    auto found = worlds_.find(command);
+    if (found == worlds_.end()) return;
+    Argument& world = found->second;
+    if (world.many != nullptr) {
+      world.many->insert(world.many->end(), world.many_given.begin(), world.many_given.end());
+      return;
+    }
+    if (!world.given.empty()) {
+      if (!world.scenario->empty())
+        throw CLI::ValidationError("unexpected argument " + apprentice::quoted(world.given) +
+                                   ": the world is already given by --scenario");
+      *world.scenario = world.given;
+    }
+    if (world.scenario->empty())
+      throw CLI::ValidationError("no world given: name a scenario file, as in 'apprentice " + command->get_name() +
+                                 " FILE' or '--scenario FILE'");
+  }
+
+ private:
+  struct Argument {
+    std::string* scenario = nullptr;           // where --scenario stores it
+    std::vector<std::string>* many = nullptr;  // serve's worlds
+    std::string given;                         // the world given without --scenario
+    std::vector<std::string> many_given;       // serve's, given without --scenario
+  };
+  // std::map: its elements stay where they are, as CLI11 keeps pointers to them.
+  std::map<const CLI::App*, Argument> worlds_;
+};
+
 int run(int argc, char** argv) {
   CLI::App app{"apprentice: an agent that learns new tasks online, in one shot, from an instructor, "
                "its own search, an LLM and WordNet"};
@@ -221,43 +268,10 @@ int run(int argc, char** argv) {
   // Each subcommand's action; the options it requires are checked first
   // (see defer_requirements).
   std::map<const CLI::App*, std::vector<CLI::Option*>> required;
-  // The world a command works in, given either way: `apprentice teach FILE`
-  // or `apprentice teach --scenario FILE` (not both). `serve` takes several.
-  struct WorldArgument {
-    std::string* scenario = nullptr;          // where --scenario stores it
-    std::vector<std::string>* many = nullptr;  // serve's worlds
-    std::string given;                         // the world given without --scenario
-    std::vector<std::string> many_given;       // serve's, given without --scenario
-  };
-  std::map<const CLI::App*, std::unique_ptr<WorldArgument>> worlds;
-  auto add_world = [&worlds](CLI::App* command, std::string& scenario) {
-    auto world = std::make_unique<WorldArgument>();
-    world->scenario = &scenario;
-    command->add_option("--scenario", scenario, "Scenario file (YAML); it may also be given first, without --scenario");
-    command->add_option("world", world->given, "Scenario file (YAML): the same as --scenario FILE");
-    worlds[command] = std::move(world);
-  };
-  auto take_world = [&worlds](const CLI::App* command) {
-    auto found = worlds.find(command);
-    if (found == worlds.end()) return;
-    WorldArgument& world = *found->second;
-    if (world.many != nullptr) {
-      world.many->insert(world.many->end(), world.many_given.begin(), world.many_given.end());
-      return;
-    }
-    if (!world.given.empty()) {
-      if (!world.scenario->empty())
-        throw CLI::ValidationError("unexpected argument " + apprentice::quoted(world.given) +
-                                   ": the world is already given by --scenario");
-      *world.scenario = world.given;
-    }
-    if (world.scenario->empty())
-      throw CLI::ValidationError("no world given: name a scenario file, as in 'apprentice " + command->get_name() +
-                                 " FILE' or '--scenario FILE'");
-  };
-  auto on_run = [&required, take_world](CLI::App* command, std::function<void()> action) {
-    command->callback([&required, take_world, command, action = std::move(action)] {
-      take_world(command);
+  WorldArguments worlds;
+  auto on_run = [&required, &worlds](CLI::App* command, std::function<void()> action) {
+    command->callback([&required, &worlds, command, action = std::move(action)] {
+      worlds.take(command);
       for (const CLI::Option* option : required[command])
         if (option->count() == 0) throw CLI::RequiredError(option->get_name());
       action();
@@ -268,14 +282,14 @@ int run(int argc, char** argv) {
 
   WorldOptions world;
   auto* world_cmd = app.add_subcommand("world", "Print the perceived world of a scenario (never its intent)");
-  add_world(world_cmd, world.scenario);
+  worlds.add(world_cmd, world.scenario);
   world_cmd->add_flag("--json", world.json, "Machine-readable output");
   on_run(world_cmd, [&] { result = run_world(world, std::cout); });
 
   PlanOptions plan;
   auto* plan_cmd = app.add_subcommand(
       "plan", "Plan from a scenario's state to a goal: greedy best-first search, or iterative deepening with --depth");
-  add_world(plan_cmd, plan.scenario);
+  worlds.add(plan_cmd, plan.scenario);
   plan_cmd->add_option("--goal", plan.goal,
                        "Goal, e.g. '(and (in ketchup1 fridge1) (closed fridge1))', or 'intent' for the whole task")
       ->required();
@@ -294,7 +308,7 @@ int run(int argc, char** argv) {
 
   ExportPddlOptions export_pddl;
   auto* export_cmd = app.add_subcommand("export-pddl", "Write the PDDL domain and a problem for a scenario and goal");
-  add_world(export_cmd, export_pddl.scenario);
+  worlds.add(export_cmd, export_pddl.scenario);
   export_cmd->add_option("--goal", export_pddl.goal, "Goal, as for plan ('intent' for the whole task)")->required();
   export_cmd->add_option("--out", export_pddl.out_dir, "Directory to write domain.pddl and problem.pddl into")->required();
   on_run(export_cmd, [&] { result = run_export_pddl(export_pddl, std::cout); });
@@ -356,7 +370,7 @@ int run(int argc, char** argv) {
   ExperimentOptions experiment;
   auto* experiment_cmd = app.add_subcommand(
       "experiment", "Run the paper's conditions from empty knowledge with the simulated instructor");
-  add_world(experiment_cmd, experiment.scenario);
+  worlds.add(experiment_cmd, experiment.scenario);
   experiment_cmd->add_option("--conditions", experiment.conditions,
                              "Comma-separated conditions, e.g. instruction,inst+search4 (default: all that can run)")
       ->delimiter(',');
@@ -385,7 +399,7 @@ int run(int argc, char** argv) {
 
   TeachOptions teach;
   auto* teach_cmd = app.add_subcommand("teach", "Teach the agent at the terminal: it asks, you answer");
-  add_world(teach_cmd, teach.scenario);
+  worlds.add(teach_cmd, teach.scenario);
   teach_cmd->add_option("--knowledge", teach.knowledge, "Knowledge store to load and extend: an SQLite file, or postgresql://USER@HOST:PORT/DB");
   teach_cmd->add_option("--household", teach.household, "The household whose goal preferences and task structures are read and written (default: default); rules are shared")->capture_default_str();
   teach_cmd->add_option("--condition", teach.condition, "Sources besides you: inst, inst+search4, inst+llm, ...")
@@ -401,7 +415,7 @@ int run(int argc, char** argv) {
 
   RunOptions run_options;
   auto* run_cmd = app.add_subcommand("run", "Perform a learned task with learned knowledge alone");
-  add_world(run_cmd, run_options.scenario);
+  worlds.add(run_cmd, run_options.scenario);
   run_cmd->add_option("--knowledge", run_options.knowledge, "Knowledge store: an SQLite file, or postgresql://USER@HOST:PORT/DB")->required();
   run_cmd->add_option("--household", run_options.household, "The household whose goal preferences and task structures are read and written (default: default); rules are shared")->capture_default_str();
   run_cmd->add_option("--task", run_options.task, "Task name (default: the only one learned)");
@@ -434,12 +448,7 @@ int run(int argc, char** argv) {
   auto* serve_cmd = app.add_subcommand("serve", "Teach the agent from a web page: serve it, and each session it starts");
   serve_cmd->add_option("--scenario", serve_scenarios,
                         "A world to offer besides data/scenarios (YAML; repeatable; the first is preselected)");
-  {
-    auto world = std::make_unique<WorldArgument>();
-    world->many = &serve_scenarios;
-    serve_cmd->add_option("world", world->many_given, "Worlds to offer, as --scenario FILE (after those given with --scenario)");
-    worlds[serve_cmd] = std::move(world);
-  }
+  worlds.add_many(serve_cmd, serve_scenarios);
   serve_cmd->add_option("--knowledge", serve_knowledge,
                         "A knowledge store to offer, named on the page by its file or database name: an SQLite file "
                         "(created if missing), or postgresql://USER@HOST:PORT/DB (repeatable)");

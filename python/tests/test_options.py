@@ -228,3 +228,31 @@ def test_agent_llm_options_send_what_teach_sends(tmp_path):
     assert [r["body"] for r in ours[:2]] == [r["body"] for r in cli[:2]]
     assert all(r["authorization"] == "Bearer sesame" and r["body"]["seed"] == 3 for r in ours + cli)
     assert ours[1]["body"]["model"] == "tiny-model"
+
+
+def knowledge_json(store, household):
+    run = subprocess.run([str(BINARY), "knowledge", "--knowledge", str(store), "--household", household, "--json"],
+                         capture_output=True, text=True, check=True)
+    document = json.loads(run.stdout)
+    return sorted(g["text"] for g in document["goals"]), sorted(t["name"] for t in document["tasks"])
+
+
+def test_agent_household_and_run_task_as_the_cli(tmp_path):
+    cli = cli_teach("--household", "smiths", "--knowledge", str(tmp_path / "cli.sqlite"))
+    assert cli.returncode == 0, cli.stderr
+    apprentice.Agent(TWO_OBJECTS, knowledge=tmp_path / "py.sqlite", household="smiths").learn(
+        scripted_teacher(TEACHING))
+    # The same goals and task, in the smiths' household and not in the default one.
+    smiths = knowledge_json(tmp_path / "cli.sqlite", "smiths")
+    assert smiths == knowledge_json(tmp_path / "py.sqlite", "smiths") and len(smiths[0]) == 2
+    assert knowledge_json(tmp_path / "py.sqlite", "default") == ([], [])
+    # run --household smiths --task "tidy kitchen" performs what perform() does.
+    run = subprocess.run([str(BINARY), "run", str(TWO_OBJECTS), "--knowledge", str(tmp_path / "cli.sqlite"),
+                          "--household", "smiths", "--task", "tidy kitchen", "--json"],
+                         capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    ours = apprentice.Agent(TWO_OBJECTS, knowledge=tmp_path / "py.sqlite", household="smiths").perform(task="tidy kitchen")
+    cli_run = json.loads(run.stdout)
+    for key in cli_run:
+        assert ours[key] == cli_run[key], key
+    assert ours["assertions_achieved"] == ours["assertions_total"] == 3

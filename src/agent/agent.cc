@@ -107,15 +107,19 @@ Result<AgentReport> TaskLearningAgent::Session::perform_task(const TaskKnowledge
 }
 
 TaskLearningAgent::Session::Step TaskLearningAgent::Session::next_step() {
-  if (progress_.in_progress) return achieve_current();
-  if (progress_.task.name.empty()) return learn_task_name();
-  if (progress_.current) return work_on_subtask();
-  if (!progress_.known_to_do.empty()) return start_known_subtask();
-  if (progress_.finishing || !learning_) {
-    progress_.finished = true;
-    return {};
+  switch (progress_.next(learning_)) {
+    case teaching::Next::kAchieve: return achieve_current();
+    case teaching::Next::kAskTaskName: return learn_task_name();
+    case teaching::Next::kNextObject:
+      if (auto object = next_object(current())) return start_object(*object);
+      finish_subtask();
+      return {};
+    case teaching::Next::kAskSubtaskEnd: return learn_subtask_end();
+    case teaching::Next::kAskTaskStep: return learn_task_step();
+    case teaching::Next::kStartKnownSubtask: return start_known_subtask();
+    case teaching::Next::kFinish: progress_.finished = true; return {};
   }
-  return learn_task_step();
+  return {};
 }
 
 // --- The task and its structure ---------------------------------------------
@@ -168,7 +172,7 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::learn_task_step() {
   progress_.asked_about_task = true;
   const Reply& reply = *heard->reply;
   // A loop that was announced runs before anything else is begun.
-  if (awaiting_repeat) progress_.current->mode = Current::Mode::kLoop;
+  if (awaiting_repeat) progress_.loop();
   if (const auto* loop = std::get_if<language::LoopNamed>(&reply)) {
     progress_.announced_loop = loop->places;
     say("So I repeat the next steps while something is " + std::string(language::relation_word(world(), loop->places.front())) +
@@ -188,12 +192,9 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::learn_task_step() {
 }
 
 TaskLearningAgent::Session::Step TaskLearningAgent::Session::start_subtask(const language::SubtaskNamed& named) {
-  Current next;
-  next.verb = named.verb;
-  next.relation = std::string(language::to_string(named.relation));
-  next.places = named.places;
-  next.mode = progress_.announced_loop ? Current::Mode::kFirstObject : Current::Mode::kLoop;
-  progress_.announced_loop.reset();
+  // Naming the next subtask ends the one under way, once its loop is done.
+  const Current next =
+      progress_.subtask_named(Current{named.verb, std::string(language::to_string(named.relation)), named.places});
   LearnedSubtask learned{next.verb, next.relation, world().universe->info(next.places.front()).category};
   if (std::find(progress_.task.subtasks.begin(), progress_.task.subtasks.end(), learned) ==
       progress_.task.subtasks.end()) {
@@ -205,13 +206,6 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::start_subtask(const
     say("So I " + next.verb + " one thing " + where + " at a time.");
   else
     say("So I " + next.verb + " what is " + where + ", one thing at a time.");
-  // Naming the next subtask ends the one under way, once its loop is done.
-  if (progress_.current) {
-    progress_.current->mode = Current::Mode::kLoop;
-    progress_.queued = std::move(next);
-  } else {
-    progress_.current = std::move(next);
-  }
   return {};
 }
 
@@ -228,17 +222,17 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::learn_subtask_end()
   if (!heard) return tl::unexpected(heard.error());
   if (!heard->reply) {
     // A program that cannot say: take the subtask as done, as it was.
-    progress_.current->mode = Current::Mode::kAwaitRepeat;
+    progress_.one_was_all();
     return {};
   }
   begin_lesson(heard->text);
   if (std::holds_alternative<language::Finished>(*heard->reply)) {
-    progress_.current->mode = Current::Mode::kAwaitRepeat;
+    progress_.one_was_all();
     say("So that is all there is to " + c.verb + " for one thing.");
     return {};
   }
   if (const auto* subtask = std::get_if<language::SubtaskNamed>(&*heard->reply)) return start_subtask(*subtask);
-  progress_.current->mode = Current::Mode::kLoop;
+  progress_.loop();
   say("So I " + c.verb + " everything else " + c.relation + " " + language::spoken_places(world(), c.places) +
       " the same way.");
   return {};
@@ -276,20 +270,6 @@ Status TaskLearningAgent::Session::remember_task() {
 
 // --- Subtasks and their objects ----------------------------------------------
 
-TaskLearningAgent::Session::Step TaskLearningAgent::Session::work_on_subtask() {
-  Current& c = *progress_.current;
-  switch (c.mode) {
-    case Current::Mode::kEndQuestion: return learn_subtask_end();
-    case Current::Mode::kAwaitRepeat: return learn_task_step();
-    case Current::Mode::kFirstObject:
-    case Current::Mode::kLoop:
-      if (auto object = next_object(c)) return start_object(*object);
-      finish_subtask();
-      return {};
-  }
-  return {};
-}
-
 namespace {
 
 // The things (not furniture) on or in `places`.
@@ -317,8 +297,7 @@ void TaskLearningAgent::Session::finish_subtask() {
       say("I could not " + c.verb + " " + (remaining == 1 ? "1 object" : std::to_string(remaining) + " objects") +
           " still " + c.relation + " " + language::spoken_places(world(), c.places) + ".");
   }
-  progress_.current = std::move(progress_.queued);
-  progress_.queued.reset();
+  progress_.subtask_done();
 }
 
 std::optional<ObjectId> TaskLearningAgent::Session::next_object(const Current& current) const {
@@ -371,7 +350,7 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::start_object(Object
   }
   if (!goal) {
     progress_.in_progress = InProgress{object, Goal{}, report, world().state, {}, {}, {}};
-    finish_object();
+    progress_.object_done();
     return {};
   }
   report.goal = format_goal(*world().domain, *world().universe, *goal);
@@ -392,17 +371,8 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::achieve_current() {
     std::string done = language::report_actions(world(), work.actions);
     if (!done.empty()) say(done);
   }
-  finish_object();
+  progress_.object_done();
   return {};
-}
-
-void TaskLearningAgent::Session::finish_object() {
-  InProgress& work = *progress_.in_progress;
-  if (progress_.evaluated.insert(work.object).second) progress_.evaluated_order.push_back(work.object);
-  progress_.objects.push_back(work.report);
-  progress_.in_progress.reset();
-  if (progress_.current && progress_.current->mode == Current::Mode::kFirstObject)
-    progress_.current->mode = Current::Mode::kEndQuestion;
 }
 
 }  // namespace apprentice

@@ -8,7 +8,7 @@
 
 namespace apprentice {
 
-void Lessons::begin(const std::string& reply, teaching::Progress& progress, const Knowledge& knowledge,
+void Lessons::begin(const std::string& reply, teaching::Curriculum& progress, const Knowledge& knowledge,
                     const State& world, std::size_t history) {
   // The progress without the per-object records, which only grow: copying
   // them at every lesson would cost O(objects) each time.
@@ -82,7 +82,7 @@ void Lessons::forget_class_rule(const ClassRule& rule) {
   }
 }
 
-Result<std::optional<Lessons::Undone>> Lessons::undo(teaching::Progress& progress, Knowledge& knowledge) {
+Result<std::optional<Lessons::Undone>> Lessons::undo(teaching::Curriculum& progress, Knowledge& knowledge) {
   if (lessons_.empty()) return std::nullopt;
   Lesson lesson = std::move(lessons_.back());
   lessons_.pop_back();

@@ -1,7 +1,7 @@
 // Internal to the agent: the teacher's lessons of one session, and undo.
 //
 // Each reply that teaches the agent something opens a lesson, which keeps
-// the progress (agent/progress.h) and the knowledge as they were before it,
+// the progress (agent/curriculum.h) and the knowledge as they were before it,
 // with the world and how many actions had been taken, and every write to
 // the store until the next lesson. Undoing the last lesson reverts those
 // writes, latest first, and puts the progress and the knowledge back; the
@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "agent/progress.h"
+#include "agent/curriculum.h"
 #include "knowledge/preferences.h"
 #include "knowledge/store.h"
 #include "knowledge/store_engine.h"
@@ -36,7 +36,7 @@ class Lessons {
   // are, the world `world` and the `history` actions taken so far. The
   // records that only grow (the objects evaluated and reported) are kept
   // as their sizes, not copied.
-  void begin(const std::string& reply, teaching::Progress& progress, const Knowledge& knowledge, const State& world,
+  void begin(const std::string& reply, teaching::Curriculum& progress, const Knowledge& knowledge, const State& world,
              std::size_t history);
 
   bool empty() const { return lessons_.empty(); }
@@ -70,7 +70,7 @@ class Lessons {
   // and puts `progress` (its growing records cut back to their sizes then)
   // and `knowledge` back. nullopt when there is no lesson. Errors: the
   // store's, when a write cannot be reverted (the lesson is gone then).
-  Result<std::optional<Undone>> undo(teaching::Progress& progress, Knowledge& knowledge);
+  Result<std::optional<Undone>> undo(teaching::Curriculum& progress, Knowledge& knowledge);
 
  private:
   struct StoreWrite {
@@ -84,7 +84,7 @@ class Lessons {
   };
   struct Lesson {
     std::string reply;
-    teaching::Progress progress;  // without evaluated, evaluated_order and objects: their sizes are below
+    teaching::Curriculum progress;  // without evaluated, evaluated_order and objects: their sizes are below
     std::size_t evaluated_count = 0;
     std::size_t objects_count = 0;
     Knowledge knowledge;

@@ -1,11 +1,11 @@
 // Internal to the agent: the state of one run (learn or perform).
 //
-// Learning is a loop of steps (agent.cc, next_step): each step looks at
-// how far the teaching has come (`Progress`) and does the one thing that
-// comes next: ask for the task, ask for its next step, work on the next
+// Learning is a loop of steps (agent.cc, next_step): each step asks the
+// curriculum (agent/curriculum.h, `Progress` here) what comes next and does
+// that one thing: ask for the task, ask for its next step, work on the next
 // object of the current subtask (its goal, known or asked for), or take the
 // actions that achieve that object's goal. Everything a step decides lives
-// in `Progress`, never in a caller's local variables, so that "undo" can
+// in the curriculum, never in a caller's local variables, so that "undo" can
 // put the progress, the knowledge and the world back as they were before
 // the teacher's last lesson and the loop simply goes on from there.
 #pragma once
@@ -19,7 +19,7 @@
 #include "agent/goal_proposals.h"
 #include "agent/lessons.h"
 #include "agent/llm_preferences.h"
-#include "agent/progress.h"
+#include "agent/curriculum.h"
 #include "knowledge/decision.h"
 #include "knowledge/preferences.h"
 #include "agent/transfer.h"
@@ -50,11 +50,11 @@ class TaskLearningAgent::Session {
   using Step = Flow<void>;
   static tl::unexpected<Stop> stop(Error error) { return tl::unexpected<Stop>(Stop{std::move(error)}); }
 
-  // How far the teaching has come (agent/progress.h): what a step reads and
+  // How far the teaching has come (agent/curriculum.h): what a step reads and
   // changes, and what a lesson keeps.
   using Current = teaching::Current;
   using InProgress = teaching::InProgress;
-  using Progress = teaching::Progress;
+  using Progress = teaching::Curriculum;
   // A reply usable at the question asked; none when a program's replies
   // could not be used within its attempts.
   struct Heard {
@@ -76,7 +76,6 @@ class TaskLearningAgent::Session {
   Step learn_task_name();
   Step learn_task_step();
   Step learn_subtask_end();
-  Step work_on_subtask();
   Step start_known_subtask();
   Step start_subtask(const language::SubtaskNamed& named);
   void finish_subtask();
@@ -85,7 +84,6 @@ class TaskLearningAgent::Session {
   // saying so once per kind (agent_news.cc).
   void take_news();
   Step achieve_current();
-  void finish_object();
   std::optional<ObjectId> next_object(const Current& current) const;
   Status remember_task();
 

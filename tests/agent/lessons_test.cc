@@ -39,7 +39,7 @@ TEST_F(LessonsTest, UndoRevertsTheLastLessonsWritesAndPutsTheProgressBack) {
   auto store = KnowledgeStore::open(path_);
   ASSERT_TRUE(store.has_value()) << store.error().describe();
   Lessons lessons(&*store, *scenario_.world.domain);
-  teaching::Progress progress;
+  teaching::Curriculum progress;
   Knowledge knowledge;
 
   // Lesson 1: the task's name; the ketchup's goal.
@@ -93,7 +93,7 @@ TEST_F(LessonsTest, UndoRevertsTheLastLessonsWritesAndPutsTheProgressBack) {
 
 TEST_F(LessonsTest, WhatIsForgottenForGoodNoUndoBringsBack) {
   Lessons lessons(nullptr, *scenario_.world.domain);
-  teaching::Progress progress;
+  teaching::Curriculum progress;
   Knowledge knowledge;
   knowledge.goals.add(goal("ketchup", "fridge"));
   lessons.begin("socks too", progress, knowledge, scenario_.world.state, 0);

@@ -308,6 +308,22 @@ TEST_F(Cli, WorldPrintsPlacesAndObjects) {
   EXPECT_THAT(r.out, HasSubstr("mug1, mug2"));
 }
 
+// A goal learned for one of two look-alikes names it by its property in
+// `knowledge --pddl` as in English: the top drawer, not any drawer.
+TEST_F(Cli, KnowledgeInPddlNamesTheLookAlikeAGoalNames) {
+  Invocation taught = run({"experiment", source("data/scenarios/party-cleanup.yaml"), "--conditions", "instruction",
+                           "--knowledge-out", (dir_ / "out").string(), "-q"});
+  ASSERT_EQ(taught.exit_code, 0) << taught.err;
+  const std::string store = (dir_ / "out" / "instruction.sqlite").string();
+  Invocation pddl = run({"knowledge", "--knowledge", store, "--pddl"});
+  ASSERT_EQ(pddl.exit_code, 0) << pddl.err;
+  EXPECT_THAT(pddl.out, HasSubstr("the object is a remote-control at the coffee-table\n"
+                                  "Then the goal is (in ?o [top drawer]) and (closed [top drawer])"));
+  EXPECT_THAT(pddl.out, HasSubstr("(in ?o [bottom drawer]) and (closed [bottom drawer])"));
+  Invocation english = run({"knowledge", "--knowledge", store});
+  EXPECT_THAT(english.out, HasSubstr("the remote control goes in the top drawer, and the top drawer ends closed."));
+}
+
 TEST_F(Cli, WorldShowsPropertiesAndLookAlikes) {
   const std::string playroom = source("data/scenarios/playroom.yaml");
   Invocation text = run({"world", "--scenario", playroom});

@@ -1,0 +1,52 @@
+#include "agent/curriculum.h"
+
+#include <utility>
+
+namespace apprentice::teaching {
+
+Next Curriculum::next(bool learning) const {
+  if (in_progress) return Next::kAchieve;
+  if (task.name.empty()) return Next::kAskTaskName;
+  if (current) {
+    switch (current->mode) {
+      case Current::Mode::kEndQuestion: return Next::kAskSubtaskEnd;
+      case Current::Mode::kAwaitRepeat: return Next::kAskTaskStep;
+      case Current::Mode::kFirstObject:
+      case Current::Mode::kLoop: return Next::kNextObject;
+    }
+  }
+  if (!known_to_do.empty()) return Next::kStartKnownSubtask;
+  if (finishing || !learning) return Next::kFinish;
+  return Next::kAskTaskStep;
+}
+
+Current Curriculum::subtask_named(Current subtask) {
+  subtask.mode = announced_loop ? Current::Mode::kFirstObject : Current::Mode::kLoop;
+  announced_loop.reset();
+  if (current) {
+    current->mode = Current::Mode::kLoop;
+    queued = subtask;
+  } else {
+    current = subtask;
+  }
+  return subtask;
+}
+
+void Curriculum::one_was_all() { current->mode = Current::Mode::kAwaitRepeat; }
+
+void Curriculum::loop() { current->mode = Current::Mode::kLoop; }
+
+void Curriculum::object_done() {
+  InProgress& work = *in_progress;
+  if (evaluated.insert(work.object).second) evaluated_order.push_back(work.object);
+  objects.push_back(work.report);
+  in_progress.reset();
+  if (current && current->mode == Current::Mode::kFirstObject) current->mode = Current::Mode::kEndQuestion;
+}
+
+void Curriculum::subtask_done() {
+  current = std::move(queued);
+  queued.reset();
+}
+
+}  // namespace apprentice::teaching
