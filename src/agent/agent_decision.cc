@@ -48,6 +48,47 @@ std::string fleet_question(const World& world, ObjectId object, const Goal& goal
 
 bool is_analogy(const DestinationProposal& p) { return p.reason.starts_with("analogy: "); }
 
+// The kinds taught that a decision's question shows ("like the banana and
+// the apple"): the first two named by its support, as evidence_phrase says
+// them.
+std::vector<std::string> shown_kinds(std::span<const DestinationProposal> support) {
+  std::vector<std::string> kinds;
+  for (const DestinationProposal& p : support)
+    for (const std::string& kind : p.evidence)
+      if (kinds.size() < 2 && std::find(kinds.begin(), kinds.end(), kind) == kinds.end()) kinds.push_back(kind);
+  return kinds;
+}
+
+// Whether two things are of one class as far as the question shows: like
+// some same kind taught, or (neither like any) placed alike by the sources.
+bool shown_alike(const std::vector<std::string>& one, const std::vector<std::string>& other) {
+  if (one.empty() || other.empty()) return one.empty() && other.empty();
+  return std::any_of(one.begin(), one.end(),
+                     [&](const std::string& kind) { return std::find(other.begin(), other.end(), kind) != other.end(); });
+}
+
+// Below this belief, in the thing asked about or another, a question about
+// several things was more often "no" than the beliefs said (the TidyBot
+// benchmark's development half, docs/benchmarks.md).
+constexpr double kAskTogetherAt = 0.75;
+
+// How many of `beliefs` (most probable first) to ask about with a thing the
+// agent believes goes there at `belief`: the most questions a "yes" saves
+// on average, against the second question a "no" costs (the thing asked
+// about again alone), with the beliefs as the chance that each is right.
+std::size_t worth_asking_together(double belief, const std::vector<double>& beliefs) {
+  std::size_t best = 0;
+  if (belief < kAskTogetherAt) return 0;
+  double best_gain = 0, all_right = belief;
+  for (std::size_t k = 1; k <= beliefs.size(); ++k) {
+    all_right *= beliefs[k - 1];
+    const double gain = all_right * static_cast<double>(k) - (1 - all_right);
+    if (beliefs[k - 1] < kAskTogetherAt) break;
+    if (gain > best_gain) best = k, best_gain = gain;
+  }
+  return best;
+}
+
 std::string percent(double confidence) {
   char text[16];
   std::snprintf(text, sizeof text, "%.2f", confidence);
@@ -131,8 +172,54 @@ std::vector<DestinationProposal> TaskLearningAgent::Session::proposals_for(Objec
   return proposals;
 }
 
+std::vector<std::pair<ObjectId, Goal>> TaskLearningAgent::Session::asked_together(ObjectId object,
+                                                                                 const Decision& asked,
+                                                                                 std::size_t places,
+                                                                                 const DecisionPolicy& policy) const {
+  const Destination& destination = *asked.destination;
+  const std::vector<std::string> like = shown_kinds(asked.support);
+  std::vector<std::pair<double, std::pair<ObjectId, Goal>>> candidates;
+  const World& w = world();
+  for (ObjectId other : w.universe->of_kind(ObjectKind::kItem)) {
+    if (other == object || !still_to_come(other) || settled_.contains(other)) continue;
+    if (agent_.knowledge_.goals.find(goal_key(other)) != nullptr) continue;
+    std::vector<DestinationProposal> proposals = proposals_for(other);
+    // What was learned for its own kind elsewhere is asked about alone.
+    if (std::any_of(proposals.begin(), proposals.end(),
+                    [](const DestinationProposal& p) { return p.source == ProposalSource::kMemory; }))
+      continue;
+    Decision decision = decide(proposals, places, policy);
+    if (decision.kind != Decision::Kind::kConfirm || !decision.destination || !(*decision.destination == destination) ||
+        !shown_alike(like, shown_kinds(decision.support)))
+      continue;
+    if (auto goal = goal_at(w, destination, other))
+      candidates.emplace_back(decision.confidence, std::make_pair(other, std::move(*goal)));
+  }
+  std::stable_sort(candidates.begin(), candidates.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
+  std::vector<double> beliefs;
+  for (const auto& c : candidates) beliefs.push_back(c.first);
+  std::vector<std::pair<ObjectId, Goal>> out;
+  for (std::size_t i = 0, n = worth_asking_together(asked.confidence, beliefs); i < n; ++i)
+    out.push_back(std::move(candidates[i].second));
+  return out;
+}
+
+TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session::goal_settled(ObjectId object,
+                                                                                              ObjectReport& report) {
+  auto settled = settled_.find(object);
+  if (settled == settled_.end()) return std::optional<Goal>();
+  auto [goal, said] = std::move(settled->second);
+  settled_.erase(settled);
+  say(language::read_back_goal(world(), object, goal));
+  report.goal_source = GoalSource::kInstructor;
+  if (auto s = learn_goal(object, goal, "instructor: " + apprentice::quoted(said) + " (asked together)"); !s)
+    return stop(s.error());
+  return std::optional<Goal>(std::move(goal));
+}
+
 TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session::goal_by_decision(
     ObjectId object, ObjectReport& report) {
+  if (auto settled = goal_settled(object, report); !settled || *settled) return settled;
   if (agent_.options_.condition.llm) consult_llm(object);
   std::vector<DestinationProposal> proposals = proposals_for(object);
   if (proposals.empty()) return std::optional<Goal>();
@@ -149,6 +236,7 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
     policy.not_disputing.push_back(ProposalSource::kPersonRule);
     policy.weights.try_emplace(ProposalSource::kPersonRule, 0.35);
   }
+  bool together_refused = false;
   for (bool first = true;; first = false) {
     Decision decision = decide(proposals, places, policy);
     // What was learned for this very kind in another task or subtask is
@@ -184,13 +272,34 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
                         ", but I am not sure enough (confidence " + percent(decision.confidence) + ")";
         return std::optional<Goal>();
       }
+      // Things still to come that the decision would ask about with the
+      // same place are asked about in the same question: a "yes" settles
+      // them all.
+      std::vector<std::pair<ObjectId, Goal>> together;
+      if (!together_refused) together = asked_together(object, decision, places, policy);
+      std::vector<std::string> others;
+      for (const auto& [other, its_goal] : together) others.push_back(language::spoken_name(w, other));
+      // The fleet's own question when it alone is asked about.
       std::string asked =
-          decision.support.front().source == ProposalSource::kFleet
+          decision.support.front().source == ProposalSource::kFleet && others.empty()
               ? fleet_question(w, object, *goal, decision.support.front())
               : "Does " + language::spoken_name_and_location(w, object) + " go " + (evidence.empty() ? "here" : evidence) +
-                    ": " + language::goal_outcome(w, object, *goal, "it") + "?";
-      auto answer = answer_to_proposal(question(QuestionKind::kConfirmGoal, asked, object, goal), object);
+                    ": " + language::goal_outcome(w, object, *goal, "it") +
+                    (others.empty() ? "?" : ", and " + language::list_phrase(others) + " too?");
+      Question q = question(QuestionKind::kConfirmGoal, asked, object, goal);
+      for (const auto& entry : together) q.together.push_back(entry.first);
+      auto answer = answer_to_proposal(q, object);
       if (!answer) return tl::unexpected(answer.error());
+      if (!answer->instead && !answer->yes && !together.empty()) {
+        // A "no" to several things: at least one does not go there. Ask
+        // about this one alone.
+        together_refused = true;
+        continue;
+      }
+      if (answer->yes)
+        for (auto& [other, its_goal] : together)
+          settled_.emplace(other, std::make_pair(std::move(its_goal), std::string("yes, with ") +
+                                                                        language::spoken_name(w, object)));
       if (answer->instead) {
         // "No, it goes in the garbage": the teacher's own goal, learned.
         refused_.emplace_back(goal_key(object).category, *decision.destination);

@@ -164,6 +164,16 @@ class TaskLearningAgent::Session {
   // teacher refused every proposal, or, alone, the agent is in doubt (then
   // `report.note` says what it would have done and why it did not).
   Flow<std::optional<Goal>> goal_by_decision(ObjectId object, ObjectReport& report);
+  // The things still to come, without a goal, that the decision would ask
+  // about with the same destination at `policy`, like the same kinds taught
+  // as `asked` shows for `object` (each with its goal there), as many as
+  // are worth asking about with it: one yes/no may settle them all
+  // (agent_decision.cc).
+  std::vector<std::pair<ObjectId, Goal>> asked_together(ObjectId object, const Decision& asked, std::size_t places,
+                                                        const DecisionPolicy& policy) const;
+  // The goal a "yes" asked with another thing settled for `object`, said
+  // back and learned; nullopt when none did.
+  Flow<std::optional<Goal>> goal_settled(ObjectId object, ObjectReport& report);
   // Every source's proposals for `object`, without the destinations the
   // teacher refused for its kind.
   std::vector<DestinationProposal> proposals_for(ObjectId object) const;
@@ -232,6 +242,9 @@ class TaskLearningAgent::Session {
   GoalProposer proposer_;
   // Destinations the teacher said no to, by kind, this session.
   std::vector<std::pair<std::string, Destination>> refused_;
+  // Goals a teacher's "yes" settled for things still to come, asked with
+  // another thing ("and the pear too?"), with what the teacher said.
+  std::map<ObjectId, std::pair<Goal, std::string>> settled_;
   // The person's rules said this session, as said; those rules, and the
   // LLM's summary's, as class rules (agent/person_rule.h); and what the LLM
   // says of the person's preferences (asked once, when a thing first needs

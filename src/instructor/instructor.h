@@ -44,6 +44,10 @@ struct Question {
   std::optional<Goal> goal;        // kNextAction: the goal pursued; kConfirmGoal: the one proposed
   std::optional<Action> action;    // kConfirmAction: the action proposed
   std::vector<ObjectId> choices;   // kWhich: the things offered
+  // kConfirmGoal: other things still to come that the same "yes" puts where
+  // `goal` puts `object` ("and the pear and the grapes too?"); a "yes" is
+  // for all of them, a "no" for at least one.
+  std::vector<ObjectId> together;
 };
 
 // What a statement is to the person hearing it.

@@ -119,7 +119,18 @@ std::string SimulatedInstructor::which(const Question& question, const World& wo
 
 bool SimulatedInstructor::accepts_goal(const Question& question, const World& world) const {
   auto wanted = wanted_goal(question, world);
-  return wanted && question.goal && *wanted == *question.goal;
+  if (!wanted || !question.goal || *wanted != *question.goal) return false;
+  // The things asked about together: each must go where the object does,
+  // by the same goal said of it.
+  for (ObjectId other : question.together) {
+    std::vector<Literal> literals = question.goal->literals;
+    for (Literal& l : literals)
+      for (std::size_t i = 0; i < l.fact.arity; ++i)
+        if (l.fact.args[i] == *question.object) l.fact.args[i] = other;
+    auto its = scenario_.intended_goal(question.subtask, other);
+    if (!its || *its != Goal(std::move(literals))) return false;
+  }
+  return true;
 }
 
 bool SimulatedInstructor::accepts_action(const Question& question, const World& world) const {

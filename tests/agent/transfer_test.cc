@@ -265,14 +265,21 @@ TEST(TransferInTheAgent, TheTeacherConfirmsAnalogiesAndTeachesTheRest) {
   EXPECT_EQ(scratch.counts.yes_no, 0);
   EXPECT_THAT(carried.transcript_text, ::testing::StartsWith("Agent: Here I take the coffee mill for the coffee grinder"));
   EXPECT_THAT(carried.transcript_text, HasSubstr(", the refrigerator for the fridge, the trash can for the garbage,"));
-  // In doubt, a yes/no that shows its evidence; a yes is learned, in this
-  // world's words, with where it came from.
+  // In doubt, a yes/no that shows its evidence, about the things still to
+  // come that it would ask about with the same place too; a yes is learned
+  // for each, in this world's words, with where it came from.
   EXPECT_THAT(carried.transcript_text,
               HasSubstr("Does the paper dish on the dining table go like the paper plate and the plastic fork: it goes in "
-                        "the trash can?\nInstructor: yes."));
+                        "the trash can, and the plastic tablefork and the plastic beaker too?\nInstructor: yes.\n"
+                        "Agent: So the paper dish goes in the trash can."));
   const GoalKnowledge* dish = carried.knowledge.goals.find(GoalKey{"tidy kitchen", "clear", "paper-dish", "dining-table"});
   ASSERT_NE(dish, nullptr);
   EXPECT_THAT(dish->provenance.source, HasSubstr("decision: like the paper-plate and the plastic-fork (confirmed)"));
+  const GoalKnowledge* beaker =
+      carried.knowledge.goals.find(GoalKey{"tidy kitchen", "clear", "plastic-beaker", "dining-table"});
+  ASSERT_NE(beaker, nullptr);
+  EXPECT_THAT(beaker->provenance.source, HasSubstr("(asked together)"));
+  EXPECT_THAT(carried.transcript_text, ::testing::Not(HasSubstr("Does the plastic beaker")));
   // Sure enough, it acts alone and says why: the ceramic dish, whose words
   // ("ceramic", "dish") both match the ceramic plate's.
   EXPECT_THAT(carried.transcript_text,

@@ -280,6 +280,24 @@ TEST_F(ConfirmationTest, TheSameCategoryCanWantAnotherPlaceInAnotherSubtask) {
             "no.");
 }
 
+// A question about several things at once ("and the milk too?"): "yes"
+// only when every one of them goes where the goal puts the object asked
+// about, by the same goal.
+TEST_F(ConfirmationTest, ThingsAskedTogetherAreYesOnlyWhenEachGoesThere) {
+  const World& world = kitchen_.world;
+  const ObjectId ketchup = object(world, "ketchup1");
+  GoalMeaning meaning = understanding_.goal(world, "the goal is that the ketchup is in the fridge and the fridge is closed", ketchup);
+  ASSERT_TRUE(meaning.goal.has_value()) << meaning.failure;
+  Question q = about(QuestionKind::kConfirmGoal, "clear", ketchup);
+  q.goal = meaning.goal;
+  q.together = {object(world, "milk1")};
+  EXPECT_EQ(reply(instructor_, q, world), "yes.");
+  q.together.push_back(object(world, "paper-plate1"));  // goes in the garbage
+  EXPECT_EQ(reply(instructor_, q, world), "no.");
+  q.together = {object(world, "paper-plate1")};
+  EXPECT_EQ(reply(instructor_, q, world), "no.");
+}
+
 TEST_F(ConfirmationTest, NoForAGoalQuestionWithoutAGoal) {
   Question q = about(QuestionKind::kConfirmGoal, "clear", object(kitchen_.world, "ketchup1"));
   EXPECT_EQ(reply(instructor_, q, kitchen_.world), "no.");
