@@ -117,6 +117,7 @@ CommandResult run_experiment(const ExperimentOptions& options, const std::string
   request.options.use_rules = !options.no_rules;
   request.options.prompts_dir = data_dir() / "prompts";
   if (!options.knowledge_out.empty()) request.options.knowledge_out = options.knowledge_out;
+  request.options.household = options.household;
   if (!options.transcript_dir.empty())
     request.on_result = [&](const ConditionResult& result) { return write_transcript(options.transcript_dir, result); };
   Result<ExperimentResults> run;

@@ -41,7 +41,7 @@ struct ExperimentOptions {
   std::string transcript_dir;
   std::string knowledge_out;
   std::string knowledge_in;  // empty: every condition starts from nothing
-  std::string household = kDefaultHousehold;  // the household of --knowledge-in read
+  std::string household = kDefaultHousehold;  // the household --knowledge-in reads and --knowledge-out keeps
   std::string generalization = "full";
   bool no_rules = false;
   std::string plot;    // --plot FILE.svg|FILE.png: draw the results

@@ -381,7 +381,7 @@ int run(int argc, char** argv) {
   experiment_cmd->add_option("--knowledge-out", experiment.knowledge_out, "Keep each condition's knowledge in DIR/<condition>.sqlite");
   experiment_cmd->add_option("--knowledge-in", experiment.knowledge_in,
                              "Start every condition from a copy of this knowledge store, an SQLite file or postgresql://... (never modified)");
-  experiment_cmd->add_option("--household", experiment.household, "With --knowledge-in: the household whose goals and tasks to start from")
+  experiment_cmd->add_option("--household", experiment.household, "The household whose goals and tasks --knowledge-in starts from and --knowledge-out keeps")
       ->capture_default_str();
   experiment_cmd->add_option("--generalization", experiment.generalization, "Rule generalization: full or paper")
       ->capture_default_str();

@@ -25,6 +25,7 @@ std::string experiment_json(const py::object& scenario_path, const std::vector<s
         unwrap(load_knowledge_read_only(py::cast<std::string>(knowledge_in), *scenario.scenario->world.domain,
                                         spec.household));
   if (!knowledge_out.is_none()) request.options.knowledge_out = py::cast<std::string>(knowledge_out);
+  request.options.household = spec.household;
   request.conditions = conditions;
   request.llm_spec = llm::resolve_llm_spec(llm.value_or(""));
   request.llm_options = llm_client_options(spec.llm);

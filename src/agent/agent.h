@@ -60,6 +60,10 @@ struct AgentOptions {
   // alone, asks yes/no, or asks where (knowledge/decision.h,
   // agent/goal_proposals.h).
   DecisionPolicy decision = default_decision_policy();
+  // For a kind this household never taught, what the store's other
+  // households chose is one of the decision's sources
+  // (knowledge/fleet_prior.h, Knowledge::fleet).
+  bool fleet_prior = true;
 };
 
 // Ownership: the agent owns its options, knowledge and understanding (by

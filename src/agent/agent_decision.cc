@@ -39,6 +39,13 @@ std::optional<ObjectId> placed_at(const World& world, const Goal& goal, ObjectId
   return std::nullopt;
 }
 
+// The fleet's yes/no: "In most households I know of (3 of 4), the ketchup
+// on the table goes in the fridge, and the fridge ends closed. Here too?"
+std::string fleet_question(const World& world, ObjectId object, const Goal& goal, const DestinationProposal& fleet) {
+  return language::capitalize(fleet_phrase(fleet)) + ", " +
+         language::goal_outcome(world, object, goal, language::spoken_name_and_location(world, object)) + ". Here too?";
+}
+
 bool is_analogy(const DestinationProposal& p) { return p.reason.starts_with("analogy: "); }
 
 // The kinds taught that a decision's question shows ("like the banana and
@@ -153,6 +160,10 @@ std::vector<DestinationProposal> TaskLearningAgent::Session::proposals_for(Objec
   const GoalKey key = goal_key(object);
   std::vector<DestinationProposal> proposals = proposer_.propose(world(), key, object, said_rules_.all());
   if (auto analogy = transfer_.analogy(world(), key, object)) proposals.push_back(analogy_proposal(*analogy));
+  // What other households of the store chose for this kind.
+  if (agent_.options_.fleet_prior)
+    for (DestinationProposal& p : agent_.knowledge_.fleet.propose(key))
+      if (goal_at(world(), p.destination, object)) proposals.push_back(std::move(p));
   if (agent_.options_.condition.llm)
     for (DestinationProposal& llm : llm_placement_proposals(object)) proposals.push_back(std::move(llm));
   // What the teacher refused for this kind is no longer proposed.
@@ -268,9 +279,13 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
       if (!together_refused) together = asked_together(object, decision, places, policy);
       std::vector<std::string> others;
       for (const auto& [other, its_goal] : together) others.push_back(language::spoken_name(w, other));
-      std::string asked = "Does " + language::spoken_name_and_location(w, object) + " go " +
-                          (evidence.empty() ? "here" : evidence) + ": " + language::goal_outcome(w, object, *goal, "it") +
-                          (others.empty() ? "?" : ", and " + language::list_phrase(others) + " too?");
+      // The fleet's own question when it alone is asked about.
+      std::string asked =
+          decision.support.front().source == ProposalSource::kFleet && others.empty()
+              ? fleet_question(w, object, *goal, decision.support.front())
+              : "Does " + language::spoken_name_and_location(w, object) + " go " + (evidence.empty() ? "here" : evidence) +
+                    ": " + language::goal_outcome(w, object, *goal, "it") +
+                    (others.empty() ? "?" : ", and " + language::list_phrase(others) + " too?");
       Question q = question(QuestionKind::kConfirmGoal, asked, object, goal);
       for (const auto& entry : together) q.together.push_back(entry.first);
       auto answer = answer_to_proposal(q, object);

@@ -151,8 +151,10 @@ std::string evidence_phrase(const World& world, std::span<const DestinationPropo
   (void)world;
   std::vector<std::string> said, like;
   bool llm = false;
+  const DestinationProposal* fleet = nullptr;
   for (const DestinationProposal& p : support) {
     if (p.source == ProposalSource::kPersonRule && p.rule && !p.rule->said.empty()) said.push_back(p.rule->said);
+    else if (p.source == ProposalSource::kFleet) fleet = fleet != nullptr ? fleet : &p;
     else if (p.source == ProposalSource::kLlmPlacement || p.source == ProposalSource::kLlmExamples ||
              p.source == ProposalSource::kLlmRule) llm = true;
     else
@@ -166,7 +168,16 @@ std::string evidence_phrase(const World& world, std::span<const DestinationPropo
     return "like " + language::list_phrase(names);
   }
   if (llm) return "as the language model suggests";
+  if (fleet != nullptr) return "as " + fleet_phrase(*fleet);
   return "";
+}
+
+std::string fleet_phrase(const DestinationProposal& fleet) {
+  const std::string chose = std::to_string(fleet.households), of = std::to_string(fleet.of_households);
+  if (fleet.of_households == 1) return "in the one other household I know of";
+  if (fleet.households == fleet.of_households) return "in all " + of + " other households I know of";
+  if (2 * fleet.households > fleet.of_households) return "in most households I know of (" + chose + " of " + of + ")";
+  return "in " + chose + " of the " + of + " other households I know of";
 }
 
 std::string say_class_rule(const ClassRule& rule) {

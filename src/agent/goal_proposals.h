@@ -87,8 +87,14 @@ std::size_t place_count(const World& world, std::span<const ObjectId> away_from)
 
 // The evidence of a decision, as the agent says it after the destination:
 // "like the banana and the apple", "as you said: fruits on the coffee
-// table", "as the language model placed it". "" when there is none.
+// table", "as the language model placed it", "as in all 9 other households
+// I know of". "" when there is none.
 std::string evidence_phrase(const World& world, std::span<const DestinationProposal> support);
+// Where a fleet proposal (ProposalSource::kFleet) comes from: "in the one
+// other household I know of", "in all 9 other households I know of", "in
+// most households I know of (3 of 4)", "in 2 of the 5 other households I
+// know of".
+std::string fleet_phrase(const DestinationProposal& fleet);
 
 // A class rule in English, with its evidence and source: "edible fruit
 // goes on the coffee table, from the banana and the apple (induced from the

@@ -1,7 +1,10 @@
 #include "agent/lessons.h"
 
+#include <algorithm>
 #include <set>
 #include <utility>
+
+#include "util/log.h"
 
 namespace apprentice {
 
@@ -25,6 +28,11 @@ void Lessons::record(StoreWrite write) {
 Status Lessons::store_goal(const GoalKnowledge& goal, std::optional<GoalKnowledge> previous) {
   if (!store_) return {};
   if (auto s = store_->save_goal(goal); !s) return s;
+  // Durable from here (the fleet's kill test reads these lines: a goal
+  // logged saved must be in the store, whatever befalls the process).
+  std::string saved = format_goal_knowledge(goal);
+  std::replace(saved.begin(), saved.end(), '\n', ' ');
+  spdlog::debug("goal saved: {}", saved);
   StoreWrite write;
   write.kind = StoreWrite::Kind::kGoal;
   write.goal_key = goal.key;

@@ -118,6 +118,7 @@ Result<ConditionResult> run_condition(const Scenario& scenario, const Condition&
     // has it open (KnowledgeStore, StoreAccess::kFresh).
     spec.knowledge = (*options.knowledge_out / (condition.name + ".sqlite")).string();
     spec.store_access = StoreAccess::kFresh;
+    spec.household = options.household;
     if (!spec.start_from) spec.start_from = std::make_shared<const Knowledge>();
   }
   if (!options.prompts_dir.empty()) spec.data = options.prompts_dir.parent_path();

@@ -74,8 +74,9 @@ struct ExperimentOptions {
   LlmFactory llm;  // required for LLM conditions
   std::filesystem::path prompts_dir;
   // When set, each condition's knowledge is kept in DIR/<condition>.sqlite:
-  // what it started from and what it learned.
+  // what it started from and what it learned, as `household`'s.
   std::optional<std::filesystem::path> knowledge_out;
+  std::string household = kDefaultHousehold;
   // What every condition starts from (a copy each); empty knowledge if unset.
   std::optional<Knowledge> knowledge_in;
   // LLM goals: analysis and repair steps, re-prompts, and the paper's way

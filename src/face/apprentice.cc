@@ -180,6 +180,7 @@ Result<std::unique_ptr<AgentSession>> make_agent_session(const AgentSpec& spec, 
   options.goal_repair = *repair;
   options.max_reprompts = spec.max_reprompts;
   options.offer_ungrounded = spec.offer_ungrounded;
+  options.fleet_prior = spec.fleet_prior;
   // A store opened read-only is read, never written: the agent is not lent it.
   KnowledgeStore* store = parts->store && spec.store_access != StoreAccess::kReadOnly ? &*parts->store : nullptr;
   parts->agent = std::make_unique<TaskLearningAgent>(options, std::move(knowledge), Understanding(), store,

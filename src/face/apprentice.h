@@ -100,6 +100,9 @@ struct AgentSpec {
   // reads and writes (--household); the store's policy rules are shared by
   // all its households. 1 to 64 letters, digits, '-', '_' or '.'.
   std::string household = kDefaultHousehold;
+  // For a kind the household never taught, offer what the store's other
+  // households chose (knowledge/fleet_prior.h); false leaves them out.
+  bool fleet_prior = true;
   // Knowledge to start from instead of the store's; with a store it is
   // written into it first (experiment --knowledge-in with --knowledge-out).
   std::shared_ptr<const Knowledge> start_from;

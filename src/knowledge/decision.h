@@ -4,7 +4,8 @@
 // own probability that the thing goes there: the agent's memory of the
 // kind, the class rules that cover it (induced, the person's, an LLM's
 // summary), its likeness to the things taught (WordNet's hierarchy and the
-// word vectors), an LLM's placement, later a fleet's prior. The agent
+// word vectors), an LLM's placement, what other households chose
+// (knowledge/fleet_prior.h). The agent
 // combines them (combine) and acts alone when the combined belief is high
 // enough; otherwise it asks one yes/no question that shows its evidence, or,
 // when nothing is likely, where the thing goes (decide).
@@ -59,6 +60,9 @@ struct DestinationProposal {
   // One line for logs and reports: "edible fruit, like the banana and the
   // apple".
   std::string reason;
+  // The fleet's (knowledge/fleet_prior.h): how many other households put
+  // the kind there, of how many that taught it.
+  std::size_t households = 0, of_households = 0;
 };
 
 // The combined belief in one destination.

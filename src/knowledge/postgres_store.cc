@@ -220,6 +220,10 @@ constexpr const char* kTasksQueryV1 = "SELECT name, structure FROM tasks WHERE $
 constexpr const char* kGoalsQueryV1 =
     "SELECT task, subtask, category, place, literals, object, source FROM goals WHERE $1::text = 'default' ORDER BY id";
 constexpr const char* kRulesQuery = "SELECT body, object, source FROM rules ORDER BY id";
+// The other households' goals: the fleet's prior (version 2 on).
+constexpr const char* kFleetGoalsQuery =
+    "SELECT household, task, subtask, category, place, literals, object, source FROM goals WHERE household <> $1 "
+    "ORDER BY id";
 constexpr const char* kClassRulesQuery = "SELECT body FROM class_rules WHERE household = $1 ORDER BY id";
 constexpr const char* kForgottenRulesQuery = "SELECT body FROM forgotten_rules WHERE household = $1 ORDER BY id";
 constexpr const char* kHouseholdsQuery =
@@ -565,6 +569,11 @@ Result<Knowledge> PostgresStore::load_once(const Domain& domain) const {
   if (!succeeded(goals.get())) return failed(goals);
   PgResult rules = run(kRulesQuery);
   if (!succeeded(rules.get())) return failed(rules);
+  PgResult fleet;
+  if (!v1) {
+    fleet = run(kFleetGoalsQuery, household);
+    if (!succeeded(fleet.get())) return failed(fleet);
+  }
   // Stores before version 3 (read as they are) have no class rules.
   PgResult class_rules, forgotten_rules;
   if (version_ >= 3) {
@@ -591,6 +600,17 @@ Result<Knowledge> PostgresStore::load_once(const Domain& domain) const {
     auto goal = store_codec::decode_goal(domain, std::move(key), *literals, Provenance{PQgetvalue(g, row, 5), PQgetvalue(g, row, 6)});
     if (!goal) return located(goal.error());
     knowledge.goals.add(std::move(*goal));
+  }
+  for (int row = 0; fleet && row < PQntuples(fleet.get()); ++row) {
+    const PGresult* f = fleet.get();
+    GoalKey key{PQgetvalue(f, row, 1), PQgetvalue(f, row, 2), PQgetvalue(f, row, 3), PQgetvalue(f, row, 4)};
+    auto literals = text(f, row, 5, store_codec::goal_entry(key));
+    if (!literals) return located(literals.error());
+    auto goal = store_codec::decode_goal(domain, std::move(key), *literals, Provenance{PQgetvalue(f, row, 6), PQgetvalue(f, row, 7)});
+    // Another world's goal (a predicate this domain lacks) is no prior here.
+    if (!goal && goal.error().code == ErrorCode::kFailedPrecondition) continue;
+    if (!goal) return located(goal.error());
+    knowledge.fleet.add(PQgetvalue(f, row, 0), std::move(*goal));
   }
   const PGresult* r = rules.get();
   for (int row = 0; row < PQntuples(r); ++row) {

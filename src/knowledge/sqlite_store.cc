@@ -63,6 +63,10 @@ constexpr const char* kGoalsQuery =
 constexpr const char* kTasksQueryV1 = "SELECT name, structure FROM tasks ORDER BY name";
 constexpr const char* kGoalsQueryV1 = "SELECT task, subtask, category, place, literals, object, source FROM goals ORDER BY id";
 constexpr const char* kRulesQuery = "SELECT body, object, source FROM rules ORDER BY id";
+// The other households' goals: the fleet's prior (version 2 on).
+constexpr const char* kFleetGoalsQuery =
+    "SELECT household, task, subtask, category, place, literals, object, source FROM goals WHERE household <> ? "
+    "ORDER BY id";
 constexpr const char* kClassRulesQuery = "SELECT body FROM class_rules WHERE household = ? ORDER BY id";
 constexpr const char* kForgottenRulesQuery = "SELECT body FROM forgotten_rules WHERE household = ? ORDER BY id";
 constexpr const char* kHouseholdsQuery =
@@ -397,17 +401,34 @@ Result<Knowledge> SqliteStore::load(const Domain& domain) const {
       if (!task) return located(task.error());
       knowledge.tasks.push_back(std::move(*task));
     }
+    // A goal's row from column `first` on: task, subtask, category, place,
+    // literals, object, source.
+    auto goal_at = [&](SQLite::Statement& row, int first) -> Result<GoalKnowledge> {
+      GoalKey key{row.getColumn(first).getString(), row.getColumn(first + 1).getString(),
+                  row.getColumn(first + 2).getString(), row.getColumn(first + 3).getString()};
+      auto literals = text(row.getColumn(first + 4), store_codec::goal_entry(key));
+      if (!literals) return tl::unexpected(literals.error());
+      return store_codec::decode_goal(
+          domain, std::move(key), *literals,
+          Provenance{row.getColumn(first + 5).getString(), row.getColumn(first + 6).getString()});
+    };
     SQLite::Statement goals(*db_, v1 ? kGoalsQueryV1 : kGoalsQuery);
     if (!v1) goals.bind(1, household_);
     while (own && goals.executeStep()) {
-      GoalKey key{goals.getColumn(0).getString(), goals.getColumn(1).getString(), goals.getColumn(2).getString(),
-                  goals.getColumn(3).getString()};
-      auto literals = text(goals.getColumn(4), store_codec::goal_entry(key));
-      if (!literals) return located(literals.error());
-      auto goal = store_codec::decode_goal(domain, std::move(key), *literals,
-                                           Provenance{goals.getColumn(5).getString(), goals.getColumn(6).getString()});
+      auto goal = goal_at(goals, 0);
       if (!goal) return located(goal.error());
       knowledge.goals.add(std::move(*goal));
+    }
+    if (!v1) {
+      SQLite::Statement fleet(*db_, kFleetGoalsQuery);
+      fleet.bind(1, household_);
+      while (fleet.executeStep()) {
+        auto goal = goal_at(fleet, 1);
+        // Another world's goal (a predicate this domain lacks) is no prior here.
+        if (!goal && goal.error().code == ErrorCode::kFailedPrecondition) continue;
+        if (!goal) return located(goal.error());
+        knowledge.fleet.add(fleet.getColumn(0).getString(), std::move(*goal));
+      }
     }
     SQLite::Statement rules(*db_, kRulesQuery);
     while (rules.executeStep()) {

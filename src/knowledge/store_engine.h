@@ -27,6 +27,7 @@
 #include <string>
 #include <vector>
 
+#include "knowledge/fleet_prior.h"
 #include "knowledge/goal_memory.h"
 #include "knowledge/matcher.h"
 #include "knowledge/preferences.h"
@@ -61,6 +62,10 @@ struct Knowledge {
   // The rules the person told the agent to forget: never used again, even
   // where the goals would induce them anew, until said again.
   ClassRules forgotten_rules;
+  // The goals every other household of the store taught (the fleet's
+  // prior, knowledge/fleet_prior.h), in the order saved. Those that name
+  // what `domain` lacks (another world's) are left out.
+  FleetPrior fleet;
 
   const TaskKnowledge* find_task(const std::string& name) const;
   // Whether `rule` (by class_rule_key) was forgotten.

@@ -150,6 +150,27 @@ TEST_F(KnowledgeIn, TheTableSaysWhatWasCarriedOver) {
   EXPECT_THAT(run.out, HasSubstr("inst+search4, by analogy:"));
 }
 
+// --household with --knowledge-out: what the run learned is that
+// household's, and the default household holds no goal.
+TEST_F(KnowledgeIn, KnowledgeOutKeepsWhatWasLearnedAsTheHouseholdNamed) {
+  testing::Invocation learned = testing::run_cli(
+      {"experiment", "--scenario", "data/scenarios/tidy-kitchen.yaml", "--conditions", "instruction", "--quiet",
+       "--household", "smiths", "--knowledge-out", (dir_ / "out").string()},
+      dir_);
+  ASSERT_EQ(learned.exit_code, 0) << learned.err;
+  const std::string store = (dir_ / "out" / "instruction.sqlite").string();
+  auto goals_of = [&](const std::string& household) -> long {
+    testing::Invocation shown =
+        testing::run_cli({"knowledge", "--knowledge", store, "--household", household, "--json"}, dir_);
+    EXPECT_EQ(shown.exit_code, 0) << shown.err;
+    auto json = nlohmann::json::parse(shown.out, nullptr, false);
+    if (json.is_discarded() || !json.contains("goals")) return -1;
+    return static_cast<long>(json["goals"].size());
+  };
+  EXPECT_EQ(goals_of("smiths"), 26);
+  EXPECT_EQ(goals_of("default"), 0);
+}
+
 TEST_F(KnowledgeIn, AMissingStoreIsAnErrorNamingIt) {
   testing::Invocation run =
       testing::run_cli({"experiment", "--scenario", "data/scenarios/tidy-kitchen.yaml", "--conditions", "instruction",

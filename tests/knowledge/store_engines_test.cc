@@ -11,6 +11,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <set>
 #include <thread>
 
 #include "knowledge/store.h"
@@ -516,6 +517,47 @@ TEST_P(StoreEngines, TwoHouseholdsWantingDifferentPlacesForOneKindNeverOverwrite
   auto names = smiths.households();
   ASSERT_TRUE(names) << names.error().describe();
   EXPECT_EQ(*names, std::vector<std::string>{"smiths"});
+}
+
+// The fleet's prior: a household loads every other household's goals
+// with their household's name, never its own, and what the others chose
+// proposes a destination for a kind it never taught.
+TEST_P(StoreEngines, EachHouseholdLoadsTheOtherHouseholdsGoalsAsTheFleetsPrior) {
+  KnowledgeStore smiths = open_or_die(StoreAccess::kReadWrite, "smiths");
+  KnowledgeStore joneses = open_or_die(StoreAccess::kReadWrite, "joneses");
+  KnowledgeStore browns = open_or_die(StoreAccess::kReadWrite, "browns");
+  GoalKnowledge in_garbage = goal_for("ceramic-plate1", "(in ceramic-plate1 garbage1)");
+  ASSERT_TRUE(smiths.save_goal(plate_goal()));
+  ASSERT_TRUE(smiths.save_goal(paper_plate_goal()));
+  ASSERT_TRUE(joneses.save_goal(in_garbage));
+  ASSERT_TRUE(browns.save_goal(plate_goal()));
+
+  auto newcomer = open_or_die(StoreAccess::kReadOnly, "newcomers").load(domain_);
+  ASSERT_TRUE(newcomer) << newcomer.error().describe();
+  EXPECT_EQ(newcomer->goals.size(), 0u);
+  ASSERT_EQ(newcomer->fleet.size(), 4u);
+  std::multiset<std::string> households;
+  for (const FleetGoal& g : newcomer->fleet.all()) households.insert(g.household);
+  EXPECT_EQ(households, (std::multiset<std::string>{"browns", "joneses", "smiths", "smiths"}));
+  // Two of three households put the ceramic plate in the dishwasher.
+  std::vector<DestinationProposal> plate = newcomer->fleet.propose(plate_goal().key);
+  ASSERT_EQ(plate.size(), 2u);
+  EXPECT_EQ(plate[0].source, ProposalSource::kFleet);
+  EXPECT_EQ(format_destination(plate[0].destination), format_destination(*destination_of(plate_goal().literals)));
+  EXPECT_EQ(plate[0].households, 2u);
+  EXPECT_EQ(plate[0].of_households, 3u);
+  EXPECT_DOUBLE_EQ(plate[0].confidence, 3.0 / 6.0);
+  EXPECT_EQ(plate[1].households, 1u);
+  EXPECT_DOUBLE_EQ(plate[1].confidence, 2.0 / 6.0);
+
+  // Its own goals are not its prior: the smiths' fleet is the others'.
+  auto smiths_know = open_or_die(StoreAccess::kReadOnly, "smiths").load(domain_);
+  ASSERT_TRUE(smiths_know);
+  EXPECT_EQ(smiths_know->goals.size(), 2u);
+  ASSERT_EQ(smiths_know->fleet.size(), 2u);
+  for (const FleetGoal& g : smiths_know->fleet.all()) EXPECT_NE(g.household, "smiths");
+  // Nothing proposed for a kind no other household taught.
+  EXPECT_TRUE(smiths_know->fleet.propose(paper_plate_goal().key).empty());
 }
 
 TEST_P(StoreEngines, AHouseholdNameThatCannotBeOneIsRefusedInOneSentence) {
