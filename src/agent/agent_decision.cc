@@ -143,11 +143,22 @@ TaskLearningAgent::Session::answer_to_proposal(const Question& asked, ObjectId o
       });
   if (!heard) return tl::unexpected(heard.error());
   if (!heard->reply) return ProposalAnswer{};
-  if (const auto* yes_no = std::get_if<language::YesNo>(&*heard->reply)) {
-    if (yes_no->yes) begin_lesson(heard->text);
-    return ProposalAnswer{yes_no->yes, std::nullopt};
+  std::string text = heard->text;
+  language::Reply reply = std::move(*heard->reply);
+  if (const auto* yes_no = std::get_if<language::YesNo>(&reply)) {
+    if (yes_no->yes) begin_lesson(text);
+    if (yes_no->yes || yes_no->rest.empty()) return ProposalAnswer{yes_no->yes, std::nullopt};
+    // "no, it goes in the bottom drawer": the rest is where it goes instead,
+    // read as the answer to where it goes. What does not say where it goes
+    // is heard at the next question.
+    language::Reply where = agent_.understanding_.reply(w, context(language::Asked::kGoal, object), yes_no->rest);
+    if (!about_it(where)) {
+      queued_replies_.push_back(yes_no->rest);
+      return ProposalAnswer{false, std::nullopt};
+    }
+    reply = std::move(where);
   }
-  const auto& given = std::get<language::GoalGiven>(*heard->reply);
+  const auto& given = std::get<language::GoalGiven>(reply);
   begin_lesson(heard->text);
   say(language::read_back_goal(w, object, given.goal));
   const std::string source = "instructor: " + apprentice::quoted(heard->text);

@@ -185,6 +185,15 @@ TaskLearningAgent::Session::Flow<TaskLearningAgent::Session::Heard> TaskLearning
     }
     if (rescue && std::holds_alternative<language::Unusable>(reply))
       if (auto rescued = rescue(*text)) reply = std::move(*rescued);
+    // The thing asked about called by a word nothing here is called
+    // ("dummy in the top drawer", asked about the pacifier): a person is
+    // asked whether that word means it.
+    if (person())
+      if (auto word = other_name_of_thing(*text, reply, context)) {
+        auto meant = ask_other_name(*word, *text, asked, context);
+        if (!meant) return tl::unexpected(meant.error());
+        if (*meant) reply = std::move(**meant);
+      }
     // A person's rule is kept whatever was asked, and the question asked
     // again (a program is asked at most max_retries times).
     if (auto rule = rule_in_reply(*text, reply, context)) {

@@ -1,12 +1,14 @@
 // A person's rules in the session: said at any question
 // (language/rule_reader.h), kept, read back.
 #include <algorithm>
+#include <cctype>
 
 #include "agent/class_rule_knowledge.h"
 #include "agent/person_rule.h"
 #include "agent/session.h"
 #include "language/generation.h"
 #include "language/narration.h"
+#include "language/utterance.h"
 #include "util/log.h"
 #include "util/text.h"
 
@@ -14,10 +16,68 @@ namespace apprentice {
 
 namespace {
 
+// `text` with each whole word `word` (ignoring case) said as `instead`.
+std::string with_word_replaced(const std::string& text, const std::string& word, const std::string& instead) {
+  auto is_word_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '\''; };
+  std::string out;
+  std::size_t i = 0;
+  while (i < text.size()) {
+    if (!is_word_char(text[i])) {
+      out += text[i++];
+      continue;
+    }
+    std::size_t end = i;
+    while (end < text.size() && is_word_char(text[end])) ++end;
+    std::string piece = text.substr(i, end - i);
+    out += to_lower(piece) == word ? instead : piece;
+    i = end;
+  }
+  return out;
+}
+
 }  // namespace
+
+std::optional<std::string> TaskLearningAgent::Session::other_name_of_thing(const std::string& text,
+                                                                           const language::Reply& reply,
+                                                                           const language::ReplyContext& context) const {
+  if (context.asked != language::Asked::kGoal || !context.object || !std::holds_alternative<language::Unusable>(reply))
+    return std::nullopt;
+  auto rule = language::read_rule(world(), agent_.understanding_.lexicon(), text, context.object);
+  if (!rule || rule->clauses.size() != 1) return std::nullopt;
+  const language::RuleClause& clause = rule->clauses.front();
+  if (clause.thing || clause.places.empty() || clause.classes.size() != 1) return std::nullopt;
+  // One word, in the singular, that names nothing here: a class is said in
+  // the plural ("toys go in the basket"), the thing asked about in the
+  // singular.
+  const language::RuleClass& said = clause.classes.front();
+  if (said.rest || said.phrase.empty() || said.phrase != said.head || !said.modifiers.empty() ||
+      is_general_head(said.head))
+    return std::nullopt;
+  if (language::singular_forms(said.phrase).size() != 1) return std::nullopt;
+  if (agent_.understanding_.category(world(), said.phrase).has_value()) return std::nullopt;
+  return said.phrase;
+}
+
+TaskLearningAgent::Session::Flow<std::optional<language::Reply>> TaskLearningAgent::Session::ask_other_name(
+    const std::string& word, const std::string& text, const Question& asked, const language::ReplyContext& context) {
+  const ObjectId object = *context.object;
+  Question q = question(QuestionKind::kConfirmGoal,
+                        "By \"" + word + "\", do you mean " + language::spoken_name(world(), object) + "?", asked.object);
+  auto heard = converse(q, this->context(language::Asked::kYesNo, object),
+                        [](const language::Reply& r) -> std::optional<std::string> {
+                          if (std::holds_alternative<language::YesNo>(r)) return std::nullopt;
+                          return "I asked a yes-or-no question.";
+                        });
+  if (!heard) return tl::unexpected(heard.error());
+  if (!heard->reply || !std::get<language::YesNo>(*heard->reply).yes) return std::optional<language::Reply>();
+  const std::string again = with_word_replaced(text, word, language::spoken_category(world(), object));
+  return std::optional<language::Reply>(agent_.understanding_.reply(world(), context, again));
+}
 
 std::optional<language::RuleReading> TaskLearningAgent::Session::rule_in_reply(
     const std::string& text, const language::Reply& reply, const language::ReplyContext& context) const {
+  // The thing asked about called by another word is not a class.
+  if (other_name_of_thing(text, reply, context)) return std::nullopt;
   auto rule = language::read_rule(world(), agent_.understanding_.lexicon(), text, context.object);
   if (!rule || !rule->has_class_clause()) return std::nullopt;
   // A class that is only the world's kinds named in the plural ("plates and

@@ -153,6 +153,15 @@ class TaskLearningAgent::Session {
   // reading, else nullopt.
   std::optional<language::RuleReading> rule_in_reply(const std::string& text, const language::Reply& reply,
                                                      const language::ReplyContext& context) const;
+  // At a goal question, a reply that names the thing asked about by a word
+  // nothing here is called ("dummy in the top drawer", asked about the
+  // pacifier): that word, else nullopt. Such a reply is never a rule.
+  std::optional<std::string> other_name_of_thing(const std::string& text, const language::Reply& reply,
+                                                 const language::ReplyContext& context) const;
+  // Asks "By "dummy", do you mean the pacifier?"; on a yes, the reply read
+  // again with the thing's own name in place of `word`; nullopt on a no.
+  Flow<std::optional<language::Reply>> ask_other_name(const std::string& word, const std::string& text,
+                                                      const Question& asked, const language::ReplyContext& context);
   // Keeps a rule the person said, and says what was understood of it and
   // what was not.
   void hear_rule(const language::RuleReading& rule, const std::string& text);

@@ -309,5 +309,42 @@ TEST(TransferInTheAgent, ANoFallsBackToAsking) {
   EXPECT_THAT(soda->provenance.source, ::testing::StartsWith("instructor"));
 }
 
+// "no, it goes in the refrigerator and close it", said to a proposal, is
+// the goal instead (issue 21): learned and read back, and the thing is not
+// asked about again.
+TEST(TransferInTheAgent, ANoWithWhereItGoesIsTheGoalInstead) {
+  Scenario renamed = testing::load_or_die(testing::source_path("data/scenarios/tidy-kitchen-renamed.yaml"));
+  SimulatedInstructor simulated(renamed);
+  int corrected = 0;
+  testing::CallbackInstructor instructor(
+      [&](const Question& q, const World& w) -> std::optional<std::string> {
+        if (q.kind == QuestionKind::kConfirmGoal && q.text.starts_with("Does the cream on the sideboard go")) {
+          ++corrected;
+          return std::string("no, it goes in the refrigerator and close it");
+        }
+        auto said = simulated.answer(q, w);
+        if (!said) return std::nullopt;
+        return *said;
+      },
+      false);
+  AgentOptions options;
+  options.condition = *parse_condition("inst+search4");
+  TaskLearningAgent agent(options, kitchen_knowledge(), Understanding(), nullptr, nullptr);
+  Simulator simulator(renamed.world);
+  Dialogue dialogue(instructor);
+  auto report = agent.learn(simulator, dialogue);
+  ASSERT_TRUE(report.has_value()) << report.error().describe();
+  const std::string transcript = dialogue.transcript_text();
+  ASSERT_EQ(corrected, 1) << transcript;
+  EXPECT_THAT(transcript, HasSubstr("Instructor: no, it goes in the refrigerator and close it\nAgent: So the cream goes "
+                                    "in the refrigerator, and the refrigerator ends closed."));
+  EXPECT_THAT(transcript, ::testing::Not(HasSubstr("Where should the cream on the sideboard go?"))) << transcript;
+  const GoalKnowledge* cream = agent.knowledge().goals.find(GoalKey{"tidy kitchen", "store", "cream", "sideboard"});
+  ASSERT_NE(cream, nullptr);
+  EXPECT_THAT(cream->provenance.source, ::testing::StartsWith("instructor"));
+  EXPECT_THAT(format_goal_knowledge(*cream), HasSubstr("refrigerator"));
+  for (const Literal& l : renamed.goal_assertions()) EXPECT_TRUE(simulator.state().satisfies(l)) << transcript;
+}
+
 }  // namespace
 }  // namespace apprentice

@@ -1,0 +1,93 @@
+// Inside read_acts (reply_acts.cc): the kinds of segment a reply is cut
+// into (reply_segments.cc), the answer's words read with slips and words
+// that carry nothing (reply_answer_words.cc), and several steps in one
+// reply (reply_steps.cc). Not for use outside the language module.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "language/grounding.h"
+#include "language/reply.h"
+
+namespace apprentice::language::acts {
+
+using Words = std::vector<std::string>;
+
+// --- Segments (reply_segments.cc) ----------------------------------------
+
+// Words that only set the tone: "um", "ugh", "lol", "ok so", "oh and".
+bool is_interjection(std::string_view w);
+// The words of a correction's marker: "no wait", "oops", "nah", "wait what".
+bool is_marker(std::string_view w);
+
+struct Segment {
+  std::string text;  // as typed
+  Words words;       // reply_words
+};
+
+// The reply cut at , ; : . ! ? and free-standing dashes.
+std::vector<Segment> segments(std::string_view text);
+Words without_interjections(Words words);
+bool has(const Words& words, std::initializer_list<std::string_view> phrase);
+// "undo", "scratch that", "go back one", "that was wrong": how many undos
+// (0: not an undo).
+int undos(const Words& said);
+
+// Leading marker words of a correction, and whether they are strong ("no
+// wait", "oops", "I meant") or could be a filler ("nah", "no").
+struct Marker {
+  std::size_t length = 0;
+  bool strong = false;
+};
+Marker marker(const Words& words);
+
+// "what's left?", "where's the soap?", "why did you close it?": the
+// teacher's question, or nullopt.
+std::optional<Command> question(const Grounder& grounder, const World& world, const Words& said);
+// "stop for now", "gotta go": the teacher ends the session.
+bool ends_session(const Words& said, Asked asked);
+// "what can you do?", "what do I type here?": the teacher asks what to say.
+bool asks_for_help(const Words& said);
+// "close the top drawer", "shut both drawers": the actions, or nullopt when
+// the segment is not such a command.
+std::optional<std::vector<Action>> door_action(const Grounder& grounder, const World& world,
+                                               const ReplyContext& context, const Words& said);
+
+// --- The answer's words (reply_answer_words.cc) ---------------------------
+
+bool usable(const Reply& r);
+// The place a goal puts the thing asked about.
+std::optional<ObjectId> destination(const World& world, const Reply& reply);
+// A word of the world's names a typed word is a slip of ("hampr" for
+// "hamper"); "" when none or several.
+std::string slip_of(const World& world, const std::string& word);
+std::string quote(const std::string& s);
+// The first word of a phrase nothing here fits that only describes ("wet",
+// "obviously"); "" when none.
+std::string unmodelled_modifier(const Grounder& grounder, const World& world, const Words& phrase);
+// The answer's words read at the question, words that carry nothing
+// skipped when the rest then reads whole (`notes` say so).
+Reply read_answer(const Grounder& grounder, const World& world, const ReplyContext& context, std::string text,
+                  std::vector<std::string>& notes);
+// Segments that name nothing here and hold no instruction: remarks.
+bool is_remark(const Grounder& grounder, const World& world, const Words& words);
+std::string joined(const std::vector<const Segment*>& parts);
+
+// --- Several steps (reply_steps.cc) --------------------------------------
+
+// "clear the counter, then the table": the first step's reading and the
+// further steps as said; nullopt when the reply is one step, or a part does
+// not read.
+std::optional<std::pair<Reply, std::vector<std::string>>> several_steps(const Grounder& grounder, const World& world,
+                                                                      const ReplyContext& context,
+                                                                      std::string_view text);
+
+// --- read_acts (reply_acts.cc) -------------------------------------------
+
+ReplyActs read(const Grounder& grounder, const World& world, const ReplyContext& context, std::string_view text);
+
+}  // namespace apprentice::language::acts

@@ -1,0 +1,257 @@
+// A reply cut into segments, and what each segment may be besides part of
+// the answer (read_acts, reply_acts.cc): fillers, an undo, a correction's
+// marker, a question of the teacher's, an ending of the session, a request
+// for help, a one-off door action.
+#include <algorithm>
+
+#include "language/generation.h"
+#include "language/narration.h"
+#include "language/parser.h"
+#include "language/reply_acts_parts.h"
+#include "language/reply_reading.h"
+#include "language/utterance.h"
+#include "util/text.h"
+
+namespace apprentice::language::acts {
+// Words that only set the tone: "um", "ugh", "lol", "ok so", "oh and".
+bool is_interjection(std::string_view w) {
+  return is_one_of(w, {"um", "umm", "ummm", "uh", "uhh", "er", "erm", "ugh", "hmm", "hmmm", "hm", "ok", "so", "oh",
+                       "lol", "haha", "well", "hey", "hi", "hiya", "hello", "btw", "alright", "and", "also", "plus",
+                       "please", "right", "anyway", "yeah", "ah", "aha", "ooh", "argh", "gosh", "jeez", "omg", "idk",
+                       "lemme", "see", "thanks", "thank", "you", "cheers", "sorry", "mate", "buddy", "kk"});
+}
+
+// The words of a correction's marker: "no wait", "oops", "nah", "wait what".
+bool is_marker(std::string_view w) {
+  return is_one_of(w, {"no", "nah", "nope", "wait", "oops", "whoops", "actually", "sorry", "what", "oh", "ugh",
+                       "hmm", "um"});
+}
+
+// The reply cut at , ; : . ! ? and free-standing dashes.
+std::vector<Segment> segments(std::string_view text) {
+  std::vector<Segment> out;
+  std::string current;
+  auto flush = [&] {
+    Words words = reply_words(current);
+    std::erase(words, std::string(","));
+    if (!words.empty()) out.push_back({std::string(trim(current)), std::move(words)});
+    current.clear();
+  };
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    char c = text[i];
+    bool dash = c == '-' && (i == 0 || text[i - 1] == ' ') && (i + 1 >= text.size() || text[i + 1] == ' ');
+    if (c == ',' || c == ';' || c == ':' || c == '.' || c == '!' || c == '?' || dash) flush();
+    else current.push_back(c);
+  }
+  flush();
+  return out;
+}
+
+Words without_interjections(Words words) {
+  while (!words.empty() && is_interjection(words.front())) words.erase(words.begin());
+  return words;
+}
+
+bool has(const Words& words, std::initializer_list<std::string_view> phrase) {
+  return std::search(words.begin(), words.end(), phrase.begin(), phrase.end()) != words.end();
+}
+
+// "undo", "scratch that", "go back one", "that was wrong": how many undos
+// (0: not an undo).
+int undos(const Words& said) {
+  Words words;
+  for (const std::string& w : said)
+    if (!is_marker(w) && !is_interjection(w)) words.push_back(w);
+  if (words.empty()) return 0;
+  bool all = std::all_of(words.begin(), words.end(), [](const std::string& w) {
+    return is_one_of(w, {"undo", "scratch", "that", "take", "back", "go", "one", "was", "is", "wrong", "the", "last",
+                         "it", "not", "right", "mistake", "my", "bad", "step", "answer", "revert"});
+  });
+  if (!all) return 0;
+  if (!(has(words, {"undo"}) || has(words, {"scratch", "that"}) || has(words, {"take", "that", "back"}) ||
+        has(words, {"go", "back"}) || has(words, {"wrong"}) || has(words, {"mistake"}) || has(words, {"revert"})))
+    return 0;
+  return std::max<int>(1, static_cast<int>(std::count(words.begin(), words.end(), "undo")));
+}
+
+Marker marker(const Words& words) {
+  Marker m;
+  int noes = 0;
+  while (m.length < words.size() && (is_marker(words[m.length]) || is_interjection(words[m.length]))) {
+    const std::string& w = words[m.length];
+    if (is_one_of(w, {"wait", "oops", "whoops", "actually", "sorry"})) m.strong = true;
+    if (is_one_of(w, {"no", "nah", "nope"})) ++noes;
+    ++m.length;
+  }
+  if (noes >= 2) m.strong = true;
+  if (m.length + 1 < words.size() && words[m.length] == "i" && is_one_of(words[m.length + 1], {"meant", "mean"})) {
+    m.length += 2;
+    m.strong = true;
+  }
+  if (noes == 0 && !m.strong) m.length = 0;  // interjections alone are no marker
+  return m;
+}
+
+// "what's left?", "how many things are left on the table?", "is anything
+// still in the bags?", "where's the soap?", "why did you close it?".
+std::optional<Command> question(const Grounder& grounder, const World& world, const Words& said) {
+  Words words = said;
+  while (!words.empty() && (is_interjection(words.front()) || is_marker(words.front())) && words.front() != "what")
+    words.erase(words.begin());
+  if (words.empty()) return std::nullopt;
+  const std::string& first = words.front();
+  if (first == "why") return Command{Command::Kind::kWhy, "", {}, {}};
+  if (first == "where" && words.size() > 1 &&
+      is_one_of(words[1], {"is", "are", "did", "does", "do", "has", "have", "was", "were"})) {
+    Words thing;
+    for (std::size_t i = 2; i < words.size(); ++i)
+      if (!is_one_of(words[i], {"you", "it", "go", "put", "gone", "now", "end", "up", "the", "my", "other", "did"}))
+        thing.push_back(words[i]);
+    if (thing.empty()) return std::nullopt;
+    std::string phrase = join(thing, " ");
+    ReferenceContext context{world, grounder.lexicon(), std::nullopt};
+    context.partial_names = true;
+    auto found = candidates_for(NounPhrase{"", thing}, Role::kItem, context);
+    std::vector<ObjectId> named;
+    if (const auto* set = std::get_if<CandidateSet>(&found)) named = set->objects;
+    return Command{Command::Kind::kWhere, phrase, named, {}};
+  }
+  // "what have we done so far?", "how far are we?": where the teaching is.
+  if (is_one_of(first, {"what", "how", "whats"}) &&
+      (has(words, {"so", "far"}) || has(words, {"how", "far"}) || has(words, {"have", "we", "done"}) ||
+       has(words, {"have", "you", "done"}) || has(words, {"did", "we", "do"})))
+    return Command{Command::Kind::kStatus, "", {}, {}};
+  bool asks = is_one_of(first, {"what", "how", "is", "are", "anything", "any", "whats", "which"});
+  bool left = has(words, {"left"}) || has(words, {"remaining"}) || has(words, {"still"}) ||
+              has(words, {"else"}) || has(words, {"how", "many"}) || has(words, {"how", "much"}) ||
+              (first != "what" && has(words, {"more"})) || has(words, {"is", "there"});
+  // "what is left", not "what is left of the milk goes ...": no placing words.
+  bool places = has(words, {"go"}) || has(words, {"goes"}) || has(words, {"put"});
+  if (asks && left && !places && words.size() <= 10) return Command{Command::Kind::kWhatsLeft, "", {}, {}};
+  return std::nullopt;
+}
+
+// "stop for now", "gotta go", "I'm done for today, stop": the teacher
+// ends the session.
+bool ends_session(const Words& said, Asked asked) {
+  Words words;
+  for (const std::string& w : said)
+    if (!is_interjection(w) && !is_one_of(w, {"let", "us", "i", "will", "am", "we", "can", "just", "im"}))
+      words.push_back(w);
+  if (words.empty()) return false;
+  for (std::initializer_list<std::string_view> leaving :
+       {std::initializer_list<std::string_view>{"gotta", "go"}, {"gotta", "run"}, {"have", "to", "go"},
+        {"got", "to", "go"}, {"need", "to", "go"}, {"have", "to", "run"}, {"call", "it", "a", "day"}})
+    if (has(words, leaving)) return true;
+  // "done for today" at the task's step ends the task, not the session.
+  if (asked != Asked::kTaskStep && asked != Asked::kSubtaskEnd)
+    for (std::initializer_list<std::string_view> done :
+         {std::initializer_list<std::string_view>{"done", "for", "today"}, {"done", "for", "now"}, {"done", "for", "the", "day"}})
+      if (has(words, done)) return true;
+  bool stop = std::any_of(words.begin(), words.end(), [](const std::string& w) {
+    return is_one_of(w, {"stop", "quit", "bye", "goodbye", "later"});
+  });
+  return stop && std::all_of(words.begin(), words.end(), [](const std::string& w) {
+           return is_one_of(w, {"stop", "here", "for", "now", "today", "quit", "that", "is", "it", "enough", "finish",
+                                "later", "continue", "bye", "goodbye", "see", "you", "the", "rest", "pause"});
+         });
+}
+
+// "what can you do?", "what kinds of things can you learn?", "what do I
+// type here?": the teacher asks what to say.
+bool asks_for_help(const Words& said) {
+  Words words = without_interjections(said);
+  bool asks = std::any_of(words.begin(), words.end(), [](const std::string& w) { return is_one_of(w, {"what", "how"}); });
+  if (!asks) return false;
+  auto any_of = [&](std::initializer_list<std::string_view> set) {
+    return std::any_of(words.begin(), words.end(), [&](const std::string& w) { return is_one_of(w, set); });
+  };
+  bool you_do = has(words, {"you"}) && any_of({"learn", "able"}) && any_of({"can", "could", "able", "kind", "kinds"});
+  // "what can you do?", "what can you actually do?", "what are you able to do?"
+  auto in_order = [&](std::initializer_list<std::string_view> seq) {
+    auto at = words.begin();
+    for (std::string_view w : seq) {
+      at = std::find(at, words.end(), w);
+      if (at == words.end()) return false;
+      ++at;
+    }
+    return true;
+  };
+  bool can_you_do = in_order({"can", "you", "do"}) || in_order({"could", "you", "do"}) || has(words, {"able", "to", "do"});
+  // "how does this work?", "how do I use you?": how the teaching goes.
+  bool how_it_works = words.front() == "how" && any_of({"work", "works", "use", "start"});
+  bool to_say = std::any_of(words.begin(), words.end(), [](const std::string& w) {
+    return is_one_of(w, {"say", "type", "write", "answer"});
+  });
+  return (you_do || can_you_do || to_say || how_it_works) && words.size() <= 10;
+}
+
+// Words that begin a clause of condition or reason: "if", "unless", "so".
+bool is_subordinator(std::string_view w) {
+  return is_one_of(w, {"if", "unless", "when", "whenever", "once", "because", "since", "so", "while", "though",
+                       "although", "cause", "cuz", "coz"});
+}
+
+// "close the top drawer", "shut both drawers", "open the compost bin
+// first": the actions, or nullopt when the segment is not such a command.
+std::optional<std::vector<Action>> door_action(const Grounder& grounder, const World& world,
+                                               const ReplyContext& context, const Words& said) {
+  Words words = without_interjections(said);
+  while (!words.empty() && is_one_of(words.front(), {"can", "could", "would", "you", "also", "just", "then"}))
+    words.erase(words.begin());
+  if (words.empty() || !is_one_of(words.front(), {"close", "shut", "open"})) return std::nullopt;
+  const bool open = words.front() == "open";
+  // "shut the top drawer if it's still open", "close it so the kids can't
+  // get in": a clause of condition or reason says when or why, not what.
+  Words object(words.begin() + 1, std::find_if(words.begin() + 1, words.end(), [](const std::string& w) {
+                 return is_subordinator(w);
+               }));
+  std::erase_if(object, [](const std::string& w) {
+    return is_one_of(w, {"first", "now", "please", "too", "again", "up", "properly", "after", "afterwards"});
+  });
+  if (object.empty()) return std::nullopt;
+  bool every = is_one_of(object.front(), {"both", "all", "every", "each"}) || object.back().ends_with("s");
+  // "close it", "shut the lid": the place named last, part of an answer.
+  if (!every && (is_object_pronoun(object.back()) || is_door_word(object.back()))) {
+    std::size_t named = std::count_if(object.begin(), object.end(), [](const std::string& w) {
+      return !is_determiner(w) && !is_object_pronoun(w) && !is_door_word(w);
+    });
+    if (named == 0) return std::nullopt;
+  }
+  ReplyContext as_action = context;
+  as_action.asked = Asked::kAction;
+  Reply reply = read_reply_plain(grounder, world, as_action, std::string(open ? "open " : "close ") + join(object, " "));
+  if (const auto* given = std::get_if<ActionGiven>(&reply); given && given->more.empty() && !every)
+    return std::vector<Action>{given->action};
+  // Every place with a door the words name: "both drawers", "the lids".
+  Words noun = object;
+  std::erase_if(noun, [](const std::string& w) { return is_determiner(w); });
+  if (noun.empty()) return std::nullopt;
+  std::vector<ObjectId> places;
+  bool doors = is_door_word(noun.back());
+  for (ObjectId id = 0; id < world.universe->size(); ++id) {
+    if (!openable(world, id)) continue;
+    if (doors) {
+      places.push_back(id);
+      continue;
+    }
+    for (const std::string& form : singular_forms(noun.back()))
+      if (name_parts(world.universe->info(id).category).back() == form) {
+        places.push_back(id);
+        break;
+      }
+  }
+  if (places.empty()) return std::nullopt;
+  std::vector<Action> actions;
+  for (ObjectId id : places) {
+    ActionCommand command;
+    command.verb = open ? ActionVerb::kOpen : ActionVerb::kClose;
+    command.object = NounPhrase{"", {world.universe->name(id)}};
+    Interpretation grounded = grounder.ground(command, world, std::nullopt);
+    if (grounded.ok()) actions.push_back(std::get<Action>(grounded.result));
+  }
+  if (actions.empty()) return std::nullopt;
+  return actions;
+}
+
+}  // namespace apprentice::language::acts

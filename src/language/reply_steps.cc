@@ -1,0 +1,121 @@
+// Several steps of the task in one reply (read_acts, reply_acts.cc):
+// "clear the counter, then the table", "that's it for the desk, now sort
+// the bookshelf".
+#include <algorithm>
+
+#include "language/generation.h"
+#include "language/narration.h"
+#include "language/parser.h"
+#include "language/reply_acts_parts.h"
+#include "language/reply_reading.h"
+#include "language/utterance.h"
+#include "util/text.h"
+
+namespace apprentice::language::acts {
+// The parts of a reply about the task's steps: cut at sentence and clause
+// punctuation and at "then" ("and then", "after that"); a part's leading
+// "now" or "and" is dropped. One part when there are no such cuts.
+std::vector<Words> step_parts(std::string_view text) {
+  std::vector<Words> parts;
+  for (const Segment& s : segments(text)) {
+    Words current;
+    auto flush = [&] {
+      while (!current.empty() && is_one_of(current.back(), {"and", "then"})) current.pop_back();
+      if (current.size() > 1 && current[0] == "after" && current[1] == "that") current.erase(current.begin(), current.begin() + 2);
+      while (!current.empty() && is_one_of(current.front(), {"and", "then", "now"})) current.erase(current.begin());
+      if (!current.empty()) parts.push_back(current);
+      current.clear();
+    };
+    for (std::size_t i = 0; i < s.words.size(); ++i) {
+      const std::string& w = s.words[i];
+      const bool after_that = w == "after" && i + 1 < s.words.size() && s.words[i + 1] == "that";
+      if (w == "then" || after_that) flush();
+      current.push_back(w);
+    }
+    flush();
+  }
+  return parts;
+}
+
+// "counter next", "the folding table": a place of the world said with no
+// verb and nothing said of it ("the table's clear", "the bag still has
+// stuff in it" say something).
+bool names_a_place_alone(const Grounder& grounder, const World& world, const Words& part) {
+  ReferenceContext context{world, grounder.lexicon(), std::nullopt};
+  bool place = false;
+  for (const std::string& w : part) {
+    if (is_copula(w) || is_one_of(w, {"has", "have", "still", "more", "there", "it", "that", "this"})) return false;
+    if (is_determiner(w)) continue;
+    if (std::holds_alternative<CandidateSet>(candidates_for(NounPhrase{"", {w}}, Role::kPlace, context))) place = true;
+  }
+  return place;
+}
+
+// The verb a part begins with, as a subtask's reading took it.
+bool starts_with_verb(const Words& part, const std::string& verb) {
+  Words v = split_words(verb);
+  return part.size() >= v.size() && std::equal(v.begin(), v.end(), part.begin());
+}
+
+// "clear the counter, then the table", "that's it for the desk, now sort
+// the bookshelf", "counter next, then we're done": more than one step in
+// one reply, each read whole at the question. nullopt when the reply is
+// one step, or a part does not read.
+std::optional<std::pair<Reply, std::vector<std::string>>> several_steps(const Grounder& grounder, const World& world,
+                                                                      const ReplyContext& context,
+                                                                      std::string_view text) {
+  if (context.asked != Asked::kTaskStep && context.asked != Asked::kSubtaskEnd) return std::nullopt;
+  std::vector<Words> parts = step_parts(text);
+  if (parts.size() < 2 || parts.size() > 4) return std::nullopt;
+  std::optional<Reply> first;
+  std::vector<std::string> rest;
+  std::string verb;  // the last verb said, for a part without one
+  bool names_a_part = false;  // "that's it, we're done" is one ending
+  ReplyContext at = context;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    Words part = without_interjections(parts[i]);
+    if (part.empty()) return std::nullopt;
+    Reply reply = read_reply(grounder, world, at, quoted_words(part));
+    if (!usable(reply) && !verb.empty() && !starts_with_verb(part, verb)) {
+      Words with = split_words(verb);
+      with.insert(with.end(), part.begin(), part.end());
+      Reply again = read_reply(grounder, world, at, quoted_words(with));
+      if (usable(again)) {
+        reply = again;
+        part = with;
+      }
+    }
+    // "that's it for the desk", "done with the table": an ending about
+    // the part under way, said with its place.
+    if (!usable(reply)) {
+      auto about = std::find_if(part.begin() + 1, part.end(), [](const std::string& w) { return is_one_of(w, {"for", "with"}); });
+      if (about != part.end() && about != part.begin()) {
+        Reply ending = read_reply(grounder, world, at, quoted_words(Words(part.begin(), about)));
+        if (std::holds_alternative<Finished>(ending)) reply = ending;
+      }
+    }
+    const bool step = std::holds_alternative<SubtaskNamed>(reply) || std::holds_alternative<LoopNamed>(reply) ||
+                      std::holds_alternative<Finished>(reply) || std::holds_alternative<Proceed>(reply);
+    // "counter next, then we're done" with no verb known for "counter
+    // next": acting on the ending alone would drop a part of the task, so
+    // the part not understood is asked back.
+    if (!step && !usable(reply) && names_a_place_alone(grounder, world, part))
+      for (std::size_t j = 0; j < parts.size(); ++j) {
+        if (j == i) continue;
+        Reply other = read_reply(grounder, world, at, quoted_words(without_interjections(parts[j])));
+        if (std::holds_alternative<Finished>(other)) return std::make_pair(reply, std::vector<std::string>{});
+      }
+    if (!step) return std::nullopt;
+    if (const auto* named = std::get_if<SubtaskNamed>(&reply)) verb = named->verb;
+    names_a_part = names_a_part || std::holds_alternative<SubtaskNamed>(reply) || std::holds_alternative<LoopNamed>(reply);
+    if (i == 0) first = reply;
+    else rest.push_back(quoted_words(part));
+    // What follows the first part is read at the question about the task's
+    // next step.
+    at.asked = Asked::kTaskStep;
+  }
+  if (!names_a_part) return std::nullopt;
+  return std::make_pair(*first, rest);
+}
+
+}  // namespace apprentice::language::acts
