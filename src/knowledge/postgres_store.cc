@@ -115,7 +115,6 @@ class PostgresStore final : public store_sql::SqlEngine {
   Status take_session_lock() const;
   // After a failure: whether the connection was lost and has been made again.
   bool reconnected() const;
-  // One write, retried on a connection made again.
   // One write, retried on a connection made again; `shared` is written
   // with store_sql.h's `?` placeholders.
   template <typename Parameters>

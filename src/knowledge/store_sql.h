@@ -3,8 +3,9 @@
 // placeholders: the PostgreSQL engine numbers them ($1, $2, ...) with
 // numbered_placeholders. Only what the engines' SQL dialects cannot share
 // stays in the engine: an upsert that gives a replaced entry a new id (and
-// PostgreSQL's NOTIFY), the id column's type, and the migrations before
-// version 4, which SQLite cannot do with ALTER TABLE.
+// PostgreSQL's NOTIFY), the id column's type, and the migration from
+// version 1, which SQLite cannot do with ALTER TABLE. SqlEngine below does
+// what both do the same way on this SQL.
 //
 // Every statement here reads the same in both dialects: standard SQL, text
 // parameters, CAST(? AS TEXT) where PostgreSQL must know a parameter's type.
