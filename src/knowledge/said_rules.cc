@@ -37,6 +37,7 @@ bool in_name(const KindProfile& thing, const std::string& word) {
 
 ClauseEvidence clause_evidence(const ClassRule& rule, const KindProfile& thing, const ConceptSource& concepts) {
   ClauseEvidence e;
+  e.said_a_class = !rule.class_id.empty() || !rule.class_name.empty() || !rule.modifiers.empty();
   if (!rule.class_id.empty()) {
     e.wordnet = std::any_of(thing.classes.begin(), thing.classes.end(), [&](const ConceptClass& c) { return c.id == rule.class_id; });
   } else if (!rule.class_name.empty()) {
@@ -75,6 +76,11 @@ ClauseEvidence clause_evidence(const ClassRule& rule, const KindProfile& thing, 
 }
 
 bool ClauseEvidence::sure() const { return wordnet || word_in_name; }
+
+bool ClauseEvidence::fits() const {
+  if (!said_a_class || sure() || wordnet_parent || modifiers_in_name) return true;
+  return has_vectors && std::max(word_cosine, class_cosine) >= kFitCosine;
+}
 
 double SaidRuleWeights::score(const ClassRule& rule, const ClauseEvidence& e) const {
   double s = 0;
@@ -124,6 +130,7 @@ std::vector<DestinationProposal> said_rule_proposals(std::span<const ClassRule> 
   std::vector<DestinationProposal> out;
   for (std::size_t i = 0; i < mine.size(); ++i) {
     const ClassRule& rule = *mine[i];
+    if (source == RuleSource::kPerson && !evidence[i].fits()) continue;
     const double share = scores[i] / total;
     auto same = std::find_if(out.begin(), out.end(), [&](const DestinationProposal& p) { return p.destination == rule.destination; });
     if (same != out.end()) {

@@ -254,6 +254,67 @@ TEST(TidyBotRecorded, TheDevelopmentHalfScoresAsItsReadmeSays) {
   EXPECT_NEAR(mean["commonsense"], 45.4, 0.05);
 }
 
+// A person's class rule goes only to the things in its class. A nursery,
+// written here after a teach dialogue where "dummy goes in the top drawer"
+// was offered for the rattle, the teddy bear, the blanket and the board
+// book ("Does the rattle ... go as you said: it goes in the top drawer?"):
+// nothing says any of them is a dummy.
+TEST(TidyBotPersonsRule, AClassRuleIsNotOfferedForThingsOutsideItsClass) {
+  const std::string nursery = R"(- annotator_notes: Dummies go in the top drawer.
+  benchmark_index: 3
+  receptacles:
+  - top drawer
+  - bottom drawer
+  - toy basket
+  - shelf
+  room: nursery
+  seen_objects:
+  - pacifier
+  - rattle
+  seen_placements:
+  - - pacifier
+    - top drawer
+  - - rattle
+    - toy basket
+  tags:
+  - category
+  unseen_objects:
+  - teddy bear
+  - blanket
+  - board book
+  unseen_placements:
+  - - teddy bear
+    - toy basket
+  - - blanket
+    - bottom drawer
+  - - board book
+    - shelf
+)";
+  auto scenarios = parse_tidybot_scenarios(nursery, "nursery.yml");
+  ASSERT_TRUE(scenarios) << scenarios.error().describe();
+  BenchmarkOptions options;
+  options.prompts_dir = apprentice::testing::source_path("data/prompts");
+  options.domain = apprentice::testing::source_path("data/domains/kitchen.pddl");
+  options.keep_transcripts = true;
+  for (const char* name : {"b-alone", "b-teacher"}) options.settings.push_back(*parse_setting(name));
+  auto results = run_tidybot(*scenarios, options);
+  ASSERT_TRUE(results) << results.error().describe();
+  ASSERT_EQ(results->results.size(), 2u);
+  const std::string& taught = results->results[1].scenarios[0].transcript;
+  ASSERT_THAT(taught, HasSubstr("Dummies go in the top drawer.")) << taught;
+  for (const char* thing : {"rattle", "teddy bear", "blanket", "board book"}) {
+    EXPECT_THAT(taught, ::testing::Not(HasSubstr("Does the " + std::string(thing) + " on the cart go as you said")))
+        << taught;
+    for (const SettingResult& r : results->results) {
+      for (const ObjectOutcome& o : r.scenarios[0].objects) {
+        if (o.object == thing) {
+          EXPECT_NE(o.placed, "top drawer") << r.setting.name << ": " << thing;
+        }
+      }
+    }
+  }
+}
+
 TEST(TidyBotSettings, ASettingWithAnLlmNeedsOne) {
   auto scenarios = parse_tidybot_scenarios(testing::kTwoScenarios, "two.yml");
   ASSERT_TRUE(scenarios);
