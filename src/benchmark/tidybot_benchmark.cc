@@ -9,6 +9,7 @@
 #include "benchmark/tidybot_world.h"
 #include "language/generation.h"
 #include "llm/prompts.h"
+#include "util/text.h"
 
 namespace apprentice::benchmark {
 
