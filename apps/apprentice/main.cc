@@ -402,6 +402,7 @@ int run(int argc, char** argv) {
   worlds.add(teach_cmd, teach.scenario);
   teach_cmd->add_option("--knowledge", teach.knowledge, "Knowledge store to load and extend: an SQLite file, or postgresql://USER@HOST:PORT/DB");
   teach_cmd->add_option("--household", teach.household, "The household whose goal preferences and task structures are read and written (default: default); rules are shared")->capture_default_str();
+  teach_cmd->add_option("--robot", teach.robot, "This robot's name, kept with what it learns and told to the other robots sharing the store (default: the host name)");
   teach_cmd->add_option("--condition", teach.condition, "Sources besides you: inst, inst+search4, inst+llm, ...")
       ->capture_default_str();
   teach_cmd->add_option("--generalization", teach.generalization, "Rule generalization: full or paper")
@@ -455,6 +456,9 @@ int run(int argc, char** argv) {
   serve_cmd->add_option("--household", serve_options.household,
                         "The household whose goals and tasks every session reads and writes; rules are shared")
       ->capture_default_str();
+  serve_cmd->add_option("--robot", serve_options.agent.robot,
+                        "This robot's name, kept with what its sessions learn and told to the other robots sharing the "
+                        "store (default: the host name)");
   serve_cmd->add_option("--host", serve_options.host, "Address to listen on (other than loopback: needs --token)")
       ->capture_default_str();
   serve_cmd->add_option("--port", serve_options.port, "Port to listen on (0: any free port)")

@@ -95,8 +95,9 @@ class TaskLearningAgent {
   // Watches `store` (borrowed; it must outlive the agent; null: none) for
   // what other robots learn while this one runs: before each object it
   // takes the store's news (KnowledgeStore::news), goals of its household
-  // and the fleet's rules, and says once per kind "Another robot just
-  // learned where the ketchup goes." (AgentReport::news).
+  // and the fleet's rules, and says once per kind, naming the robot that
+  // learned it, "Robot kitchen-2 just learned where the ketchup goes."
+  // (AgentReport::news).
   void watch(KnowledgeStore* store) { watched_ = store; }
 
  private:
