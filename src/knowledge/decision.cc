@@ -17,12 +17,13 @@ struct SourceBelief {
   double elsewhere = 0;                               // each place it did not name
 };
 
-std::vector<SourceBelief> by_source(std::span<const DestinationProposal> proposals, std::size_t place_count) {
+std::vector<SourceBelief> by_source(std::span<const DestinationProposal> proposals, std::size_t place_count,
+                                    const DecisionPolicy& policy) {
   std::vector<SourceBelief> sources;
   for (const DestinationProposal& p : proposals) {
     auto s = std::find_if(sources.begin(), sources.end(), [&](const SourceBelief& b) { return b.source == p.source; });
     if (s == sources.end()) s = sources.insert(sources.end(), SourceBelief{p.source, {}, 0});
-    double confidence = std::clamp(p.confidence, kFloor, 1.0);
+    double confidence = std::clamp(policy.calibrated(p.source, p.confidence), kFloor, 1.0);
     auto d = std::find_if(s->named.begin(), s->named.end(), [&](const auto& n) { return n.first == p.destination; });
     if (d == s->named.end()) s->named.emplace_back(p.destination, confidence);
     else d->second = std::max(d->second, confidence);
@@ -67,6 +68,17 @@ ProposalSource proposal_source_of(RuleSource source) {
   return ProposalSource::kInducedRule;
 }
 
+double Calibration::operator()(double confidence) const {
+  if (shift == 0 && scale == 1) return confidence;
+  const double p = std::clamp(confidence, kFloor, 1 - kFloor);
+  return 1 / (1 + std::exp(-(shift + scale * std::log(p / (1 - p)))));
+}
+
+double DecisionPolicy::calibrated(ProposalSource source, double confidence) const {
+  auto found = calibration.find(source);
+  return found == calibration.end() ? confidence : found->second(confidence);
+}
+
 double DecisionPolicy::weight(ProposalSource source) const {
   auto found = weights.find(source);
   return found == weights.end() ? 1.0 : found->second;
@@ -81,7 +93,7 @@ std::vector<Belief> combine(std::span<const DestinationProposal> proposals, std:
   }
   if (beliefs.empty()) return beliefs;
   place_count = std::max(place_count, beliefs.size());
-  std::vector<SourceBelief> sources = by_source(proposals, place_count);
+  std::vector<SourceBelief> sources = by_source(proposals, place_count, policy);
   // Log-scores of each named destination, and of any one place nobody named.
   std::vector<double> scores(beliefs.size(), 0.0);
   double unnamed_score = 0;
@@ -117,8 +129,10 @@ Decision decide(std::span<const DestinationProposal> proposals, std::size_t plac
   decision.support = best.support;
   std::vector<DestinationProposal> disputing;
   for (const DestinationProposal& p : proposals)
-    if (std::find(policy.not_disputing.begin(), policy.not_disputing.end(), p.source) == policy.not_disputing.end())
+    if (std::find(policy.not_disputing.begin(), policy.not_disputing.end(), p.source) == policy.not_disputing.end()) {
       disputing.push_back(p);
+      disputing.back().confidence = policy.calibrated(p.source, p.confidence);
+    }
   decision.disputed = disputed(disputing, best.destination, policy.dispute_at);
   const double act_at = decision.disputed ? std::max(policy.act_at, policy.act_disputed_at) : policy.act_at;
   decision.kind = best.probability >= act_at             ? Decision::Kind::kAct

@@ -73,6 +73,16 @@ struct Belief {
   std::vector<DestinationProposal> support;
 };
 
+// A source's confidence mapped to the chance that its proposal is right,
+// in log-odds: logit(p') = shift + scale * logit(p) (Platt's scaling). The
+// identity (shift 0, scale 1) trusts the source's own figure; scale 0 gives
+// every proposal of the source the same chance, sigmoid(shift).
+struct Calibration {
+  double shift = 0;
+  double scale = 1;
+  double operator()(double confidence) const;
+};
+
 struct DecisionPolicy {
   // Acts alone when the best destination's combined probability is at least
   // this.
@@ -95,6 +105,10 @@ struct DecisionPolicy {
   // independent expert, less discounts it. A source not named weighs 1.
   std::map<ProposalSource, double> weights;
   double weight(ProposalSource source) const;
+  // Each source's confidences as chances, before they are combined and
+  // before a dispute is looked for. A source not named keeps its own.
+  std::map<ProposalSource, Calibration> calibration;
+  double calibrated(ProposalSource source, double confidence) const;
 };
 
 // The combined belief over the destinations proposed, most probable first.

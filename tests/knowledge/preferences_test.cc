@@ -207,6 +207,36 @@ TEST(Decision, AgreeingSourcesAreSurerThanEitherAndDisagreeingOnesAsk) {
   EXPECT_LT(decide(agree, 3, policy).confidence, d.confidence);
 }
 
+TEST(Decision, ACalibratedSourceCountsForTheChanceItIsRightNotItsOwnFigure) {
+  // Identity leaves a figure alone; scale 0 gives every figure one chance.
+  EXPECT_DOUBLE_EQ(Calibration{}(0.37), 0.37);
+  EXPECT_NEAR((Calibration{2.0, 0.0})(0.33), 1 / (1 + std::exp(-2.0)), 1e-12);
+  EXPECT_NEAR((Calibration{2.0, 0.0})(0.5), (Calibration{2.0, 0.0})(0.9), 1e-12);
+  // A scale below 1 pulls an overconfident source toward its middle.
+  EXPECT_LT((Calibration{0.0, 0.5})(0.999), 0.99);
+  EXPECT_GT((Calibration{0.0, 0.5})(0.001), 0.01);
+  DecisionPolicy policy;
+  policy.act_at = 0.95;
+  policy.confirm_at = 0.3;
+  // Likeness alone at 0.999 between two places acts; calibrated as a source
+  // right about 94% of the time at that figure, it asks.
+  std::vector<DestinationProposal> sure = {DestinationProposal{on("table"), 0.999, ProposalSource::kSimilarity, {}, {}, ""}};
+  EXPECT_EQ(decide(sure, 2, policy).kind, Decision::Kind::kAct);
+  policy.calibration[ProposalSource::kSimilarity] = Calibration{-0.25, 0.43};
+  Decision calibrated = decide(sure, 2, policy);
+  EXPECT_EQ(calibrated.kind, Decision::Kind::kConfirm);
+  EXPECT_NEAR(calibrated.confidence, policy.calibrated(ProposalSource::kSimilarity, 0.999), 1e-9);
+  // An underconfident source (an analogy offered at 0.33) is believed more,
+  // and the dispute is judged on the calibrated figures.
+  std::vector<DestinationProposal> disputing = {DestinationProposal{on("table"), 0.95, ProposalSource::kLlmPlacement, {}, {}, ""},
+                                                DestinationProposal{in("box"), 0.33, ProposalSource::kAnalogy, {}, {}, ""}};
+  EXPECT_FALSE(decide(disputing, 3, policy).disputed);
+  policy.calibration[ProposalSource::kAnalogy] = Calibration{2.5, 0.0};
+  EXPECT_TRUE(decide(disputing, 3, policy).disputed);
+  // The proposals shown keep the source's own figure.
+  EXPECT_DOUBLE_EQ(calibrated.support.front().confidence, 0.999);
+}
+
 TEST(Decision, ASourceSureOfAnotherPlaceMakesTheAgentAskUnlessTheRestIsVerySure) {
   DecisionPolicy policy;
   policy.act_at = 0.9;
