@@ -168,6 +168,7 @@ CommandResult run_teach(const TeachOptions& options, const std::string& program,
   spec.generalization = options.generalization;
   spec.knowledge = options.knowledge;
   spec.household = options.household;
+  spec.robot = options.robot;
   spec.goal_repair = options.llm.goal_repair;
   spec.offer_ungrounded = options.llm.offer_ungrounded;
   spec.llm = llm_spec(options.llm);

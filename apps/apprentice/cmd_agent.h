@@ -54,6 +54,7 @@ struct TeachOptions {
   std::string scenario;
   std::string knowledge;  // empty: nothing kept
   std::string household = kDefaultHousehold;
+  std::string robot;  // empty: the host name
   std::string condition = "inst+search4";
   std::string generalization = "full";
   bool quiet = false;  // only the questions and the summary; no progress line

@@ -435,6 +435,7 @@ void add_teach_and_run_commands(CLI::App& app, CommandLine& c) {
   c.worlds.add(teach_cmd, teach.scenario);
   teach_cmd->add_option("--knowledge", teach.knowledge, "Knowledge store to load and extend: an SQLite file, or postgresql://USER@HOST:PORT/DB");
   teach_cmd->add_option("--household", teach.household, "The household whose goal preferences and task structures are read and written (default: default); rules are shared")->capture_default_str();
+  teach_cmd->add_option("--robot", teach.robot, "This robot's name, kept with what it learns and told to the other robots sharing the store (default: the host name)");
   teach_cmd->add_option("--condition", teach.condition, "Sources besides you: inst, inst+search4, inst+llm, ...")
       ->capture_default_str();
   teach_cmd->add_option("--generalization", teach.generalization, "Rule generalization: full or paper")
@@ -491,6 +492,9 @@ void add_serve_command(CLI::App& app, CommandLine& c) {
   cmd->add_option("--household", options.household,
                   "The household whose goals and tasks every session reads and writes; rules are shared")
       ->capture_default_str();
+  cmd->add_option("--robot", options.agent.robot,
+                  "This robot's name, kept with what its sessions learn and told to the other robots sharing the "
+                  "store (default: the host name)");
   cmd->add_option("--host", options.host, "Address to listen on (other than loopback: needs --token)")
       ->capture_default_str();
   cmd->add_option("--port", options.port, "Port to listen on (0: any free port)")

@@ -441,6 +441,8 @@ Status serve(const ServeOptions& given, std::ostream& out, const std::function<b
   }
   if (auto s = check_household_name(options.household); !s) return tl::unexpected(s.error());
   options.agent.household = options.household;
+  if (!options.agent.robot.empty())
+    if (auto s = check_robot_name(options.agent.robot); !s) return tl::unexpected(s.error());
   auto catalogue = Catalogue::make(options.data_dir, options.scenarios, options.knowledge);
   if (!catalogue) return tl::unexpected(catalogue.error());
   auto page = load_page(options.data_dir / "web");

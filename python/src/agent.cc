@@ -191,7 +191,8 @@ void bind_agent(py::module_& m) {
       "Keyword options, as the CLI's flags of the same names: use_rules, max_reprompts, goal_repair,\n"
       "offer_ungrounded, llm_model, llm_api_key, llm_timeout_ms, llm_connect_timeout_ms, llm_seed, llm_optional,\n"
       "llm_goal_responses; household (whose goal preferences and task structures the agent reads and writes in\n"
-      "the store; the rules are shared by every household).")
+      "the store; the rules are shared by every household); robot (this robot's name, kept with what it learns and\n"
+      "told to the other robots sharing the store; default: the host name).")
       .def(py::init([](const py::object& scenario, const py::object& knowledge, const std::string& condition,
                        const std::optional<std::string>& llm, const std::string& generalization,
                        const py::kwargs& options) {

@@ -72,11 +72,12 @@ void apply_agent_options(const py::kwargs& options, AgentSpec& spec) {
     else if (name == "llm_optional") spec.llm.optional = flag(value, "llm_optional");
     else if (name == "llm_goal_responses") spec.llm.goal_responses = whole_number(value, "llm_goal_responses", 1, 10);
     else if (name == "household") spec.household = text(value, "household");
+    else if (name == "robot") spec.robot = text(value, "robot");
     else
       raise_error(Error{ErrorCode::kInvalidInput,
                         "unknown option " + name + " (options: use_rules, max_reprompts, goal_repair, offer_ungrounded, "
                         "llm_model, llm_api_key, llm_timeout_ms, llm_connect_timeout_ms, llm_seed, llm_optional, "
-                        "llm_goal_responses, household)"});
+                        "llm_goal_responses, household, robot)"});
   }
 }
 

@@ -194,6 +194,23 @@ def test_households_keep_their_own_goals_and_share_the_rules(tmp_path):
     assert "cannot name a household" in str(raised.value)
 
 
+def test_each_goal_and_rule_is_kept_with_the_robot_that_learned_it(tmp_path):
+    import socket
+    import sqlite3
+    store = tmp_path / "fleet.sqlite"
+    apprentice.Agent(str(TWO_OBJECTS), knowledge=store, robot="kitchen-2").learn(KitchenTeacher())
+    apprentice.Agent(str(TWO_OBJECTS), knowledge=store, household="joneses").learn(KitchenTeacher())
+    with sqlite3.connect(store) as db:
+        goals = db.execute("SELECT household, robot FROM goals").fetchall()
+        rules = {robot for (robot,) in db.execute("SELECT robot FROM rules")}
+    assert sorted(goals) == [("default", "kitchen-2")] * 2 + [("joneses", socket.gethostname().split(".")[0])] * 2
+    assert "kitchen-2" in rules  # a rule already kept keeps the robot that saved it first
+    with pytest.raises(apprentice.Error) as raised:
+        apprentice.Agent(str(TWO_OBJECTS), knowledge=store, robot="robot\n2")
+    assert raised.value.code == "invalid input"
+    assert "cannot name a robot" in str(raised.value)
+
+
 class RefusingTeacher(KitchenTeacher):
     """Teaches the structure and the ketchup, but answers the paper plate's
     goal question only with replies the agent cannot use."""

@@ -11,15 +11,26 @@ namespace apprentice {
 
 namespace {
 
-// "Another robot just learned where the ketchup goes." or "... where the
+// Who learned it: "Robot kitchen-2", a name that says "robot" already as it
+// is ("Robot 2", "robot-7" as "Robot-7"), or "Another robot" for one the
+// store does not name (a goal saved before stores named robots).
+std::string robot_subject(const std::string& robot) {
+  if (robot.empty()) return "Another robot";
+  std::string lower;
+  for (char c : robot.substr(0, 5)) lower += static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
+  if (lower != "robot") return "Robot " + robot;
+  return "R" + robot.substr(1);
+}
+
+// "Robot kitchen-2 just learned where the ketchup goes." or "... where the
 // ketchup and the paper plate go."
-std::string news_sentence(const std::vector<std::string>& kinds) {
+std::string news_sentence(const std::string& robot, const std::vector<std::string>& kinds) {
   std::string things;
   for (std::size_t i = 0; i < kinds.size(); ++i) {
     if (i > 0) things += i + 1 == kinds.size() ? (kinds.size() > 2 ? ", and " : " and ") : ", ";
     things += "the " + language::spoken_category(kinds[i]);
   }
-  return "Another robot just learned where " + things + (kinds.size() == 1 ? " goes." : " go.");
+  return robot_subject(robot) + " just learned where " + things + (kinds.size() == 1 ? " goes." : " go.");
 }
 
 }  // namespace
@@ -32,21 +43,27 @@ void TaskLearningAgent::Session::take_news() {
   // failure: the agent goes on with what it knows and looks again at the
   // next object.
   if (!news || news->empty()) return;
-  std::vector<std::string> kinds;
-  for (GoalKnowledge& goal : news->goals) {
+  // The new kinds, by the robot that learned them, in the order heard.
+  std::vector<std::pair<std::string, std::vector<std::string>>> by_robot;
+  for (std::size_t i = 0; i < news->goals.size(); ++i) {
+    GoalKnowledge& goal = news->goals[i];
     const GoalKnowledge* known = agent_.knowledge_.goals.find(goal.key);
     if (known != nullptr && known->literals == goal.literals) continue;  // known already, or its own
     const std::string kind = goal.key.category;
     agent_.knowledge_.goals.add(std::move(goal));
     if (std::find(announced_.begin(), announced_.end(), kind) != announced_.end()) continue;
-    if (std::find(kinds.begin(), kinds.end(), kind) == kinds.end()) kinds.push_back(kind);
+    announced_.push_back(kind);
+    const std::string robot = i < news->goal_robots.size() ? news->goal_robots[i] : std::string();
+    auto heard = std::find_if(by_robot.begin(), by_robot.end(), [&](const auto& entry) { return entry.first == robot; });
+    if (heard == by_robot.end()) heard = by_robot.insert(by_robot.end(), {robot, {}});
+    heard->second.push_back(kind);
   }
   for (Rule& rule : news->rules) agent_.knowledge_.rules.add(*world().domain, std::move(rule));
-  if (kinds.empty()) return;
-  announced_.insert(announced_.end(), kinds.begin(), kinds.end());
-  const std::string sentence = news_sentence(kinds);
-  report_.news.push_back(sentence);
-  say(sentence);
+  for (const auto& [robot, kinds] : by_robot) {
+    const std::string sentence = news_sentence(robot, kinds);
+    report_.news.push_back(sentence);
+    say(sentence);
+  }
 }
 
 }  // namespace apprentice

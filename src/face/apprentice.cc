@@ -158,7 +158,7 @@ Result<std::unique_ptr<AgentSession>> make_agent_session(const AgentSpec& spec, 
   const Domain& domain = *scenario.world.domain;
   Knowledge knowledge = spec.start_from ? *spec.start_from : Knowledge{};
   if (!spec.knowledge.empty()) {
-    auto opened = KnowledgeStore::open(spec.knowledge, spec.store_access, spec.household);
+    auto opened = KnowledgeStore::open(spec.knowledge, spec.store_access, spec.household, spec.robot);
     if (!opened) return tl::unexpected(opened.error());
     parts->store.emplace(std::move(*opened));
     if (spec.start_from) {

@@ -100,6 +100,10 @@ struct AgentSpec {
   // reads and writes (--household); the store's policy rules are shared by
   // all its households. 1 to 64 letters, digits, '-', '_' or '.'.
   std::string household = kDefaultHousehold;
+  // This robot's name (--robot), saved with each goal and rule it learns
+  // and said to the other robots ("Robot kitchen-2 just learned where the
+  // ketchup goes."); empty: the host name (default_robot_name).
+  std::string robot;
   // For a kind the household never taught, offer what the store's other
   // households chose (knowledge/fleet_prior.h); false leaves them out.
   bool fleet_prior = true;

@@ -16,6 +16,7 @@
 #include "knowledge/store_location.h"
 #include "knowledge/store_codec.h"
 #include "knowledge/store_creation.h"
+#include "knowledge/store_sql.h"
 
 namespace apprentice {
 
@@ -79,11 +80,12 @@ Error statement_error(const std::string& where, const PGresult* r, PGconn* conne
   return Error{ErrorCode::kIo, where + ": " + why};
 }
 
-class PostgresStore final : public StoreEngine {
+class PostgresStore final : public store_sql::SqlEngine {
  public:
-  PostgresStore(std::string url, std::string where, std::string secret, StoreAccess access, std::string household)
-      : url_(std::move(url)), where_(std::move(where)), secret_(std::move(secret)), access_(access),
-        household_(std::move(household)) {}
+  PostgresStore(std::string url, std::string where, std::string secret, StoreAccess access, std::string household,
+                std::string robot)
+      : SqlEngine(std::move(household), std::move(robot)), url_(std::move(url)), where_(std::move(where)),
+        secret_(std::move(secret)), access_(access) {}
 
   Status connect();
   Status check_or_create_schema();
@@ -92,29 +94,34 @@ class PostgresStore final : public StoreEngine {
   Status save_goal(const GoalKnowledge& goal) override;
   Status save_rule(const Domain& domain, const Rule& rule) override;
   Status save_task(const TaskKnowledge& task) override;
-  Status remove_goal(const GoalKey& key) override;
-  Status remove_rule(const Domain& domain, const Rule& rule) override;
-  Status remove_task(const std::string& name) override;
   Result<Knowledge> load(const Domain& domain) const override;
   Result<std::vector<std::string>> households() const override;
   Status save_class_rule(const ClassRule& rule) override;
-  Status remove_class_rule(const ClassRule& rule) override;
   Status forget_class_rule(const ClassRule& rule) override;
   Result<StoreNews> news(const Domain& domain) override;
 
  private:
-  // The goal under `key` of this household, if it is still stored.
-  Result<std::optional<GoalKnowledge>> stored_goal(const Domain& domain, const GoalKey& key) const;
+  // The goal under `key` of this household, if it is still stored, with
+  // the robot that saved it.
+  Result<std::optional<std::pair<GoalKnowledge, std::string>>> stored_goal(const Domain& domain, const GoalKey& key) const;
   Result<std::optional<Rule>> stored_rule(const Domain& domain, const std::string& signature) const;
   PgResult run(const std::string& sql, const Texts& values = {}) const;
+  // Runs `shared`, SQL of store_sql.h, its `?` numbered.
+  PgResult run_shared(std::string_view shared, const Texts& values = {}) const {
+    return run(store_sql::numbered_placeholders(shared), values);
+  }
   // Runs `sql`, which must succeed, or gives its error.
   Status must(const std::string& sql, const Texts& values = {}) const;
   Status take_session_lock() const;
   // After a failure: whether the connection was lost and has been made again.
   bool reconnected() const;
-  // One write, retried on a connection made again.
+  // One write, retried on a connection made again; `shared` is written
+  // with store_sql.h's `?` placeholders.
   template <typename Parameters>
-  Status write(const char* sql, Parameters parameters);
+  Status write(std::string_view shared, Parameters parameters);
+  Status execute(const char* sql, const Texts& values) override {
+    return write(sql, [&] { return values; });
+  }
   Result<Knowledge> load_once(const Domain& domain) const;
   // meta's schema version, or the store's error.
   Result<std::string> read_version() const;
@@ -133,7 +140,6 @@ class PostgresStore final : public StoreEngine {
   std::string where_;
   std::string secret_;
   StoreAccess access_;
-  std::string household_;
   // The store's schema version: kKnowledgeSchemaVersion, or an older one a
   // reader reads as it is.
   int version_ = kKnowledgeSchemaVersion;
@@ -211,73 +217,36 @@ bool PostgresStore::reconnected() const {
   return false;
 }
 
-// The columns load() reads: a store without them is damaged. A store of
-// version 1, read as it is (opened read-only), is the default household's.
-constexpr const char* kTasksQuery = "SELECT name, structure FROM tasks WHERE household = $1 ORDER BY name";
-constexpr const char* kGoalsQuery =
-    "SELECT task, subtask, category, place, literals, object, source FROM goals WHERE household = $1 ORDER BY id";
-constexpr const char* kTasksQueryV1 = "SELECT name, structure FROM tasks WHERE $1::text = 'default' ORDER BY name";
-constexpr const char* kGoalsQueryV1 =
-    "SELECT task, subtask, category, place, literals, object, source FROM goals WHERE $1::text = 'default' ORDER BY id";
-constexpr const char* kRulesQuery = "SELECT body, object, source FROM rules ORDER BY id";
-// The other households' goals: the fleet's prior (version 2 on).
-constexpr const char* kFleetGoalsQuery =
-    "SELECT household, task, subtask, category, place, literals, object, source FROM goals WHERE household <> $1 "
-    "ORDER BY id";
-constexpr const char* kClassRulesQuery = "SELECT body FROM class_rules WHERE household = $1 ORDER BY id";
-constexpr const char* kForgottenRulesQuery = "SELECT body FROM forgotten_rules WHERE household = $1 ORDER BY id";
-constexpr const char* kHouseholdsQuery =
-    "SELECT household FROM goals UNION SELECT household FROM tasks UNION SELECT household FROM class_rules "
-    "UNION SELECT household FROM forgotten_rules ORDER BY 1";
-constexpr const char* kHouseholdsQueryV2 = "SELECT household FROM goals UNION SELECT household FROM tasks ORDER BY 1";
-constexpr const char* kHouseholdsQueryV1 =
-    "SELECT 'default' WHERE EXISTS(SELECT 1 FROM goals) OR EXISTS(SELECT 1 FROM tasks)";
+namespace sql = store_sql;
 
-// The SQL below names the default household as a literal.
-static_assert(std::string_view(kDefaultHousehold) == "default");
-
-constexpr const char* kSchema =
-    "CREATE TABLE meta(key TEXT PRIMARY KEY, value TEXT NOT NULL);"
-    "CREATE TABLE goals(id BIGSERIAL PRIMARY KEY, household TEXT NOT NULL, task TEXT NOT NULL, subtask TEXT NOT NULL, "
-    "category TEXT NOT NULL, place TEXT NOT NULL, literals TEXT NOT NULL, object TEXT NOT NULL, source TEXT NOT NULL, "
-    "UNIQUE(household, task, subtask, category, place));"
-    "CREATE TABLE tasks(household TEXT NOT NULL, name TEXT NOT NULL, structure TEXT NOT NULL, PRIMARY KEY(household, name));"
-    "CREATE TABLE rules(id BIGSERIAL PRIMARY KEY, signature TEXT NOT NULL UNIQUE, body TEXT NOT NULL, "
-    "object TEXT NOT NULL, source TEXT NOT NULL);"
-    "CREATE TABLE class_rules(id BIGSERIAL PRIMARY KEY, household TEXT NOT NULL, key TEXT NOT NULL, body TEXT NOT NULL, "
-    "source TEXT NOT NULL, UNIQUE(household, key));"
-    "CREATE TABLE forgotten_rules(id BIGSERIAL PRIMARY KEY, household TEXT NOT NULL, key TEXT NOT NULL, "
-    "body TEXT NOT NULL, UNIQUE(household, key));";
-
-// The steps from each older schema version to the next, in order: entry i
-// goes from version i + kOldestMigratedSchemaVersion. Version 1 to 2: goals
-// and tasks gain a household, part of their keys; what there was is the
-// default household's (the constraints version 1 made have PostgreSQL's
-// default names). Version 2 to 3: each household's class rules with their
-// evidence, and the rules it forgot.
-constexpr const char* kMigrations[] = {
-    "ALTER TABLE goals ADD COLUMN household TEXT NOT NULL DEFAULT 'default';"
-    "ALTER TABLE goals ALTER COLUMN household DROP DEFAULT;"
-    "ALTER TABLE goals DROP CONSTRAINT goals_task_subtask_category_place_key;"
-    "ALTER TABLE goals ADD UNIQUE(household, task, subtask, category, place);"
-    "ALTER TABLE tasks ADD COLUMN household TEXT NOT NULL DEFAULT 'default';"
-    "ALTER TABLE tasks ALTER COLUMN household DROP DEFAULT;"
-    "ALTER TABLE tasks DROP CONSTRAINT tasks_pkey;"
-    "ALTER TABLE tasks ADD PRIMARY KEY(household, name);",
-    "CREATE TABLE class_rules(id BIGSERIAL PRIMARY KEY, household TEXT NOT NULL, key TEXT NOT NULL, body TEXT NOT NULL, "
-    "source TEXT NOT NULL, UNIQUE(household, key));"
-    "CREATE TABLE forgotten_rules(id BIGSERIAL PRIMARY KEY, household TEXT NOT NULL, key TEXT NOT NULL, "
-    "body TEXT NOT NULL, UNIQUE(household, key));",
-};
-static_assert(std::size(kMigrations) == kKnowledgeSchemaVersion - kOldestMigratedSchemaVersion);
-
-// What version meta names: kOldestMigratedSchemaVersion ..
-// kKnowledgeSchemaVersion, or 0 for anything else.
-int version_number(const std::string& text) {
-  for (int v = kOldestMigratedSchemaVersion; v <= kKnowledgeSchemaVersion; ++v)
-    if (text == std::to_string(v)) return v;
-  return 0;
+// The steps from each older schema version to the next, in order, as
+// PostgreSQL takes them (several statements each): entry i goes from
+// version i + kOldestMigratedSchemaVersion. Version 1 to 2: goals and tasks
+// gain a household, part of their keys; what there was is the default
+// household's (the constraints version 1 made have PostgreSQL's default
+// names). Version 2 to 3: each household's class rules with their
+// evidence, and the rules it forgot. Version 3 to 4: goals and rules name
+// the robot that saved them.
+std::string migration(int from_version) {
+  std::string steps;
+  auto join = [&](const auto& statements) {
+    for (const auto& statement : statements) steps += std::string(statement) + ";";
+  };
+  switch (from_version) {
+    case 1:
+      return "ALTER TABLE goals ADD COLUMN household TEXT NOT NULL DEFAULT 'default';"
+             "ALTER TABLE goals ALTER COLUMN household DROP DEFAULT;"
+             "ALTER TABLE goals DROP CONSTRAINT goals_task_subtask_category_place_key;"
+             "ALTER TABLE goals ADD UNIQUE(household, task, subtask, category, place);"
+             "ALTER TABLE tasks ADD COLUMN household TEXT NOT NULL DEFAULT 'default';"
+             "ALTER TABLE tasks ALTER COLUMN household DROP DEFAULT;"
+             "ALTER TABLE tasks DROP CONSTRAINT tasks_pkey;"
+             "ALTER TABLE tasks ADD PRIMARY KEY(household, name);";
+    case 2: join(sql::class_rules_tables(sql::kPostgresId)); return steps;
+    default: join(sql::kMigration3To4); return steps;
+  }
 }
+static_assert(kKnowledgeSchemaVersion == 4, "a new schema version needs its step in migration()");
 
 Status PostgresStore::check_or_create_schema() {
   auto tables = [&]() -> Result<std::pair<bool, long>> {
@@ -302,8 +271,9 @@ Status PostgresStore::check_or_create_schema() {
       if (!again) return tl::unexpected(again.error());
       if (again->first) return {};
       if (again->second > 0) return foreign();
-      if (auto s = must(kSchema); !s) return s;
-      return must("INSERT INTO meta(key, value) VALUES ('format', $1), ('schema_version', $2)",
+      for (const std::string& table : sql::schema(sql::kPostgresId))
+        if (auto s = must(table); !s) return s;
+      return must(sql::numbered_placeholders(sql::kInsertMeta),
                   {kKnowledgeFormatName, std::to_string(kKnowledgeSchemaVersion)});
     });
     if (!created) return created;
@@ -312,7 +282,7 @@ Status PostgresStore::check_or_create_schema() {
 }
 
 Result<std::string> PostgresStore::read_version() const {
-  PgResult meta = run("SELECT key, value FROM meta");
+  PgResult meta = run(sql::kReadMeta);
   if (!succeeded(meta.get())) return tl::unexpected(statement_error(where_, meta.get(), connection_.get(), secret_));
   std::string format, version;
   for (int row = 0; row < PQntuples(meta.get()); ++row) {
@@ -322,11 +292,8 @@ Result<std::string> PostgresStore::read_version() const {
   }
   if (format != kKnowledgeFormatName)
     return make_error(ErrorCode::kFailedPrecondition, where_ + " is not an apprentice knowledge store");
-  if (version_number(version) == 0)
-    return make_error(ErrorCode::kFailedPrecondition,
-                      where_ + " was written with knowledge schema version " + version + "; this apprentice reads version " +
-                          std::to_string(kKnowledgeSchemaVersion) +
-                          ". Relearn into a new store, or use the apprentice version that wrote it.");
+  if (sql::version_number(version) == 0)
+    return make_error(ErrorCode::kFailedPrecondition, sql::other_version(where_, version));
   return version;
 }
 
@@ -347,28 +314,28 @@ Status PostgresStore::migrate() {
   return under_creation_lock([&]() -> Status {
     auto again = read_version();
     if (!again) return tl::unexpected(again.error());
-    for (int v = version_number(*again); v < kKnowledgeSchemaVersion; ++v)
-      if (auto s = must(kMigrations[v - kOldestMigratedSchemaVersion]); !s) return s;
-    return must("UPDATE meta SET value = $1 WHERE key = 'schema_version'", {std::to_string(kKnowledgeSchemaVersion)});
+    for (int v = sql::version_number(*again); v < kKnowledgeSchemaVersion; ++v)
+      if (auto s = must(migration(v)); !s) return s;
+    return must(sql::numbered_placeholders(sql::kSetVersion), {std::to_string(kKnowledgeSchemaVersion)});
   });
 }
 
 Status PostgresStore::check_schema() {
   auto version = read_version();
   if (!version) return tl::unexpected(version.error());
-  version_ = version_number(*version);
+  version_ = sql::version_number(*version);
   if (version_ < kKnowledgeSchemaVersion && access_ != StoreAccess::kReadOnly) {
     if (auto s = migrate(); !s) return s;
     version_ = kKnowledgeSchemaVersion;
   }
   const bool v1 = version_ == 1;
-  std::vector<const char*> queries{v1 ? kTasksQueryV1 : kTasksQuery, v1 ? kGoalsQueryV1 : kGoalsQuery, kRulesQuery};
+  std::vector<const char*> queries{v1 ? sql::kTasksV1 : sql::kTasks, v1 ? sql::kGoalsV1 : sql::kGoals, sql::kRules};
   if (version_ >= 3) {
-    queries.push_back(kClassRulesQuery);
-    queries.push_back(kForgottenRulesQuery);
+    queries.push_back(sql::kClassRules);
+    queries.push_back(sql::kForgottenRules);
   }
   for (const char* query : queries) {
-    PgResult r = run(std::string(query) + " LIMIT 0", query == kRulesQuery ? Texts{} : Texts{household_});
+    PgResult r = run_shared(std::string(query) + " LIMIT 0", query == sql::kRules ? Texts{} : Texts{household_});
     if (succeeded(r.get())) continue;
     Error e = statement_error(where_, r.get(), connection_.get(), secret_);
     return tl::unexpected(e);
@@ -377,46 +344,51 @@ Status PostgresStore::check_schema() {
 }
 
 Status PostgresStore::start_over() {
-  return must("BEGIN; DELETE FROM goals; DELETE FROM tasks; DELETE FROM rules; DELETE FROM class_rules; "
-              "DELETE FROM forgotten_rules; COMMIT");
+  std::string all = "BEGIN;";
+  for (const char* statement : sql::kStartOver) all += std::string(statement) + ";";
+  return must(all + "COMMIT");
 }
 
 template <typename Parameters>
-Status PostgresStore::write(const char* sql, Parameters parameters) {
+Status PostgresStore::write(std::string_view shared, Parameters parameters) {
+  const std::string statement = sql::numbered_placeholders(shared);
   const Texts values = parameters();
   for (int attempt = 0;; ++attempt) {
-    PgResult r = run(sql, values);
+    PgResult r = run(statement, values);
     if (succeeded(r.get())) return {};
     Error e = statement_error(where_, r.get(), connection_.get(), secret_);
     if (attempt == kMostReconnects || !reconnected()) return tl::unexpected(e);
   }
 }
 
+// What the engines' dialects cannot share (store_sql.h): PostgreSQL's
+// upserts, which give a replaced goal a new id, as SQLite's INSERT OR
+// REPLACE does, and notify in the save's own transaction (news()).
 Status PostgresStore::save_goal(const GoalKnowledge& goal) {
-  // A goal saved again under its key is replaced and moves to the end, as
-  // SQLite's INSERT OR REPLACE does.
+  // A goal saved again under its key is replaced and moves to the end.
   return write(
-      "WITH saved AS (INSERT INTO goals(household, task, subtask, category, place, literals, object, source) "
-      "VALUES ($1, $2, $3, $4, $5, $6, $7, $8) "
+      "WITH saved AS (INSERT INTO goals(household, task, subtask, category, place, literals, object, source, robot) "
+      "VALUES ($1, $2, $3, $4, $5, $6, $7, $8, $9) "
       "ON CONFLICT (household, task, subtask, category, place) DO UPDATE SET literals = EXCLUDED.literals, object = "
-      "EXCLUDED.object, source = EXCLUDED.source, id = nextval(pg_get_serial_sequence('goals', 'id')) RETURNING 1) "
+      "EXCLUDED.object, source = EXCLUDED.source, robot = EXCLUDED.robot, "
+      "id = nextval(pg_get_serial_sequence('goals', 'id')) RETURNING 1) "
       "SELECT pg_notify('apprentice_knowledge', json_build_array(current_schema(), 'goal', $1::text, $2::text, $3::text, "
       "$4::text, $5::text)::text) FROM saved",
       [&] {
         return Texts{household_, goal.key.task, goal.key.subtask, goal.key.category, goal.key.place,
-                     store_codec::encode_goal_literals(goal), goal.provenance.object, goal.provenance.source};
+                     store_codec::encode_goal_literals(goal), goal.provenance.object, goal.provenance.source, robot_};
       });
 }
 
 Status PostgresStore::save_rule(const Domain& domain, const Rule& rule) {
   // Notifies only when the rule is new.
-  return write("WITH saved AS (INSERT INTO rules(signature, body, object, source) VALUES ($1, $2, $3, $4) "
+  return write("WITH saved AS (INSERT INTO rules(signature, body, object, source, robot) VALUES ($1, $2, $3, $4, $5) "
                "ON CONFLICT (signature) DO NOTHING RETURNING 1) "
                "SELECT pg_notify('apprentice_knowledge', json_build_array(current_schema(), 'rule', $1::text)::text) "
                "FROM saved",
                [&] {
                  return Texts{rule_signature(domain, rule), store_codec::encode_rule(domain, rule), rule.provenance.object,
-                              rule.provenance.source};
+                              rule.provenance.source, robot_};
                });
 }
 
@@ -426,33 +398,19 @@ Status PostgresStore::save_task(const TaskKnowledge& task) {
                [&] { return Texts{household_, task.name, store_codec::encode_subtasks(task)}; });
 }
 
-Status PostgresStore::remove_goal(const GoalKey& key) {
-  return write("DELETE FROM goals WHERE household = $1 AND task = $2 AND subtask = $3 AND category = $4 AND place = $5",
-               [&] { return Texts{household_, key.task, key.subtask, key.category, key.place}; });
-}
-
-Status PostgresStore::remove_rule(const Domain& domain, const Rule& rule) {
-  return write("DELETE FROM rules WHERE signature = $1", [&] { return Texts{rule_signature(domain, rule)}; });
-}
-
-Status PostgresStore::remove_task(const std::string& name) {
-  return write("DELETE FROM tasks WHERE household = $1 AND name = $2", [&] { return Texts{household_, name}; });
-}
-
-Result<std::optional<GoalKnowledge>> PostgresStore::stored_goal(const Domain& domain, const GoalKey& key) const {
-  PgResult r = run("SELECT literals, object, source FROM goals WHERE household = $1 AND task = $2 AND subtask = $3 AND "
-                   "category = $4 AND place = $5",
-                   {household_, key.task, key.subtask, key.category, key.place});
+Result<std::optional<std::pair<GoalKnowledge, std::string>>> PostgresStore::stored_goal(const Domain& domain,
+                                                                                        const GoalKey& key) const {
+  PgResult r = run_shared(sql::goal_by_key(version_), {household_, key.task, key.subtask, key.category, key.place});
   if (!succeeded(r.get())) return tl::unexpected(statement_error(where_, r.get(), connection_.get(), secret_));
   if (PQntuples(r.get()) == 0) return std::nullopt;
   auto goal = store_codec::decode_goal(domain, key, PQgetvalue(r.get(), 0, 0),
                                        Provenance{PQgetvalue(r.get(), 0, 1), PQgetvalue(r.get(), 0, 2)});
   if (!goal) return tl::unexpected(prefix_error(goal.error(), where_));
-  return std::optional<GoalKnowledge>(std::move(*goal));
+  return std::optional<std::pair<GoalKnowledge, std::string>>(std::in_place, std::move(*goal), PQgetvalue(r.get(), 0, 3));
 }
 
 Result<std::optional<Rule>> PostgresStore::stored_rule(const Domain& domain, const std::string& signature) const {
-  PgResult r = run("SELECT body, object, source FROM rules WHERE signature = $1", {signature});
+  PgResult r = run_shared(sql::rule_by_signature(version_), {signature});
   if (!succeeded(r.get())) return tl::unexpected(statement_error(where_, r.get(), connection_.get(), secret_));
   if (PQntuples(r.get()) == 0) return std::nullopt;
   auto rule = store_codec::decode_rule(domain, PQgetvalue(r.get(), 0, 0),
@@ -488,7 +446,9 @@ Result<StoreNews> PostgresStore::news(const Domain& domain) {
   for (const GoalKey& key : goals) {
     auto goal = stored_goal(domain, key);
     if (!goal) return tl::unexpected(goal.error());
-    if (*goal) news.goals.push_back(std::move(**goal));
+    if (!*goal) continue;
+    news.goals.push_back(std::move((*goal)->first));
+    news.goal_robots.push_back(std::move((*goal)->second));
   }
   for (const std::string& signature : rules) {
     auto rule = stored_rule(domain, signature);
@@ -500,7 +460,7 @@ Result<StoreNews> PostgresStore::news(const Domain& domain) {
 
 Result<std::vector<std::string>> PostgresStore::households() const {
   for (int attempt = 0;; ++attempt) {
-    PgResult r = run(version_ == 1 ? kHouseholdsQueryV1 : version_ == 2 ? kHouseholdsQueryV2 : kHouseholdsQuery);
+    PgResult r = run(sql::households_query(version_));
     if (succeeded(r.get())) {
       std::vector<std::string> out;
       for (int row = 0; row < PQntuples(r.get()); ++row) out.emplace_back(PQgetvalue(r.get(), row, 0));
@@ -523,11 +483,6 @@ Status PostgresStore::save_class_rule(const ClassRule& rule) {
         return Texts{household_, class_rule_key(rule), store_codec::encode_class_rule(rule),
                      std::string(rule_source_name(rule.source))};
       });
-}
-
-Status PostgresStore::remove_class_rule(const ClassRule& rule) {
-  return write("DELETE FROM class_rules WHERE household = $1 AND key = $2",
-               [&] { return Texts{household_, class_rule_key(rule)}; });
 }
 
 Status PostgresStore::forget_class_rule(const ClassRule& rule) {
@@ -563,23 +518,23 @@ Result<Knowledge> PostgresStore::load_once(const Domain& domain) const {
   // A version 1 store holds the default household's goals and tasks alone.
   const bool v1 = version_ == 1;
   const Texts household{household_};
-  PgResult tasks = run(v1 ? kTasksQueryV1 : kTasksQuery, household);
+  PgResult tasks = run_shared(v1 ? sql::kTasksV1 : sql::kTasks, household);
   if (!succeeded(tasks.get())) return failed(tasks);
-  PgResult goals = run(v1 ? kGoalsQueryV1 : kGoalsQuery, household);
+  PgResult goals = run_shared(v1 ? sql::kGoalsV1 : sql::kGoals, household);
   if (!succeeded(goals.get())) return failed(goals);
-  PgResult rules = run(kRulesQuery);
+  PgResult rules = run(sql::kRules);
   if (!succeeded(rules.get())) return failed(rules);
   PgResult fleet;
   if (!v1) {
-    fleet = run(kFleetGoalsQuery, household);
+    fleet = run_shared(sql::kFleetGoals, household);
     if (!succeeded(fleet.get())) return failed(fleet);
   }
   // Stores before version 3 (read as they are) have no class rules.
   PgResult class_rules, forgotten_rules;
   if (version_ >= 3) {
-    class_rules = run(kClassRulesQuery, household);
+    class_rules = run_shared(sql::kClassRules, household);
     if (!succeeded(class_rules.get())) return failed(class_rules);
-    forgotten_rules = run(kForgottenRulesQuery, household);
+    forgotten_rules = run_shared(sql::kForgottenRules, household);
     if (!succeeded(forgotten_rules.get())) return failed(forgotten_rules);
   }
   (void)run("COMMIT");
@@ -654,13 +609,13 @@ std::optional<std::string> password_in(const std::string& url) {
 }  // namespace
 
 Result<std::unique_ptr<StoreEngine>> open_postgres_store(const std::string& url, StoreAccess access,
-                                                         const std::string& household) {
+                                                         const std::string& household, const std::string& robot) {
   const std::string where = scrub_store_location(url);
   auto secret = password_in(url);
   if (!secret)
     return make_error(ErrorCode::kInvalidInput,
                       where + ": not a PostgreSQL URL that can be read; the form is postgresql://USER@HOST:PORT/DATABASE");
-  auto store = std::make_unique<PostgresStore>(url, where, *secret, access, household);
+  auto store = std::make_unique<PostgresStore>(url, where, *secret, access, household, robot);
   if (auto s = store->connect(); !s) return tl::unexpected(s.error());
   if (auto s = store->check_or_create_schema(); !s) return tl::unexpected(s.error());
   if (access == StoreAccess::kFresh)

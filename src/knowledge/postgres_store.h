@@ -32,11 +32,12 @@
 namespace apprentice {
 
 // Opens (or, unless kReadOnly, creates the tables of) the store in the
-// database at `url` for `household` (a name check_household_name accepts);
+// database at `url` for `household` (a name check_household_name accepts),
+// saving `robot` with each goal and rule;
 // a store of an older schema version is migrated unless kReadOnly. Errors as KnowledgeStore::open lists them; a server
 // that cannot be reached (or refuses the login) is kIo, "HOST:PORT/DB:
 // cannot connect to the PostgreSQL server ...", one line.
 Result<std::unique_ptr<StoreEngine>> open_postgres_store(const std::string& url, StoreAccess access,
-                                                         const std::string& household);
+                                                         const std::string& household, const std::string& robot);
 
 }  // namespace apprentice

@@ -17,6 +17,7 @@
 #include "knowledge/store_engine.h"
 #include "knowledge/store_codec.h"
 #include "knowledge/store_creation.h"
+#include "knowledge/store_sql.h"
 #include "util/file.h"
 
 namespace apprentice {
@@ -55,44 +56,10 @@ tl::unexpected<Error> not_a_store(const std::filesystem::path& path, const std::
   return make_error(ErrorCode::kFailedPrecondition, path.string() + ": not an apprentice knowledge store (" + why + ")");
 }
 
-// The columns load() reads: a store without them is damaged. A store of
-// version 1, read as it is (opened read-only), is the default household's.
-constexpr const char* kTasksQuery = "SELECT name, structure FROM tasks WHERE household = ? ORDER BY name";
-constexpr const char* kGoalsQuery =
-    "SELECT task, subtask, category, place, literals, object, source FROM goals WHERE household = ? ORDER BY id";
-constexpr const char* kTasksQueryV1 = "SELECT name, structure FROM tasks ORDER BY name";
-constexpr const char* kGoalsQueryV1 = "SELECT task, subtask, category, place, literals, object, source FROM goals ORDER BY id";
-constexpr const char* kRulesQuery = "SELECT body, object, source FROM rules ORDER BY id";
-// The other households' goals: the fleet's prior (version 2 on).
-constexpr const char* kFleetGoalsQuery =
-    "SELECT household, task, subtask, category, place, literals, object, source FROM goals WHERE household <> ? "
-    "ORDER BY id";
-constexpr const char* kClassRulesQuery = "SELECT body FROM class_rules WHERE household = ? ORDER BY id";
-constexpr const char* kForgottenRulesQuery = "SELECT body FROM forgotten_rules WHERE household = ? ORDER BY id";
-constexpr const char* kHouseholdsQuery =
-    "SELECT household FROM goals UNION SELECT household FROM tasks UNION SELECT household FROM class_rules "
-    "UNION SELECT household FROM forgotten_rules ORDER BY 1";
-constexpr const char* kHouseholdsQueryV2 = "SELECT household FROM goals UNION SELECT household FROM tasks ORDER BY 1";
-// What news() reads: what was saved after the last ids seen.
-constexpr const char* kNewGoalsQuery =
-    "SELECT id, task, subtask, category, place, literals, object, source FROM goals WHERE household = ? AND id > ? "
-    "ORDER BY id";
-constexpr const char* kNewRulesQuery = "SELECT id, body, object, source FROM rules WHERE id > ? ORDER BY id";
-constexpr const char* kLastIdsQuery =
-    "SELECT (SELECT coalesce(max(id), 0) FROM goals), (SELECT coalesce(max(id), 0) FROM rules)";
-
-// What version meta names: kOldestMigratedSchemaVersion ..
-// kKnowledgeSchemaVersion, or 0 for anything else.
-int version_number(const std::string& text) {
-  for (int v = kOldestMigratedSchemaVersion; v <= kKnowledgeSchemaVersion; ++v)
-    if (text == std::to_string(v)) return v;
-  return 0;
-}
+namespace sql = store_sql;
 
 tl::unexpected<Error> other_version(const std::string& where, const std::string& version) {
-  return make_error(ErrorCode::kFailedPrecondition,
-                    where + " was written with knowledge schema version " + version + "; this apprentice reads version " +
-                        std::to_string(kKnowledgeSchemaVersion) + ". Relearn into a new file, or use the apprentice version that wrote it.");
+  return make_error(ErrorCode::kFailedPrecondition, sql::other_version(where, version));
 }
 
 int table_count(SQLite::Database& db) {
@@ -104,7 +71,7 @@ int table_count(SQLite::Database& db) {
 // The schema version in meta, or the store's error.
 Result<std::string> read_version(SQLite::Database& db, const std::filesystem::path& path) {
   std::string format, version;
-  SQLite::Statement meta(db, "SELECT key, value FROM meta");
+  SQLite::Statement meta(db, sql::kReadMeta);
   while (meta.executeStep()) {
     std::string key = meta.getColumn(0).getString();
     if (key == "format") format = meta.getColumn(1).getString();
@@ -123,7 +90,7 @@ Result<int> migrate_if_old(SQLite::Database& db, const std::filesystem::path& pa
   SQLite::Transaction transaction(db, SQLite::TransactionBehavior::IMMEDIATE);
   auto again = read_version(db, path);
   if (!again) return tl::unexpected(again.error());
-  const int now = version_number(*again);
+  const int now = sql::version_number(*again);
   if (now == 0) return other_version(path.string(), *again);
   if (now < kKnowledgeSchemaVersion) migrate_knowledge_schema(db, now);
   transaction.commit();
@@ -153,16 +120,16 @@ Result<int> check_or_create_schema(SQLite::Database& db, const std::filesystem::
   }
   auto found = read_version(db, path);
   if (!found) return tl::unexpected(found.error());
-  const int old = version_number(*found);
+  const int old = sql::version_number(*found);
   if (old == 0) return other_version(path.string(), *found);
   auto version = migrate_if_old(db, path, old, may_create);
   if (!version) return version;
   const bool v1 = *version == 1;
   std::vector<std::pair<const char*, const char*>> tables{
-      {"tasks", v1 ? kTasksQueryV1 : kTasksQuery}, {"goals", v1 ? kGoalsQueryV1 : kGoalsQuery}, {"rules", kRulesQuery}};
+      {"tasks", v1 ? sql::kTasksV1 : sql::kTasks}, {"goals", v1 ? sql::kGoalsV1 : sql::kGoals}, {"rules", sql::kRules}};
   if (*version >= 3) {
-    tables.emplace_back("class_rules", kClassRulesQuery);
-    tables.emplace_back("forgotten_rules", kForgottenRulesQuery);
+    tables.emplace_back("class_rules", sql::kClassRules);
+    tables.emplace_back("forgotten_rules", sql::kForgottenRules);
   }
   for (auto [table, query] : tables) {
     try {
@@ -184,25 +151,21 @@ Status quick_check(SQLite::Database& db, const std::filesystem::path& path) {
   return {};
 }
 
-class SqliteStore final : public StoreEngine {
+class SqliteStore final : public store_sql::SqlEngine {
  public:
-  SqliteStore(std::filesystem::path path, std::string household, int version, FileDescriptor lock,
+  SqliteStore(std::filesystem::path path, std::string household, std::string robot, int version, FileDescriptor lock,
               std::unique_ptr<SQLite::Database> db)
-      : path_(std::move(path)), household_(std::move(household)), version_(version), lock_(std::move(lock)),
-        db_(std::move(db)) {}
+      : SqlEngine(std::move(household), std::move(robot)), path_(std::move(path)), version_(version),
+        lock_(std::move(lock)), db_(std::move(db)) {}
   // The database first, then its lock (see lock_).
   ~SqliteStore() override { db_.reset(); }
 
   Status save_goal(const GoalKnowledge& goal) override;
   Status save_rule(const Domain& domain, const Rule& rule) override;
   Status save_task(const TaskKnowledge& task) override;
-  Status remove_goal(const GoalKey& key) override;
-  Status remove_rule(const Domain& domain, const Rule& rule) override;
-  Status remove_task(const std::string& name) override;
   Result<Knowledge> load(const Domain& domain) const override;
   Result<std::vector<std::string>> households() const override;
   Status save_class_rule(const ClassRule& rule) override;
-  Status remove_class_rule(const ClassRule& rule) override;
   Status forget_class_rule(const ClassRule& rule) override;
   Result<StoreNews> news(const Domain& domain) override;
   // Takes what the store holds now as seen (news() reports only what comes
@@ -218,9 +181,11 @@ class SqliteStore final : public StoreEngine {
   // `parameters()` gives.
   template <typename Parameters>
   Status write(const char* sql, Parameters parameters);
+  Status execute(const char* sql, const Texts& values) override {
+    return write(sql, [&] { return values; });
+  }
 
   std::filesystem::path path_;
-  std::string household_;
   // The schema version of the store: kKnowledgeSchemaVersion, or an older
   // one a reader reads as it is.
   int version_;
@@ -261,39 +226,40 @@ Status SqliteStore::write(const char* sql, Parameters parameters) {
 Status SqliteStore::save_class_rule(const ClassRule& rule) {
   return write_all([&] {
     const std::string key = class_rule_key(rule);
-    return Statements{{"DELETE FROM forgotten_rules WHERE household = ? AND key = ?", Texts{household_, key}},
+    return Statements{{sql::kUnforgetClassRule, Texts{household_, key}},
                       {"INSERT OR REPLACE INTO class_rules(household, key, body, source) VALUES (?, ?, ?, ?)",
                        Texts{household_, key, store_codec::encode_class_rule(rule),
                              std::string(rule_source_name(rule.source))}}};
   });
 }
 
-Status SqliteStore::remove_class_rule(const ClassRule& rule) {
-  return write("DELETE FROM class_rules WHERE household = ? AND key = ?",
-               [&] { return Texts{household_, class_rule_key(rule)}; });
-}
-
 Status SqliteStore::forget_class_rule(const ClassRule& rule) {
   return write_all([&] {
     const std::string key = class_rule_key(rule);
-    return Statements{{"DELETE FROM class_rules WHERE household = ? AND key = ?", Texts{household_, key}},
+    return Statements{{sql::kRemoveClassRule, Texts{household_, key}},
                       {"INSERT OR REPLACE INTO forgotten_rules(household, key, body) VALUES (?, ?, ?)",
                        Texts{household_, key, store_codec::encode_class_rule(rule)}}};
   });
 }
 
+// A goal or rule saved again is replaced (INSERT OR REPLACE deletes the
+// old row), so it gets a new id and moves to the end.
 Status SqliteStore::save_goal(const GoalKnowledge& goal) {
   return write(
-      "INSERT OR REPLACE INTO goals(household, task, subtask, category, place, literals, object, source) "
-      "VALUES (?, ?, ?, ?, ?, ?, ?, ?)",
+      "INSERT OR REPLACE INTO goals(household, task, subtask, category, place, literals, object, source, robot) "
+      "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)",
       [&] {
-        return Texts{household_, goal.key.task, goal.key.subtask, goal.key.category, goal.key.place, store_codec::encode_goal_literals(goal),
-       goal.provenance.object, goal.provenance.source}; });
+        return Texts{household_,          goal.key.task,          goal.key.subtask,
+                     goal.key.category,   goal.key.place,         store_codec::encode_goal_literals(goal),
+                     goal.provenance.object, goal.provenance.source, robot_};
+      });
 }
 
 Status SqliteStore::save_rule(const Domain& domain, const Rule& rule) {
-  return write("INSERT OR IGNORE INTO rules(signature, body, object, source) VALUES (?, ?, ?, ?)", [&] { return Texts{rule_signature(domain, rule), store_codec::encode_rule(domain, rule), rule.provenance.object,
-                rule.provenance.source}; });
+  return write("INSERT OR IGNORE INTO rules(signature, body, object, source, robot) VALUES (?, ?, ?, ?, ?)", [&] {
+    return Texts{rule_signature(domain, rule), store_codec::encode_rule(domain, rule), rule.provenance.object,
+                 rule.provenance.source, robot_};
+  });
 }
 
 Status SqliteStore::save_task(const TaskKnowledge& task) {
@@ -301,23 +267,10 @@ Status SqliteStore::save_task(const TaskKnowledge& task) {
                [&] { return Texts{household_, task.name, store_codec::encode_subtasks(task)}; });
 }
 
-Status SqliteStore::remove_goal(const GoalKey& key) {
-  return write("DELETE FROM goals WHERE household = ? AND task = ? AND subtask = ? AND category = ? AND place = ?",
-               [&] { return Texts{household_, key.task, key.subtask, key.category, key.place}; });
-}
-
-Status SqliteStore::remove_rule(const Domain& domain, const Rule& rule) {
-  return write("DELETE FROM rules WHERE signature = ?", [&] { return Texts{rule_signature(domain, rule)}; });
-}
-
-Status SqliteStore::remove_task(const std::string& name) {
-  return write("DELETE FROM tasks WHERE household = ? AND name = ?", [&] { return Texts{household_, name}; });
-}
-
 void SqliteStore::mark_seen() const {
   data_version_ = db_->execAndGet("PRAGMA data_version").getInt64();
   if (version_ == 1) return;
-  SQLite::Statement last(*db_, kLastIdsQuery);
+  SQLite::Statement last(*db_, sql::kLastIds);
   if (!last.executeStep()) return;
   last_goal_id_ = last.getColumn(0).getInt64();
   last_rule_id_ = last.getColumn(1).getInt64();
@@ -332,7 +285,7 @@ Result<StoreNews> SqliteStore::news(const Domain& domain) {
     const std::int64_t now = db_->execAndGet("PRAGMA data_version").getInt64();
     if (now == data_version_) return news;
     SQLite::Transaction snapshot(*db_, SQLite::TransactionBehavior::DEFERRED);
-    SQLite::Statement goals(*db_, kNewGoalsQuery);
+    SQLite::Statement goals(*db_, sql::new_goals(version_));
     goals.bind(1, household_);
     goals.bind(2, last_goal_id_);
     while (goals.executeStep()) {
@@ -343,8 +296,9 @@ Result<StoreNews> SqliteStore::news(const Domain& domain) {
                                            Provenance{goals.getColumn(6).getString(), goals.getColumn(7).getString()});
       if (!goal) return located(goal.error());
       news.goals.push_back(std::move(*goal));
+      news.goal_robots.push_back(goals.getColumn(8).getString());
     }
-    SQLite::Statement rules(*db_, kNewRulesQuery);
+    SQLite::Statement rules(*db_, sql::new_rules(version_));
     rules.bind(1, last_rule_id_);
     while (rules.executeStep()) {
       last_rule_id_ = std::max(last_rule_id_, rules.getColumn(0).getInt64());
@@ -364,12 +318,7 @@ Result<StoreNews> SqliteStore::news(const Domain& domain) {
 Result<std::vector<std::string>> SqliteStore::households() const {
   std::vector<std::string> out;
   try {
-    if (version_ == 1) {
-      SQLite::Statement any(*db_, "SELECT EXISTS(SELECT 1 FROM goals) OR EXISTS(SELECT 1 FROM tasks)");
-      if (any.executeStep() && any.getColumn(0).getInt() != 0) out.emplace_back(kDefaultHousehold);
-      return out;
-    }
-    SQLite::Statement names(*db_, version_ == 2 ? kHouseholdsQueryV2 : kHouseholdsQuery);
+    SQLite::Statement names(*db_, sql::households_query(version_));
     while (names.executeStep()) out.push_back(names.getColumn(0).getString());
   } catch (const std::exception& e) {
     return tl::unexpected(sqlite_error(path_, e));
@@ -390,10 +339,9 @@ Result<Knowledge> SqliteStore::load(const Domain& domain) const {
     SQLite::Transaction snapshot(*db_, SQLite::TransactionBehavior::DEFERRED);
     // A version 1 store holds the default household's goals and tasks alone.
     const bool v1 = version_ == 1;
-    const bool own = !v1 || household_ == kDefaultHousehold;
-    SQLite::Statement tasks(*db_, v1 ? kTasksQueryV1 : kTasksQuery);
-    if (!v1) tasks.bind(1, household_);
-    while (own && tasks.executeStep()) {
+    SQLite::Statement tasks(*db_, v1 ? sql::kTasksV1 : sql::kTasks);
+    tasks.bind(1, household_);
+    while (tasks.executeStep()) {
       const std::string name = tasks.getColumn(0).getString();
       auto structure = text(tasks.getColumn(1), store_codec::task_entry(name));
       if (!structure) return located(structure.error());
@@ -412,15 +360,15 @@ Result<Knowledge> SqliteStore::load(const Domain& domain) const {
           domain, std::move(key), *literals,
           Provenance{row.getColumn(first + 5).getString(), row.getColumn(first + 6).getString()});
     };
-    SQLite::Statement goals(*db_, v1 ? kGoalsQueryV1 : kGoalsQuery);
-    if (!v1) goals.bind(1, household_);
-    while (own && goals.executeStep()) {
+    SQLite::Statement goals(*db_, v1 ? sql::kGoalsV1 : sql::kGoals);
+    goals.bind(1, household_);
+    while (goals.executeStep()) {
       auto goal = goal_at(goals, 0);
       if (!goal) return located(goal.error());
       knowledge.goals.add(std::move(*goal));
     }
     if (!v1) {
-      SQLite::Statement fleet(*db_, kFleetGoalsQuery);
+      SQLite::Statement fleet(*db_, sql::kFleetGoals);
       fleet.bind(1, household_);
       while (fleet.executeStep()) {
         auto goal = goal_at(fleet, 1);
@@ -430,7 +378,7 @@ Result<Knowledge> SqliteStore::load(const Domain& domain) const {
         knowledge.fleet.add(fleet.getColumn(0).getString(), std::move(*goal));
       }
     }
-    SQLite::Statement rules(*db_, kRulesQuery);
+    SQLite::Statement rules(*db_, sql::kRules);
     while (rules.executeStep()) {
       auto body = text(rules.getColumn(0), store_codec::kRuleEntry);
       if (!body) return located(body.error());
@@ -441,8 +389,8 @@ Result<Knowledge> SqliteStore::load(const Domain& domain) const {
     }
     // Stores before version 3 (read as they are) have no class rules.
     if (version_ >= 3) {
-      for (auto [query, into] : {std::pair{kClassRulesQuery, &knowledge.class_rules},
-                                 std::pair{kForgottenRulesQuery, &knowledge.forgotten_rules}}) {
+      for (auto [query, into] : {std::pair{sql::kClassRules, &knowledge.class_rules},
+                                 std::pair{sql::kForgottenRules, &knowledge.forgotten_rules}}) {
         SQLite::Statement rows(*db_, query);
         rows.bind(1, household_);
         while (rows.executeStep()) {
@@ -464,7 +412,7 @@ Result<Knowledge> SqliteStore::load(const Domain& domain) const {
 }  // namespace
 
 Result<std::unique_ptr<StoreEngine>> open_sqlite_store(const std::filesystem::path& path, StoreAccess access,
-                                                       const std::string& household) {
+                                                       const std::string& household, const std::string& robot) {
   const bool read_only = access == StoreAccess::kReadOnly;
   // 1. The file, created if absent (unless read-only), and its lock. A new
   // store is created whole under another name and moved into place
@@ -549,14 +497,10 @@ Result<std::unique_ptr<StoreEngine>> open_sqlite_store(const std::filesystem::pa
     if (!version) return tl::unexpected(version.error());
     if (access == StoreAccess::kFresh) {
       SQLite::Transaction transaction(*db, SQLite::TransactionBehavior::IMMEDIATE);
-      db->exec("DELETE FROM goals");
-      db->exec("DELETE FROM tasks");
-      db->exec("DELETE FROM rules");
-      db->exec("DELETE FROM class_rules");
-      db->exec("DELETE FROM forgotten_rules");
+      for (const char* statement : sql::kStartOver) db->exec(statement);
       transaction.commit();
     }
-    auto store = std::make_unique<SqliteStore>(path, household, *version, std::move(lock), std::move(db));
+    auto store = std::make_unique<SqliteStore>(path, household, robot, *version, std::move(lock), std::move(db));
     store->mark_seen();
     return std::unique_ptr<StoreEngine>(std::move(store));
   } catch (const std::exception& e) {

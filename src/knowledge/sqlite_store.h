@@ -28,10 +28,11 @@
 namespace apprentice {
 
 // Opens (or, unless kReadOnly, creates) the SQLite store at `path` for
-// `household` (a name check_household_name accepts); a store of an older
-// schema version is migrated unless kReadOnly. Errors as
-// KnowledgeStore::open lists them, each naming the file.
+// `household` (a name check_household_name accepts), saving `robot` with
+// each goal and rule; a store of an older schema version is migrated unless
+// kReadOnly. Errors as KnowledgeStore::open lists them, each naming the
+// file.
 Result<std::unique_ptr<StoreEngine>> open_sqlite_store(const std::filesystem::path& path, StoreAccess access,
-                                                       const std::string& household);
+                                                       const std::string& household, const std::string& robot);
 
 }  // namespace apprentice

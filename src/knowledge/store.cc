@@ -11,18 +11,23 @@ const TaskKnowledge* Knowledge::find_task(const std::string& name) const {
   return nullptr;
 }
 
-KnowledgeStore::KnowledgeStore(std::filesystem::path location, std::string household, std::unique_ptr<StoreEngine> engine)
-    : location_(std::move(location)), household_(std::move(household)), engine_(std::move(engine)) {}
+KnowledgeStore::KnowledgeStore(std::filesystem::path location, std::string household, std::string robot,
+                               std::unique_ptr<StoreEngine> engine)
+    : location_(std::move(location)), household_(std::move(household)), robot_(std::move(robot)),
+      engine_(std::move(engine)) {}
 KnowledgeStore::KnowledgeStore(KnowledgeStore&&) noexcept = default;
 KnowledgeStore& KnowledgeStore::operator=(KnowledgeStore&&) noexcept = default;
 KnowledgeStore::~KnowledgeStore() = default;
 
-Result<KnowledgeStore> KnowledgeStore::open(const std::string& location, StoreAccess access, const std::string& household) {
+Result<KnowledgeStore> KnowledgeStore::open(const std::string& location, StoreAccess access, const std::string& household,
+                                            const std::string& robot) {
   if (auto s = check_household_name(household); !s) return tl::unexpected(s.error());
-  auto engine = is_postgres_location(location) ? open_postgres_store(location, access, household)
-                                               : open_sqlite_store(location, access, household);
+  const std::string name = robot.empty() ? default_robot_name() : robot;
+  if (auto s = check_robot_name(name); !s) return tl::unexpected(s.error());
+  auto engine = is_postgres_location(location) ? open_postgres_store(location, access, household, name)
+                                               : open_sqlite_store(location, access, household, name);
   if (!engine) return tl::unexpected(engine.error());
-  return KnowledgeStore(scrub_store_location(location), household, std::move(*engine));
+  return KnowledgeStore(scrub_store_location(location), household, name, std::move(*engine));
 }
 
 Result<Knowledge> load_knowledge_read_only(const std::string& location, const Domain& domain, const std::string& household) {

@@ -42,10 +42,13 @@ class KnowledgeStore {
   // Messages name a PostgreSQL store by its URL without the password.
   //   kInvalidInput        also: `household` cannot name a household
   //                        (check_household_name)
+  //                      or `robot` cannot name a robot (check_robot_name)
   // The store is opened for `household`: its goals and tasks are saved,
   // removed and loaded under that name; rules are shared (store_engine.h).
+  // Each goal and rule saved is saved with `robot`, which the other robots'
+  // news names (StoreNews); empty means default_robot_name().
   static Result<KnowledgeStore> open(const std::string& location, StoreAccess access = StoreAccess::kReadWrite,
-                                     const std::string& household = kDefaultHousehold);
+                                     const std::string& household = kDefaultHousehold, const std::string& robot = "");
 
   KnowledgeStore(KnowledgeStore&&) noexcept;
   KnowledgeStore& operator=(KnowledgeStore&&) noexcept;
@@ -81,6 +84,8 @@ class KnowledgeStore {
   // opened, loaded or last asked (StoreEngine::news).
   Result<StoreNews> news(const Domain& domain) { return engine_->news(domain); }
   const std::string& household() const { return household_; }
+  // The name saved with each goal and rule this store saves.
+  const std::string& robot() const { return robot_; }
 
   // Where the store is, as messages name it: the SQLite file's path, or
   // the PostgreSQL URL without its password.
@@ -88,10 +93,12 @@ class KnowledgeStore {
   std::string location() const { return location_.string(); }
 
  private:
-  KnowledgeStore(std::filesystem::path location, std::string household, std::unique_ptr<StoreEngine> engine);
+  KnowledgeStore(std::filesystem::path location, std::string household, std::string robot,
+                 std::unique_ptr<StoreEngine> engine);
 
   std::filesystem::path location_;
   std::string household_;
+  std::string robot_;
   std::unique_ptr<StoreEngine> engine_;
 };
 

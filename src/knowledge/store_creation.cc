@@ -17,6 +17,7 @@
 #include <SQLiteCpp/SQLiteCpp.h>
 
 #include "knowledge/store_engine.h"
+#include "knowledge/store_sql.h"
 #include "util/file.h"
 
 namespace apprentice {
@@ -101,6 +102,8 @@ int move_without_replacing(const std::filesystem::path& from, const std::filesys
 
 namespace {
 
+// The tables of version 2 (migrate_1_to_2 makes them; the current schema
+// is store_sql::schema).
 constexpr const char* kGoalsTable =
     "CREATE TABLE goals(id INTEGER PRIMARY KEY AUTOINCREMENT, household TEXT NOT NULL, task TEXT NOT NULL, subtask TEXT NOT NULL, "
     "category TEXT NOT NULL, place TEXT NOT NULL, literals TEXT NOT NULL, object TEXT NOT NULL, "
@@ -110,13 +113,6 @@ constexpr const char* kRulesTable =
     "object TEXT NOT NULL, source TEXT NOT NULL)";
 constexpr const char* kTasksTable =
     "CREATE TABLE tasks(household TEXT NOT NULL, name TEXT NOT NULL, structure TEXT NOT NULL, PRIMARY KEY(household, name))";
-constexpr const char* kClassRulesTable =
-    "CREATE TABLE class_rules(id INTEGER PRIMARY KEY AUTOINCREMENT, household TEXT NOT NULL, key TEXT NOT NULL, "
-    "body TEXT NOT NULL, source TEXT NOT NULL, UNIQUE(household, key))";
-constexpr const char* kForgottenRulesTable =
-    "CREATE TABLE forgotten_rules(id INTEGER PRIMARY KEY AUTOINCREMENT, household TEXT NOT NULL, key TEXT NOT NULL, "
-    "body TEXT NOT NULL, UNIQUE(household, key))";
-
 // The SQL below names the default household as a literal.
 static_assert(std::string_view(kDefaultHousehold) == "default");
 
@@ -146,35 +142,29 @@ void migrate_1_to_2(SQLite::Database& db) {
 // Version 2 to 3: each household's class rules with their evidence, and
 // the rules it forgot (none yet).
 void migrate_2_to_3(SQLite::Database& db) {
-  db.exec(kClassRulesTable);
-  db.exec(kForgottenRulesTable);
+  for (const std::string& table : store_sql::class_rules_tables(store_sql::kSqliteId)) db.exec(table);
+}
+
+void migrate_3_to_4(SQLite::Database& db) {
+  for (const char* step : store_sql::kMigration3To4) db.exec(step);
 }
 
 }  // namespace
 
 void create_knowledge_schema(SQLite::Database& db) {
-  db.exec("CREATE TABLE meta(key TEXT PRIMARY KEY, value TEXT NOT NULL)");
-  db.exec(kGoalsTable);
-  db.exec(kTasksTable);
-  db.exec(kRulesTable);
-  db.exec(kClassRulesTable);
-  db.exec(kForgottenRulesTable);
-  SQLite::Statement insert(db, "INSERT INTO meta(key, value) VALUES (?, ?)");
-  for (auto [key, value] : {std::pair<std::string, std::string>{"format", kKnowledgeFormatName},
-                            {"schema_version", std::to_string(kKnowledgeSchemaVersion)}}) {
-    insert.bind(1, key);
-    insert.bind(2, value);
-    insert.exec();
-    insert.reset();
-  }
+  for (const std::string& table : store_sql::schema(store_sql::kSqliteId)) db.exec(table);
+  SQLite::Statement insert(db, store_sql::kInsertMeta);
+  insert.bind(1, kKnowledgeFormatName);
+  insert.bind(2, std::to_string(kKnowledgeSchemaVersion));
+  insert.exec();
 }
 
 void migrate_knowledge_schema(SQLite::Database& db, int from_version) {
   // One entry per step, from version i + kOldestMigratedSchemaVersion.
-  static constexpr void (*kSteps[])(SQLite::Database&) = {migrate_1_to_2, migrate_2_to_3};
+  static constexpr void (*kSteps[])(SQLite::Database&) = {migrate_1_to_2, migrate_2_to_3, migrate_3_to_4};
   static_assert(std::size(kSteps) == kKnowledgeSchemaVersion - kOldestMigratedSchemaVersion);
   for (int v = from_version; v < kKnowledgeSchemaVersion; ++v) kSteps[v - kOldestMigratedSchemaVersion](db);
-  SQLite::Statement version(db, "UPDATE meta SET value = ? WHERE key = 'schema_version'");
+  SQLite::Statement version(db, store_sql::kSetVersion);
   version.bind(1, std::to_string(kKnowledgeSchemaVersion));
   version.exec();
 }

@@ -19,9 +19,13 @@
 //     (one step per version, in one transaction), and read as it is when
 //     opened read-only.
 //
+//   - an engine is opened for one robot, a name saved with each goal and
+//     rule it saves (the news names it).
+//
 // Adding a kind of stored knowledge: its text form in store_codec.h, its
-// save/remove here, its table in each engine's schema (with a migration
-// step from the schema before), and its part of Knowledge, read by load().
+// save/remove here, its table in the schema (knowledge/store_sql.h, with a
+// migration step from the schema before), and its part of Knowledge, read
+// by load().
 #pragma once
 
 #include <string>
@@ -45,9 +49,11 @@ namespace apprentice {
 //      their keys); what version 1 held is the default household's
 //   3  class_rules and forgotten_rules, a household's: its rules about
 //      classes of things with their evidence, and those it forgot
+//   4  goals and rules name the robot that saved them (a `robot` column;
+//      '' for what was saved before, by a robot the store does not know)
 // Each engine migrates a store one step at a time from the oldest version
 // it still reads, kOldestMigratedSchemaVersion.
-inline constexpr int kKnowledgeSchemaVersion = 3;
+inline constexpr int kKnowledgeSchemaVersion = 4;
 inline constexpr int kOldestMigratedSchemaVersion = 1;
 
 // Everything the agent knows, in memory.
@@ -74,10 +80,15 @@ struct Knowledge {
 
 // What other processes saved into a store since it was opened, loaded or
 // last asked (StoreEngine::news): the goals of its household and the
-// fleet's rules, whole, in the order they were saved.
+// fleet's rules, whole, in the order they were saved, each with the robot
+// that saved it.
 struct StoreNews {
   std::vector<GoalKnowledge> goals;
   std::vector<Rule> rules;
+  // The robot that saved each of `goals`, in the same order: the name it
+  // opened the store with (KnowledgeStore::open), or "" for a goal saved
+  // before the store's schema named robots (version 4).
+  std::vector<std::string> goal_robots;
   bool empty() const { return goals.empty() && rules.empty(); }
 };
 

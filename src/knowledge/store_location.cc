@@ -1,5 +1,9 @@
 #include "knowledge/store_location.h"
 
+#include <unistd.h>
+
+#include <climits>
+
 namespace apprentice {
 
 bool is_postgres_location(std::string_view location) {
@@ -37,20 +41,46 @@ std::string scrub_store_location(std::string_view location) {
   return out + kept;
 }
 
-Status check_household_name(std::string_view name) {
-  constexpr std::size_t kLongest = 64;
-  auto allowed = [](char c) {
-    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_' || c == '.';
-  };
-  bool ok = !name.empty() && name.size() <= kLongest;
-  for (char c : name) ok = ok && allowed(c);
-  if (ok) return {};
-  std::string shown(name.substr(0, kLongest));
+namespace {
+
+constexpr std::size_t kLongestName = 64;
+
+bool name_character(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_' || c == '.';
+}
+
+// "NAME" cannot name a WHAT: use 1 to 64 ALLOWED.
+tl::unexpected<Error> bad_name(std::string_view name, const std::string& what, const std::string& allowed) {
+  std::string shown(name.substr(0, kLongestName));
   for (char& c : shown)
     if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
-  return make_error(ErrorCode::kInvalidInput,
-                    "\"" + shown + (name.size() > kLongest ? "...\"" : "\"") +
-                        " cannot name a household: use 1 to 64 letters, digits, '-', '_' or '.'.");
+  return make_error(ErrorCode::kInvalidInput, "\"" + shown + (name.size() > kLongestName ? "...\"" : "\"") +
+                                                  " cannot name a " + what + ": use 1 to 64 " + allowed + ".");
+}
+
+}  // namespace
+
+Status check_household_name(std::string_view name) {
+  bool ok = !name.empty() && name.size() <= kLongestName;
+  for (char c : name) ok = ok && name_character(c);
+  if (ok) return {};
+  return bad_name(name, "household", "letters, digits, '-', '_' or '.'");
+}
+
+Status check_robot_name(std::string_view name) {
+  bool ok = !name.empty() && name.size() <= kLongestName && name.front() != ' ' && name.back() != ' ';
+  for (char c : name) ok = ok && (name_character(c) || c == ' ');
+  if (ok) return {};
+  return bad_name(name, "robot", "letters, digits, spaces, '-', '_' or '.', not starting or ending with a space");
+}
+
+std::string default_robot_name() {
+  char host[HOST_NAME_MAX + 1] = {};
+  std::string name;
+  if (::gethostname(host, sizeof host - 1) == 0)
+    for (const char* c = host; *c != '\0' && *c != '.' && name.size() < kLongestName; ++c)
+      if (name_character(*c)) name += *c;
+  return name.empty() ? "robot" : name;
 }
 
 }  // namespace apprentice

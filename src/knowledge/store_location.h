@@ -23,4 +23,14 @@ std::string scrub_store_location(std::string_view location);
 // digits, '-', '_' or '.'. kInvalidInput, one sentence, otherwise.
 Status check_household_name(std::string_view name);
 
+// Whether `name` can name a robot (--robot), the name saved with each goal
+// and rule it learns and said in the news ("Robot kitchen-2 just learned
+// ..."): 1 to 64 letters, digits, spaces, '-', '_' or '.', not beginning or
+// ending with a space. kInvalidInput, one sentence, otherwise.
+Status check_robot_name(std::string_view name);
+
+// The robot's name when none is given: the host name, cut to what
+// check_robot_name accepts (its first label, 64 characters), or "robot".
+std::string default_robot_name();
+
 }  // namespace apprentice

@@ -153,8 +153,9 @@ TEST_F(FaceStore, TheStoreIsOwnedAndKeptAcrossSessions) {
   EXPECT_EQ(alone->assertions_achieved, alone->assertions_total);
 }
 
-// Live: a running agent takes in what another robot of its household
-// learned after it started (the store's news), and says so once.
+// Live: a running agent takes in what other robots of its household
+// learned after it started (the store's news), and says so once, naming
+// each robot.
 TEST_F(FaceStore, ARunningAgentSeesWhatAnotherRobotLearnedSinceItStarted) {
   Scenario kitchen = testing::shipped_scenario("tidy-kitchen");
   const std::string store = (dir_ / "fleet.sqlite").string();
@@ -169,15 +170,20 @@ TEST_F(FaceStore, ARunningAgentSeesWhatAnotherRobotLearnedSinceItStarted) {
   }
   auto taught = load_knowledge_read_only(store, *kitchen.world.domain, "smiths");
   ASSERT_TRUE(taught) << taught.error().describe();
-  // The joneses' robot knows everything but one kind's goals.
+  // The joneses' robot knows everything but two kinds' goals.
   const std::string kind = taught->goals.all().front().key.category;
-  std::vector<GoalKnowledge> kinds_goals;
+  std::string other_kind;
+  for (const GoalKnowledge& g : taught->goals.all())
+    if (g.key.category != kind && other_kind.empty()) other_kind = g.key.category;
+  ASSERT_FALSE(other_kind.empty());
+  std::vector<GoalKnowledge> kinds_goals, other_kinds_goals;
   {
     auto joneses = KnowledgeStore::open(store, StoreAccess::kReadWrite, "joneses");
     ASSERT_TRUE(joneses) << joneses.error().describe();
     ASSERT_TRUE(joneses->save_task(taught->tasks.front()));
     for (const GoalKnowledge& g : taught->goals.all()) {
       if (g.key.category == kind) kinds_goals.push_back(g);
+      else if (g.key.category == other_kind) other_kinds_goals.push_back(g);
       else ASSERT_TRUE(joneses->save_goal(g));
     }
   }
@@ -187,21 +193,27 @@ TEST_F(FaceStore, ARunningAgentSeesWhatAnotherRobotLearnedSinceItStarted) {
   auto running = make_agent_session(spec, kitchen);
   ASSERT_TRUE(running) << running.error().describe();
   for (const GoalKnowledge& g : kinds_goals) ASSERT_EQ((*running)->knowledge().goals.find(g.key), nullptr);
-  // Another robot of the household learns that kind now.
+  // Two other robots of the household learn those kinds now.
   {
-    auto robot2 = KnowledgeStore::open(store, StoreAccess::kReadWrite, "joneses");
+    auto robot2 = KnowledgeStore::open(store, StoreAccess::kReadWrite, "joneses", "kitchen-2");
     ASSERT_TRUE(robot2) << robot2.error().describe();
     for (const GoalKnowledge& g : kinds_goals) ASSERT_TRUE(robot2->save_goal(g));
+    auto robot3 = KnowledgeStore::open(store, StoreAccess::kReadWrite, "joneses", "Robot 3");
+    ASSERT_TRUE(robot3) << robot3.error().describe();
+    for (const GoalKnowledge& g : other_kinds_goals) ASSERT_TRUE(robot3->save_goal(g));
   }
   auto alone = (*running)->perform("tidy kitchen");
   ASSERT_TRUE(alone) << alone.error().describe();
   EXPECT_TRUE(alone->agent.help_needed.empty()) << alone->agent.help_needed.front();
   EXPECT_EQ(alone->assertions_achieved, alone->assertions_total);
-  std::string spoken = kind;
-  std::replace(spoken.begin(), spoken.end(), '-', ' ');
-  const std::string said = "Another robot just learned where the " + spoken + " goes.";
-  EXPECT_EQ(alone->agent.news, std::vector<std::string>{said});
-  EXPECT_EQ(nlohmann::json::parse(to_json(*alone))["news"], nlohmann::json::array({said}));
+  auto spoken = [](std::string category) {
+    std::replace(category.begin(), category.end(), '-', ' ');
+    return category;
+  };
+  const std::vector<std::string> said{"Robot kitchen-2 just learned where the " + spoken(kind) + " goes.",
+                                      "Robot 3 just learned where the " + spoken(other_kind) + " goes."};
+  EXPECT_EQ(alone->agent.news, said);
+  EXPECT_EQ(nlohmann::json::parse(to_json(*alone))["news"], nlohmann::json::array({said[0], said[1]}));
   // Said once: a second run of the same session has nothing new to say.
   auto again = (*running)->perform("tidy kitchen");
   ASSERT_TRUE(again);

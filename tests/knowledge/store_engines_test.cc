@@ -54,8 +54,8 @@ class StoreEngines : public KitchenStoreTest, public ::testing::WithParamInterfa
   }
 
   KnowledgeStore open_or_die(StoreAccess access = StoreAccess::kReadWrite,
-                             const std::string& household = kDefaultHousehold) {
-    auto store = KnowledgeStore::open(location_, access, household);
+                             const std::string& household = kDefaultHousehold, const std::string& robot = "") {
+    auto store = KnowledgeStore::open(location_, access, household, robot);
     if (!store) {
       ADD_FAILURE() << store.error().describe();
       std::abort();
@@ -149,6 +149,14 @@ class StoreEngines : public KitchenStoreTest, public ::testing::WithParamInterfa
       exec("INSERT INTO rules(signature, body, object, source) VALUES (" + quoted(rule_signature(domain_, r)) + ", " +
            quoted(store_codec::encode_rule(domain_, r)) + ", " + quoted(r.provenance.object) + ", " +
            quoted(r.provenance.source) + ")");
+  }
+
+  // The store at location_, made by this version, taken back to version
+  // 3 behind the engine's back: goals and rules lose their robot.
+  void make_version_3_store() {
+    exec("ALTER TABLE goals DROP COLUMN robot");
+    exec("ALTER TABLE rules DROP COLUMN robot");
+    exec("UPDATE meta SET value = '3' WHERE key = 'schema_version'");
   }
 
   // What make_version_1_store put in, as `store` loads it.
@@ -414,6 +422,7 @@ TEST_P(StoreEngines, AVersion2StoreIsReadAsItIsAndGainsClassRulesWhenOpenedToWri
     KnowledgeStore store = open_or_die();
     fill(store);
   }
+  make_version_3_store();
   exec("DROP TABLE class_rules");
   exec("DROP TABLE forgotten_rules");
   exec("UPDATE meta SET value = '2' WHERE key = 'schema_version'");
@@ -645,6 +654,85 @@ TEST_P(StoreEngines, CopyingAStoreCopiesEveryHouseholdIntoItsOwn) {
   EXPECT_EQ(joneses->goals.all()[0].literals, goal_for("ceramic-plate1", "(in ceramic-plate1 garbage1)").literals);
 }
 
+// Version 3 to 4: a store written before robots were named opens, read as
+// it is and migrated to write, with nothing lost; what it held names no
+// robot, and what is saved after names its robot.
+TEST_P(StoreEngines, AVersion3StoreLosesNothingAndWhatItHeldNamesNoRobot) {
+  {
+    KnowledgeStore store = open_or_die(StoreAccess::kReadWrite, kDefaultHousehold, "robot-1");
+    fill(store);
+    ASSERT_TRUE(store.save_class_rule(said_plastic_rule()));
+    ASSERT_TRUE(store.forget_class_rule(induced_fruit_rule()));
+  }
+  make_version_3_store();
+  {
+    KnowledgeStore reader = open_or_die(StoreAccess::kReadOnly);
+    auto loaded = reader.load(domain_);
+    ASSERT_TRUE(loaded.has_value()) << loaded.error().describe();
+    expect_filled(*loaded);
+    EXPECT_EQ(loaded->class_rules.all(), std::vector<ClassRule>{said_plastic_rule()});
+    EXPECT_EQ(loaded->forgotten_rules.all(), std::vector<ClassRule>{induced_fruit_rule()});
+  }
+  EXPECT_EQ(schema_version(), "3");
+  KnowledgeStore watcher = open_or_die(StoreAccess::kReadWrite, kDefaultHousehold, "watcher");
+  EXPECT_EQ(schema_version(), "4");
+  auto loaded = watcher.load(domain_);
+  ASSERT_TRUE(loaded.has_value()) << loaded.error().describe();
+  expect_filled(*loaded);
+  EXPECT_EQ(loaded->class_rules.all(), std::vector<ClassRule>{said_plastic_rule()});
+  EXPECT_EQ(loaded->forgotten_rules.all(), std::vector<ClassRule>{induced_fruit_rule()});
+  // Each old row names no robot; a goal saved again now names its robot.
+  auto robots = [&](const std::string& table) {
+    std::vector<std::string> out;
+    if (GetParam() == Engine::kSqlite) {
+      SQLite::Database db(path_.string(), SQLite::OPEN_READONLY);
+      SQLite::Statement rows(db, "SELECT robot FROM " + table + " ORDER BY id");
+      while (rows.executeStep()) out.push_back(rows.getColumn(0).getString());
+      return out;
+    }
+    PGconn* c = PQconnectdb(location_.c_str());
+    PGresult* r = PQexec(c, ("SELECT robot FROM " + table + " ORDER BY id").c_str());
+    for (int row = 0; PQresultStatus(r) == PGRES_TUPLES_OK && row < PQntuples(r); ++row)
+      out.emplace_back(PQgetvalue(r, row, 0));
+    PQclear(r);
+    PQfinish(c);
+    return out;
+  };
+  EXPECT_EQ(robots("goals"), (std::vector<std::string>{"", ""}));
+  EXPECT_EQ(robots("rules"), std::vector<std::string>(rules().size(), ""));
+  {
+    KnowledgeStore robot2 = open_or_die(StoreAccess::kReadWrite, kDefaultHousehold, "Robot 2");
+    ASSERT_TRUE(robot2.save_goal(plate_goal()));
+  }
+  EXPECT_EQ(robots("goals"), (std::vector<std::string>{"", "Robot 2"}));
+  StoreNews got;
+  for (int tries = 0; tries < 1000 && got.goals.empty(); ++tries) {
+    auto more = watcher.news(domain_);
+    ASSERT_TRUE(more) << more.error().describe();
+    got = std::move(*more);
+    if (got.goals.empty()) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  ASSERT_EQ(got.goals.size(), 1u);
+  EXPECT_EQ(got.goals[0], plate_goal());
+  EXPECT_EQ(got.goal_robots, std::vector<std::string>{"Robot 2"});
+}
+
+TEST_P(StoreEngines, ARobotNameThatCannotBeOneIsRefusedInOneSentence) {
+  for (const std::string& bad :
+       {std::string(" robot"), std::string("robot\n2"), std::string(65, 'r'), std::string("r;DROP TABLE goals")}) {
+    auto opened = KnowledgeStore::open(location_, StoreAccess::kReadWrite, kDefaultHousehold, bad);
+    ASSERT_FALSE(opened.has_value()) << bad;
+    EXPECT_EQ(opened.error().code, ErrorCode::kInvalidInput);
+    EXPECT_THAT(opened.error().message, HasSubstr("cannot name a robot"));
+    EXPECT_THAT(opened.error().message, Not(HasSubstr("\n")));
+  }
+  // No name: the host's (or "robot"), never empty.
+  KnowledgeStore store = open_or_die();
+  EXPECT_EQ(store.robot(), default_robot_name());
+  EXPECT_FALSE(store.robot().empty());
+  EXPECT_TRUE(check_robot_name(store.robot()));
+}
+
 // Live: what another connection saves is news to a running store; its own
 // saves and other households' goals are not.
 TEST_P(StoreEngines, NewsIsWhatAnotherRobotSavedSinceTheStoreWasOpenedOrLastAsked) {
@@ -655,7 +743,7 @@ TEST_P(StoreEngines, NewsIsWhatAnotherRobotSavedSinceTheStoreWasOpenedOrLastAske
   EXPECT_TRUE(news->empty());
   const std::vector<Rule> taught = rules();
   {
-    KnowledgeStore robot2 = open_or_die(StoreAccess::kReadWrite, "smiths");
+    KnowledgeStore robot2 = open_or_die(StoreAccess::kReadWrite, "smiths", "robot-2");
     KnowledgeStore elsewhere = open_or_die(StoreAccess::kReadWrite, "joneses");
     ASSERT_TRUE(robot2.save_goal(plate_goal()));
     ASSERT_TRUE(elsewhere.save_goal(paper_plate_goal()));
@@ -668,11 +756,13 @@ TEST_P(StoreEngines, NewsIsWhatAnotherRobotSavedSinceTheStoreWasOpenedOrLastAske
     auto more = watcher.news(domain_);
     ASSERT_TRUE(more) << more.error().describe();
     for (GoalKnowledge& g : more->goals) got.goals.push_back(std::move(g));
+    for (std::string& r : more->goal_robots) got.goal_robots.push_back(std::move(r));
     for (Rule& r : more->rules) got.rules.push_back(std::move(r));
     if (got.goals.size() + got.rules.size() < 2) std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
   ASSERT_EQ(got.goals.size(), 1u);
   EXPECT_EQ(got.goals[0], plate_goal());  // the joneses' paper plate is not the smiths' news
+  EXPECT_EQ(got.goal_robots, std::vector<std::string>{"robot-2"});  // who learned it
   ASSERT_EQ(got.rules.size(), 1u);        // a rule is the fleet's, whoever taught it
   EXPECT_EQ(got.rules[0], taught[0]);
   // Told once; and what the watcher saves itself is not news to it.

@@ -456,6 +456,16 @@ TEST_F(StoreCli, AHouseholdThatCannotBeNamedExitsTwoInOneLine) {
   EXPECT_THAT(copy.err, HasSubstr("copies every household"));
 }
 
+TEST_F(StoreCli, ARobotThatCannotBeNamedExitsTwoInOneLine) {
+  const std::string scenario = scenario_path("tidy-kitchen").string();
+  for (const std::string& robot : {std::string("robot;1"), std::string(" robot"), std::string(65, 'r')}) {
+    Invocation r = run_cli(dir_.path(), {"teach", "--scenario", scenario, "--knowledge", path_.string(), "--robot", robot});
+    EXPECT_EQ(r.exit_code, 2) << robot << ": " << r.out << r.err;
+    EXPECT_THAT(r.err, HasSubstr("cannot name a robot")) << robot;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
+}
+
 TEST_F(StoreCli, RefusedStoreExitsTwoNamingBothVersions) {
   set_schema_version(path_, "999");
   for (const std::vector<std::string>& args :
