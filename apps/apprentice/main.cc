@@ -15,6 +15,8 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <optional>
+#include <utility>
 #include <string_view>
 #include <vector>
 
@@ -248,158 +250,189 @@ class WorldArguments {
   std::map<const CLI::App*, Argument> worlds_;
 };
 
-int run(int argc, char** argv) {
-  CLI::App app{"apprentice: an agent that learns new tasks online, in one shot, from an instructor, "
-               "its own search, an LLM and WordNet"};
-  app.name("apprentice");
-  app.require_subcommand(1);
-  app.set_version_flag("--version", "apprentice 0.1.0");
-  // -v and -q are the program's, accepted before or after the subcommand
-  // (fallthrough), as in `apprentice run -v ...`.
-  app.fallthrough();
-  bool verbose = false, quiet = false;
-  app.add_flag("-v,--verbose", verbose, "Log what the agent does to stderr")->each([](const std::string&) {
-    spdlog::set_level(spdlog::level::info);
-  });
-  app.add_flag("-q,--quiet", quiet, "Log only errors")->each([](const std::string&) {
-    spdlog::set_level(spdlog::level::err);
-  });
-
-  // Each subcommand's action; the options it requires are checked first
+// What the command line is read into: each command's options, where CLI11
+// stores them, and what the command that ran returned. CLI11 keeps pointers
+// into it, so it lives as long as the parse.
+struct CommandLine {
+  std::string program;  // argv[0], for the commands that start themselves again
+  CommandResult result = Outcome::kSuccess;
+  bool verbose = false, quiet = false;  // -v and -q (they set the log level as they are read)
+  // The options each command requires, checked once its line is parsed
   // (see defer_requirements).
   std::map<const CLI::App*, std::vector<CLI::Option*>> required;
   WorldArguments worlds;
-  auto on_run = [&required, &worlds](CLI::App* command, std::function<void()> action) {
-    command->callback([&required, &worlds, command, action = std::move(action)] {
+
+  WorldOptions world;
+  PlanOptions plan;
+  ExportPddlOptions export_pddl;
+  InterpretOptions interpret;
+  struct {
+    std::string sentence, object, subtask, corpus, asked, recent;
+  } interpret_given;  // optional in InterpretOptions when given
+  ExperimentOptions experiment;
+  TeachOptions teach;
+  RunOptions run;
+  KnowledgeOptions knowledge;
+  serve::ServeOptions serve;
+  struct {
+    std::vector<std::string> scenarios, knowledge;
+    std::string log_dir;
+    int idle_seconds = 0;
+  } serve_given;
+  ServeAgentFlags serve_agent;
+  BenchmarkCommandOptions bench;
+
+  // `action` runs when `command` is the one given, after its world is taken
+  // and its required options are checked.
+  void on_run(CLI::App* command, std::function<void()> action) {
+    command->callback([this, command, action = std::move(action)] {
       worlds.take(command);
       for (const CLI::Option* option : required[command])
         if (option->count() == 0) throw CLI::RequiredError(option->get_name());
       action();
     });
-  };
+  }
+};
 
-  CommandResult result = Outcome::kSuccess;
+// -v and -q are the program's, accepted before or after the subcommand
+// (fallthrough), as in `apprentice run -v ...`.
+void add_program_flags(CLI::App& app, CommandLine& c) {
+  app.name("apprentice");
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "apprentice 0.1.0");
+  app.fallthrough();
+  app.add_flag("-v,--verbose", c.verbose, "Log what the agent does to stderr")->each([](const std::string&) {
+    spdlog::set_level(spdlog::level::info);
+  });
+  app.add_flag("-q,--quiet", c.quiet, "Log only errors")->each([](const std::string&) { spdlog::set_level(spdlog::level::err); });
+}
 
-  WorldOptions world;
+// world, plan and export-pddl: the world and the planner, no agent.
+void add_world_commands(CLI::App& app, CommandLine& c) {
   auto* world_cmd = app.add_subcommand("world", "Print the perceived world of a scenario (never its intent)");
-  worlds.add(world_cmd, world.scenario);
-  world_cmd->add_flag("--json", world.json, "Machine-readable output");
-  on_run(world_cmd, [&] { result = run_world(world, std::cout); });
+  c.worlds.add(world_cmd, c.world.scenario);
+  world_cmd->add_flag("--json", c.world.json, "Machine-readable output");
+  c.on_run(world_cmd, [&c] { c.result = run_world(c.world, std::cout); });
 
-  PlanOptions plan;
   auto* plan_cmd = app.add_subcommand(
       "plan", "Plan from a scenario's state to a goal: greedy best-first search, or iterative deepening with --depth");
-  worlds.add(plan_cmd, plan.scenario);
-  plan_cmd->add_option("--goal", plan.goal,
+  c.worlds.add(plan_cmd, c.plan.scenario);
+  plan_cmd->add_option("--goal", c.plan.goal,
                        "Goal, e.g. '(and (in ketchup1 fridge1) (closed fridge1))', or 'intent' for the whole task")
       ->required();
-  plan_cmd->add_option("--depth", plan.depth, "Iterative deepening to this depth (a shortest plan)")
+  plan_cmd->add_option("--depth", c.plan.depth, "Iterative deepening to this depth (a shortest plan)")
       ->check(whole_number_in(0, 64));
-  plan_cmd->add_option("--node-limit,--max-nodes", plan.node_limit, "Stop after expanding this many nodes")
+  plan_cmd->add_option("--node-limit,--max-nodes", c.plan.node_limit, "Stop after expanding this many nodes")
       ->check(whole_number_in(1, std::numeric_limits<long>::max()));
-  plan_cmd->add_option("--time-limit", plan.time_limit_s, "Stop after this many seconds")
-      ->check(positive_number());
-  plan_cmd->add_flag("--no-pruning", plan.no_pruning, "Ground every object, not only those relevant to the goal");
-  plan_cmd->add_flag("--json", plan.json, "Machine-readable output");
-  on_run(plan_cmd, [&] {
-    plan.progress = isatty(fileno(stderr)) != 0;
-    result = run_plan(plan, std::cout, std::cerr);
+  plan_cmd->add_option("--time-limit", c.plan.time_limit_s, "Stop after this many seconds")->check(positive_number());
+  plan_cmd->add_flag("--no-pruning", c.plan.no_pruning, "Ground every object, not only those relevant to the goal");
+  plan_cmd->add_flag("--json", c.plan.json, "Machine-readable output");
+  c.on_run(plan_cmd, [&c] {
+    c.plan.progress = isatty(fileno(stderr)) != 0;
+    c.result = run_plan(c.plan, std::cout, std::cerr);
   });
 
-  ExportPddlOptions export_pddl;
   auto* export_cmd = app.add_subcommand("export-pddl", "Write the PDDL domain and a problem for a scenario and goal");
-  worlds.add(export_cmd, export_pddl.scenario);
-  export_cmd->add_option("--goal", export_pddl.goal, "Goal, as for plan ('intent' for the whole task)")->required();
-  export_cmd->add_option("--out", export_pddl.out_dir, "Directory to write domain.pddl and problem.pddl into")->required();
-  on_run(export_cmd, [&] { result = run_export_pddl(export_pddl, std::cout); });
+  c.worlds.add(export_cmd, c.export_pddl.scenario);
+  export_cmd->add_option("--goal", c.export_pddl.goal, "Goal, as for plan ('intent' for the whole task)")->required();
+  export_cmd->add_option("--out", c.export_pddl.out_dir, "Directory to write domain.pddl and problem.pddl into")->required();
+  c.on_run(export_cmd, [&c] { c.result = run_export_pddl(c.export_pddl, std::cout); });
+}
 
-  auto add_llm_flags = [](CLI::App* cmd, LlmFlags& flags) {
-    cmd->add_option("--llm", flags.spec, "LLM backend: " + llm::llm_spec_forms() + " (default: $APPRENTICE_LLM)");
-    cmd->add_option("--llm-model", flags.model, "Model name sent to the LLM server (default: $OPENAI_MODEL)");
-    cmd->add_option("--llm-api-key", flags.api_key, "API key for the LLM server (default: $OPENAI_API_KEY)");
-    cmd->add_option("--llm-timeout-ms", flags.timeout_ms,
-                    "Time allowed for one LLM request in all, connecting, the server's work and its answer; "
-                    "not retried when it runs out (default 30000)")
-        ->check(whole_number_in(1, std::numeric_limits<int>::max()));
-    cmd->add_option("--llm-connect-timeout-ms", flags.connect_timeout_ms,
-                    "Time allowed to connect to the LLM server, within --llm-timeout-ms (default 5000)")
-        ->check(whole_number_in(1, std::numeric_limits<int>::max()));
-    cmd->add_option("--llm-seed", flags.seed, "Seed sent to the LLM server with every request (servers that take one)")
-        ->check(whole_number_in(0, std::numeric_limits<int>::max()));
-    cmd->add_flag("--llm-optional", flags.optional,
-                  "Go on without the LLM when its server cannot be reached or fails (else exit 4)");
-    cmd->add_option("--goal-repair", flags.goal_repair,
-                    "LLM goal analysis and repair: all, none, steps (drop,close,check,choose,reprompt) or "
-                    "steps to leave out (-choose)")
-        ->capture_default_str();
-    cmd->add_option("--llm-goal-responses", flags.goal_responses,
-                    "Unique goal statements retrieved per LLM query (the paper's is 3)")
-        ->capture_default_str()
-        ->check(CLI::Range(1, 10));
-    cmd->add_flag("--offer-ungrounded", flags.offer_ungrounded,
-                  "Offer LLM goals and actions the agent cannot ground, as the paper did");
-  };
-  const std::string program = argc > 0 ? argv[0] : "apprentice";
+// The LLM's flags, the same on every command that may ask one.
+void add_llm_flags(CLI::App* cmd, LlmFlags& flags) {
+  cmd->add_option("--llm", flags.spec, "LLM backend: " + llm::llm_spec_forms() + " (default: $APPRENTICE_LLM)");
+  cmd->add_option("--llm-model", flags.model, "Model name sent to the LLM server (default: $OPENAI_MODEL)");
+  cmd->add_option("--llm-api-key", flags.api_key, "API key for the LLM server (default: $OPENAI_API_KEY)");
+  cmd->add_option("--llm-timeout-ms", flags.timeout_ms,
+                  "Time allowed for one LLM request in all, connecting, the server's work and its answer; "
+                  "not retried when it runs out (default 30000)")
+      ->check(whole_number_in(1, std::numeric_limits<int>::max()));
+  cmd->add_option("--llm-connect-timeout-ms", flags.connect_timeout_ms,
+                  "Time allowed to connect to the LLM server, within --llm-timeout-ms (default 5000)")
+      ->check(whole_number_in(1, std::numeric_limits<int>::max()));
+  cmd->add_option("--llm-seed", flags.seed, "Seed sent to the LLM server with every request (servers that take one)")
+      ->check(whole_number_in(0, std::numeric_limits<int>::max()));
+  cmd->add_flag("--llm-optional", flags.optional,
+                "Go on without the LLM when its server cannot be reached or fails (else exit 4)");
+  cmd->add_option("--goal-repair", flags.goal_repair,
+                  "LLM goal analysis and repair: all, none, steps (drop,close,check,choose,reprompt) or "
+                  "steps to leave out (-choose)")
+      ->capture_default_str();
+  cmd->add_option("--llm-goal-responses", flags.goal_responses,
+                  "Unique goal statements retrieved per LLM query (the paper's is 3)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 10));
+  cmd->add_flag("--offer-ungrounded", flags.offer_ungrounded,
+                "Offer LLM goals and actions the agent cannot ground, as the paper did");
+}
 
-  InterpretOptions interpret;
-  std::string interpret_sentence, interpret_object, interpret_subtask, interpret_corpus;
-  auto* interpret_cmd = app.add_subcommand(
+void add_interpret_command(CLI::App& app, CommandLine& c) {
+  auto& given = c.interpret_given;
+  auto* cmd = app.add_subcommand(
       "interpret", "Print a sentence's logical form and its grounding, or ground a corpus of LLM goal statements");
-  interpret_cmd->add_option("--scenario", interpret.scenario, "Scenario file (YAML)")->required();
-  interpret_cmd->add_option("--object", interpret_object, "The object of interest: an id (mug2) or a category");
-  interpret_cmd->add_option("--subtask", interpret_subtask, "The subtask (a category --object is taken at its place)");
-  interpret_cmd->add_option("--corpus", interpret_corpus, "A JSONL corpus of LLM goal statements to ground");
-  interpret_cmd->add_flag("--json", interpret.json, "Machine-readable output");
-  std::string interpret_asked, interpret_recent;
-  interpret_cmd->add_option("--asked", interpret_asked,
-                            "Read the sentence as a reply to a question: task, task-step, subtask-end, goal, action, "
-                            "yes-no or which");
-  interpret_cmd->add_option("--recent", interpret_recent, "With --asked: the place named last (an id)");
-  interpret_cmd->add_option("--choices", interpret.choices, "With --asked which: the ids offered")->delimiter(',')->allow_extra_args(false);
-  interpret_cmd->add_option("sentence", interpret_sentence, "The sentence to interpret");
-  on_run(interpret_cmd, [&] {
-    if (!interpret_asked.empty()) interpret.asked = interpret_asked;
-    if (!interpret_recent.empty()) interpret.recent = interpret_recent;
-    if (!interpret_sentence.empty()) interpret.sentence = interpret_sentence;
-    if (!interpret_object.empty()) interpret.object = interpret_object;
-    if (!interpret_subtask.empty()) interpret.subtask = interpret_subtask;
-    if (!interpret_corpus.empty()) interpret.corpus = interpret_corpus;
-    result = run_interpret(interpret, std::cout);
+  cmd->add_option("--scenario", c.interpret.scenario, "Scenario file (YAML)")->required();
+  cmd->add_option("--object", given.object, "The object of interest: an id (mug2) or a category");
+  cmd->add_option("--subtask", given.subtask, "The subtask (a category --object is taken at its place)");
+  cmd->add_option("--corpus", given.corpus, "A JSONL corpus of LLM goal statements to ground");
+  cmd->add_flag("--json", c.interpret.json, "Machine-readable output");
+  cmd->add_option("--asked", given.asked,
+                  "Read the sentence as a reply to a question: task, task-step, subtask-end, goal, action, "
+                  "yes-no or which");
+  cmd->add_option("--recent", given.recent, "With --asked: the place named last (an id)");
+  cmd->add_option("--choices", c.interpret.choices, "With --asked which: the ids offered")->delimiter(',')->allow_extra_args(false);
+  cmd->add_option("sentence", given.sentence, "The sentence to interpret");
+  c.on_run(cmd, [&c, &given] {
+    InterpretOptions& options = c.interpret;
+    using Given = std::pair<const std::string*, std::optional<std::string>*>;
+    for (const Given& g : {Given{&given.asked, &options.asked}, Given{&given.recent, &options.recent},
+                           Given{&given.sentence, &options.sentence}, Given{&given.object, &options.object},
+                           Given{&given.subtask, &options.subtask}, Given{&given.corpus, &options.corpus}})
+      if (!g.first->empty()) *g.second = *g.first;
+    c.result = run_interpret(options, std::cout);
   });
+}
 
-  ExperimentOptions experiment;
-  auto* experiment_cmd = app.add_subcommand(
-      "experiment", "Run the paper's conditions from empty knowledge with the simulated instructor");
-  worlds.add(experiment_cmd, experiment.scenario);
-  experiment_cmd->add_option("--conditions", experiment.conditions,
-                             "Comma-separated conditions, e.g. instruction,inst+search4 (default: all that can run)")
+// "instruction, inst+search4": spaces around the commas are not part of the names.
+std::vector<std::string> trimmed_names(const std::vector<std::string>& names) {
+  std::vector<std::string> out;
+  for (const std::string& name : names)
+    if (!trim(name).empty()) out.emplace_back(trim(name));
+  return out;
+}
+
+void add_experiment_command(CLI::App& app, CommandLine& c) {
+  ExperimentOptions& e = c.experiment;
+  auto* cmd = app.add_subcommand("experiment",
+                                 "Run the paper's conditions from empty knowledge with the simulated instructor");
+  c.worlds.add(cmd, e.scenario);
+  cmd->add_option("--conditions", e.conditions,
+                  "Comma-separated conditions, e.g. instruction,inst+search4 (default: all that can run)")
       ->delimiter(',');
-  experiment_cmd->add_flag("--json", experiment.json, "Print a JSON array with one object per condition");
-  experiment_cmd->add_option("--plot", experiment.plot, "Draw the results into FILE.svg or FILE.png (needs python3-matplotlib)");
-  experiment_cmd->add_flag("-q,--quiet", experiment.quiet, "No progress line on a terminal");
-  experiment_cmd->add_option("--transcript", experiment.transcript_dir, "Write each condition's dialogue to DIR/<condition>.txt");
-  experiment_cmd->add_option("--knowledge-out", experiment.knowledge_out, "Keep each condition's knowledge in DIR/<condition>.sqlite");
-  experiment_cmd->add_option("--knowledge-in", experiment.knowledge_in,
-                             "Start every condition from a copy of this knowledge store, an SQLite file or postgresql://... (never modified)");
-  experiment_cmd->add_option("--household", experiment.household, "The household whose goals and tasks --knowledge-in starts from and --knowledge-out keeps")
+  cmd->add_flag("--json", e.json, "Print a JSON array with one object per condition");
+  cmd->add_option("--plot", e.plot, "Draw the results into FILE.svg or FILE.png (needs python3-matplotlib)");
+  cmd->add_flag("-q,--quiet", e.quiet, "No progress line on a terminal");
+  cmd->add_option("--transcript", e.transcript_dir, "Write each condition's dialogue to DIR/<condition>.txt");
+  cmd->add_option("--knowledge-out", e.knowledge_out, "Keep each condition's knowledge in DIR/<condition>.sqlite");
+  cmd->add_option("--knowledge-in", e.knowledge_in,
+                  "Start every condition from a copy of this knowledge store, an SQLite file or postgresql://... (never modified)");
+  cmd->add_option("--household", e.household, "The household whose goals and tasks --knowledge-in starts from and --knowledge-out keeps")
       ->capture_default_str();
-  experiment_cmd->add_option("--generalization", experiment.generalization, "Rule generalization: full or paper")
-      ->capture_default_str();
-  experiment_cmd->add_flag("--no-rules", experiment.no_rules, "Do not use learned policy rules");
-  add_llm_flags(experiment_cmd, experiment.llm);
-  on_run(experiment_cmd, [&] {
-    // "instruction, inst+search4": spaces around the commas are not part of the names.
-    std::vector<std::string> conditions;
-    for (const std::string& c : experiment.conditions)
-      if (!trim(c).empty()) conditions.emplace_back(trim(c));
-    experiment.conditions = std::move(conditions);
-    check_llm_flag(experiment.llm);
-    result = run_experiment(experiment, program, std::cout);
+  cmd->add_option("--generalization", e.generalization, "Rule generalization: full or paper")->capture_default_str();
+  cmd->add_flag("--no-rules", e.no_rules, "Do not use learned policy rules");
+  add_llm_flags(cmd, e.llm);
+  c.on_run(cmd, [&c, &e] {
+    e.conditions = trimmed_names(e.conditions);
+    check_llm_flag(e.llm);
+    c.result = run_experiment(e, c.program, std::cout);
   });
+}
 
-  TeachOptions teach;
+// teach and run: a person teaches a task, and the agent performs it alone.
+void add_teach_and_run_commands(CLI::App& app, CommandLine& c) {
+  TeachOptions& teach = c.teach;
   auto* teach_cmd = app.add_subcommand("teach", "Teach the agent at the terminal: it asks, you answer");
-  worlds.add(teach_cmd, teach.scenario);
+  c.worlds.add(teach_cmd, teach.scenario);
   teach_cmd->add_option("--knowledge", teach.knowledge, "Knowledge store to load and extend: an SQLite file, or postgresql://USER@HOST:PORT/DB");
   teach_cmd->add_option("--household", teach.household, "The household whose goal preferences and task structures are read and written (default: default); rules are shared")->capture_default_str();
   teach_cmd->add_option("--robot", teach.robot, "This robot's name, kept with what it learns and told to the other robots sharing the store (default: the host name)");
@@ -409,110 +442,115 @@ int run(int argc, char** argv) {
       ->capture_default_str();
   teach_cmd->add_flag("-q,--quiet", teach.quiet, "Print only the agent's questions and the summary");
   add_llm_flags(teach_cmd, teach.llm);
-  on_run(teach_cmd, [&] {
+  c.on_run(teach_cmd, [&c, &teach] {
     check_llm_flag(teach.llm);
-    result = run_teach(teach, program, stdin, std::cout);
+    c.result = run_teach(teach, c.program, stdin, std::cout);
   });
 
-  RunOptions run_options;
+  RunOptions& run = c.run;
   auto* run_cmd = app.add_subcommand("run", "Perform a learned task with learned knowledge alone");
-  worlds.add(run_cmd, run_options.scenario);
-  run_cmd->add_option("--knowledge", run_options.knowledge, "Knowledge store: an SQLite file, or postgresql://USER@HOST:PORT/DB")->required();
-  run_cmd->add_option("--household", run_options.household, "The household whose goal preferences and task structures are read and written (default: default); rules are shared")->capture_default_str();
-  run_cmd->add_option("--task", run_options.task, "Task name (default: the only one learned)");
-  run_cmd->add_flag("--json", run_options.json, "Machine-readable output");
-  on_run(run_cmd, [&] { result = run_run(run_options, std::cout); });
+  c.worlds.add(run_cmd, run.scenario);
+  run_cmd->add_option("--knowledge", run.knowledge, "Knowledge store: an SQLite file, or postgresql://USER@HOST:PORT/DB")->required();
+  run_cmd->add_option("--household", run.household, "The household whose goal preferences and task structures are read and written (default: default); rules are shared")->capture_default_str();
+  run_cmd->add_option("--task", run.task, "Task name (default: the only one learned)");
+  run_cmd->add_flag("--json", run.json, "Machine-readable output");
+  c.on_run(run_cmd, [&c, &run] { c.result = run_run(run, std::cout); });
+}
 
-  KnowledgeOptions knowledge;
-  auto* knowledge_cmd = app.add_subcommand("knowledge", "Print what was learned (tasks, goals, rules) in English, with where each came from");
-  knowledge_cmd->add_option("action", knowledge.action,
-                            "export: copy the store into --to STORE; import: copy --from STORE into it (SQLite or "
-                            "PostgreSQL, either way); forget WHAT: forget the rule about WHAT (\"fruit\", \"fruit on "
-                            "the coffee table\"), for good")
+void add_knowledge_command(CLI::App& app, CommandLine& c) {
+  KnowledgeOptions& k = c.knowledge;
+  auto* cmd = app.add_subcommand("knowledge", "Print what was learned (tasks, goals, rules) in English, with where each came from");
+  cmd->add_option("action", k.action,
+                  "export: copy the store into --to STORE; import: copy --from STORE into it (SQLite or "
+                  "PostgreSQL, either way); forget WHAT: forget the rule about WHAT (\"fruit\", \"fruit on "
+                  "the coffee table\"), for good")
       ->check(CLI::IsMember({"export", "import", "forget"}));
-  knowledge_cmd->add_option("what", knowledge.what, "With forget: what the rule is about, and where it sends things if "
-                                                    "several rules are about it");
-  knowledge_cmd->add_option("--knowledge", knowledge.knowledge, "Knowledge store: an SQLite file, or postgresql://USER@HOST:PORT/DB")->required();
-  knowledge_cmd->add_option("--household", knowledge.household,
-                            "The household whose goals and tasks to print (default: default); the rules are shared");
-  knowledge_cmd->add_option("--to", knowledge.to, "With export: the store to copy into (created if missing)");
-  knowledge_cmd->add_option("--from", knowledge.from, "With import: the store to copy from (only read)");
-  knowledge_cmd->add_option("--domain", knowledge.domain, "PDDL domain the rules use (default: the kitchen)");
-  knowledge_cmd->add_flag("--json", knowledge.json, "Machine-readable output");
-  knowledge_cmd->add_flag("--pddl", knowledge.pddl, "Goals and rules in PDDL terms instead of English");
-  on_run(knowledge_cmd, [&] { result = run_knowledge(knowledge, program, std::cout); });
+  cmd->add_option("what", k.what, "With forget: what the rule is about, and where it sends things if "
+                                  "several rules are about it");
+  cmd->add_option("--knowledge", k.knowledge, "Knowledge store: an SQLite file, or postgresql://USER@HOST:PORT/DB")->required();
+  cmd->add_option("--household", k.household,
+                  "The household whose goals and tasks to print (default: default); the rules are shared");
+  cmd->add_option("--to", k.to, "With export: the store to copy into (created if missing)");
+  cmd->add_option("--from", k.from, "With import: the store to copy from (only read)");
+  cmd->add_option("--domain", k.domain, "PDDL domain the rules use (default: the kitchen)");
+  cmd->add_flag("--json", k.json, "Machine-readable output");
+  cmd->add_flag("--pddl", k.pddl, "Goals and rules in PDDL terms instead of English");
+  c.on_run(cmd, [&c, &k] { c.result = run_knowledge(k, c.program, std::cout); });
+}
 
-  serve::ServeOptions serve_options;
-  std::vector<std::string> serve_scenarios, serve_knowledge;
-  std::string serve_log_dir;
-  int idle_seconds = static_cast<int>(serve_options.limits.idle.count());
-  auto* serve_cmd = app.add_subcommand("serve", "Teach the agent from a web page: serve it, and each session it starts");
-  serve_cmd->add_option("--scenario", serve_scenarios,
-                        "A world to offer besides data/scenarios (YAML; repeatable; the first is preselected)");
-  worlds.add_many(serve_cmd, serve_scenarios);
-  serve_cmd->add_option("--knowledge", serve_knowledge,
-                        "A knowledge store to offer, named on the page by its file or database name: an SQLite file "
-                        "(created if missing), or postgresql://USER@HOST:PORT/DB (repeatable)");
-  serve_cmd->add_option("--household", serve_options.household,
-                        "The household whose goals and tasks every session reads and writes; rules are shared")
+void add_serve_command(CLI::App& app, CommandLine& c) {
+  serve::ServeOptions& options = c.serve;
+  auto& given = c.serve_given;
+  given.idle_seconds = static_cast<int>(options.limits.idle.count());
+  auto* cmd = app.add_subcommand("serve", "Teach the agent from a web page: serve it, and each session it starts");
+  cmd->add_option("--scenario", given.scenarios,
+                  "A world to offer besides data/scenarios (YAML; repeatable; the first is preselected)");
+  c.worlds.add_many(cmd, given.scenarios);
+  cmd->add_option("--knowledge", given.knowledge,
+                  "A knowledge store to offer, named on the page by its file or database name: an SQLite file "
+                  "(created if missing), or postgresql://USER@HOST:PORT/DB (repeatable)");
+  cmd->add_option("--household", options.household,
+                  "The household whose goals and tasks every session reads and writes; rules are shared")
       ->capture_default_str();
-  serve_cmd->add_option("--robot", serve_options.agent.robot,
-                        "This robot's name, kept with what its sessions learn and told to the other robots sharing the "
-                        "store (default: the host name)");
-  serve_cmd->add_option("--host", serve_options.host, "Address to listen on (other than loopback: needs --token)")
+  cmd->add_option("--robot", options.agent.robot,
+                  "This robot's name, kept with what its sessions learn and told to the other robots sharing the "
+                  "store (default: the host name)");
+  cmd->add_option("--host", options.host, "Address to listen on (other than loopback: needs --token)")
       ->capture_default_str();
-  serve_cmd->add_option("--port", serve_options.port, "Port to listen on (0: any free port)")
+  cmd->add_option("--port", options.port, "Port to listen on (0: any free port)")
       ->capture_default_str()
       ->check(whole_number_in(0, 65535));
-  serve_cmd->add_option("--token", serve_options.token, "Secret every request must carry (16+ letters, digits, - or _)");
-  serve_cmd->add_option("--log-dir", serve_log_dir, "Keep each session's log as DIR/<session>.jsonl");
-  serve_cmd->add_option("--max-sessions", serve_options.limits.max_sessions, "Sessions teaching at once")
+  cmd->add_option("--token", options.token, "Secret every request must carry (16+ letters, digits, - or _)");
+  cmd->add_option("--log-dir", given.log_dir, "Keep each session's log as DIR/<session>.jsonl");
+  cmd->add_option("--max-sessions", options.limits.max_sessions, "Sessions teaching at once")
       ->capture_default_str()
       ->check(whole_number_in(1, 256));
-  serve_cmd->add_option("--idle-seconds", idle_seconds, "End a session whose question has waited this long with no request from its page")
+  cmd->add_option("--idle-seconds", given.idle_seconds, "End a session whose question has waited this long with no request from its page")
       ->capture_default_str()
       ->check(whole_number_in(1, 7 * 24 * 3600));
-  ServeAgentFlags serve_agent;
-  serve_cmd->add_option("--condition", serve_agent.condition, "Sources besides the person: inst, inst+search4, inst+llm, ...")
+  cmd->add_option("--condition", c.serve_agent.condition, "Sources besides the person: inst, inst+search4, inst+llm, ...")
       ->capture_default_str();
-  serve_cmd->add_option("--generalization", serve_agent.generalization, "Rule generalization: full or paper")
+  cmd->add_option("--generalization", c.serve_agent.generalization, "Rule generalization: full or paper")
       ->capture_default_str();
-  add_llm_flags(serve_cmd, serve_agent.llm);
-  on_run(serve_cmd, [&] {
-    check_llm_flag(serve_agent.llm);
-    serve_options.scenarios.assign(serve_scenarios.begin(), serve_scenarios.end());
-    serve_options.knowledge = serve_knowledge;
-    if (!serve_log_dir.empty()) serve_options.log_dir = serve_log_dir;
-    serve_options.limits.idle = std::chrono::seconds(idle_seconds);
-    result = run_serve(serve_options, serve_agent, std::cout);
+  add_llm_flags(cmd, c.serve_agent.llm);
+  c.on_run(cmd, [&c, &options, &given] {
+    check_llm_flag(c.serve_agent.llm);
+    options.scenarios.assign(given.scenarios.begin(), given.scenarios.end());
+    options.knowledge = given.knowledge;
+    if (!given.log_dir.empty()) options.log_dir = given.log_dir;
+    options.limits.idle = std::chrono::seconds(given.idle_seconds);
+    c.result = run_serve(options, c.serve_agent, std::cout);
   });
+}
 
-  BenchmarkCommandOptions bench;
-  auto* bench_cmd = app.add_subcommand(
+void add_benchmark_command(CLI::App& app, CommandLine& c) {
+  BenchmarkCommandOptions& bench = c.bench;
+  auto* cmd = app.add_subcommand(
       "benchmark", "Run an outside benchmark through the agent and print its published figures beside ours");
-  bench_cmd->add_option("name", bench.benchmark, "The benchmark: tidybot (Wu et al. 2023)")->required();
-  bench_cmd->add_option("--scenarios", bench.scenarios, "The benchmark's scenarios, in its own format (scenarios.yml)")
+  cmd->add_option("name", bench.benchmark, "The benchmark: tidybot (Wu et al. 2023)")->required();
+  cmd->add_option("--scenarios", bench.scenarios, "The benchmark's scenarios, in its own format (scenarios.yml)")
       ->required();
-  bench_cmd->add_option("--settings", bench.settings,
-                        "Comma-separated settings: a-alone, a-alone+llm, a-teacher, a-teacher+llm, b-alone, "
-                        "b-alone+llm, b-teacher (default: all that can run)")
+  cmd->add_option("--settings", bench.settings,
+                  "Comma-separated settings: a-alone, a-alone+llm, a-teacher, a-teacher+llm, b-alone, "
+                  "b-alone+llm, b-teacher (default: all that can run)")
       ->delimiter(',');
-  bench_cmd->add_option("--only", bench.only, "Run only the scenarios with these benchmark indexes (comma-separated)")
+  cmd->add_option("--only", bench.only, "Run only the scenarios with these benchmark indexes (comma-separated)")
       ->delimiter(',')
       ->check(whole_number_in(1, std::numeric_limits<int>::max()));
-  bench_cmd->add_option("--transcript", bench.transcript_dir, "Write each dialogue to DIR/<setting>/<index>.txt");
-  bench_cmd->add_flag("--json", bench.json, "Right, wrong and left counts and questions per setting, tag and scenario");
-  add_llm_flags(bench_cmd, bench.llm);
-  on_run(bench_cmd, [&] {
-    std::vector<std::string> settings;
-    for (const std::string& s : bench.settings)
-      if (!trim(s).empty()) settings.emplace_back(trim(s));
-    bench.settings = std::move(settings);
+  cmd->add_option("--transcript", bench.transcript_dir, "Write each dialogue to DIR/<setting>/<index>.txt");
+  cmd->add_flag("--json", bench.json, "Right, wrong and left counts and questions per setting, tag and scenario");
+  add_llm_flags(cmd, bench.llm);
+  c.on_run(cmd, [&c, &bench] {
+    bench.settings = trimmed_names(bench.settings);
     check_llm_flag(bench.llm);
-    result = run_benchmark(bench, std::cout);
+    c.result = run_benchmark(bench, std::cout);
   });
+}
 
-  required = defer_requirements(app);
+// Reads the command line and runs the command it names: `help`, a word that
+// is no command, and a line CLI11 refuses are answered before anything runs.
+int parse_and_run(CLI::App& app, CommandLine& c, int argc, char** argv) {
+  c.required = defer_requirements(app);
   if (auto word = first_word(argc, argv)) {
     if (*word == "help") return help(app, argc, argv);
     const std::vector<std::string> names = command_names(app);
@@ -524,7 +562,23 @@ int run(int argc, char** argv) {
     if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
     return parse_failure(app, e, argc, argv);
   }
-  return finish(result);
+  return finish(c.result);
+}
+
+int run(int argc, char** argv) {
+  CLI::App app{"apprentice: an agent that learns new tasks online, in one shot, from an instructor, "
+               "its own search, an LLM and WordNet"};
+  CommandLine c;
+  c.program = argc > 0 ? argv[0] : "apprentice";
+  add_program_flags(app, c);
+  add_world_commands(app, c);
+  add_interpret_command(app, c);
+  add_experiment_command(app, c);
+  add_teach_and_run_commands(app, c);
+  add_knowledge_command(app, c);
+  add_serve_command(app, c);
+  add_benchmark_command(app, c);
+  return parse_and_run(app, c, argc, argv);
 }
 
 }  // namespace

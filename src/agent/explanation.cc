@@ -1,6 +1,8 @@
 #include "agent/explanation.h"
 
 #include <algorithm>
+#include <optional>
+#include <string_view>
 
 #include "language/generation.h"
 #include "language/narration.h"
@@ -78,10 +80,9 @@ std::string pattern_words(const Domain& domain, const LiteralPattern& literal, c
   return fact_words(domain.predicates.at(literal.atom.predicate).name, literal.positive, args);
 }
 
-std::string action_words(const Domain& domain, const Rule& rule, const std::vector<std::string>& names) {
-  const std::string& schema = domain.actions.at(rule.action).name;
-  std::vector<std::string> args;
-  for (VariableId v : rule.action_args) args.push_back(names.at(v));
+// An action in words, its arguments already spoken: "open the fridge",
+// "take the object out of the receptacle".
+std::string action_phrase(const std::string& schema, const std::vector<std::string>& args) {
   auto arg = [&](std::size_t i) { return i < args.size() ? args[i] : std::string("it"); };
   if (schema == "open") return "open " + arg(0);
   if (schema == "close") return "close " + arg(0);
@@ -90,6 +91,85 @@ std::string action_words(const Domain& domain, const Rule& rule, const std::vect
   if (schema == "put-in") return "put " + arg(0) + " in " + arg(1);
   if (schema == "put-on") return "put " + arg(0) + " on " + arg(1);
   return spoken_category(schema) + (args.empty() ? "" : " " + language::list_phrase(args));
+}
+
+std::string action_words(const Domain& domain, const Rule& rule, const std::vector<std::string>& names) {
+  std::vector<std::string> args;
+  for (VariableId v : rule.action_args) args.push_back(names.at(v));
+  return action_phrase(domain.actions.at(rule.action).name, args);
+}
+
+// An object's name as a person says it: "diaper-pail1" is "the diaper
+// pail" (the number only tells look-alikes apart in files).
+std::string spoken_object(std::string_view name) {
+  while (!name.empty() && name.back() >= '0' && name.back() <= '9') name.remove_suffix(1);
+  while (!name.empty() && name.back() == '-') name.remove_suffix(1);
+  return "the " + spoken_category(name);
+}
+
+// A grounded action as the learner logs it, "(close diaper-pail1)", in
+// words: "close the diaper pail". Text that is no such action is kept.
+std::string spoken_action(std::string_view text) {
+  std::string_view body = trim(text);
+  if (body.size() < 2 || body.front() != '(' || body.back() != ')') return std::string(text);
+  std::vector<std::string> words = split_words(body.substr(1, body.size() - 2));
+  if (words.empty()) return std::string(text);
+  std::vector<std::string> args;
+  for (std::size_t i = 1; i < words.size(); ++i) args.push_back(spoken_object(words[i]));
+  return action_phrase(words.front(), args);
+}
+
+// "ceramic-plate1 (ceramic-plate)", as learning records the object, is "the
+// ceramic plate" ("the crackers": a kind, as people name it).
+std::string spoken_learned_on(const std::string& object) {
+  const auto open = object.rfind(" (");
+  if (open != std::string::npos && object.ends_with(")")) {
+    std::string category = object.substr(open + 2, object.size() - open - 3);
+    return "the " + spoken_category(category);
+  }
+  return spoken_object(object);
+}
+
+// The doors in a reason, "in the fridge (closed fridge)", in words: "in the
+// fridge, with the fridge closed" ("(not (closed fridge))": open).
+std::string spoken_doors(std::string text) {
+  struct Door {
+    std::string_view atom, state;
+  };
+  for (const Door& door : {Door{"(not (closed ", " open"}, Door{"(closed ", " closed"}}) {
+    const std::string_view atom = door.atom, state = door.state;
+    for (auto at = text.find(atom); at != std::string::npos; at = text.find(atom, at)) {
+      const auto end = text.find(')', at);
+      if (end == std::string::npos) break;
+      std::string place = text.substr(at + atom.size(), end - at - atom.size());
+      const std::size_t stop = atom.starts_with("(not") && end + 1 < text.size() && text[end + 1] == ')' ? end + 2 : end + 1;
+      const std::string words = "with the " + spoken_category(place) + std::string(state);
+      const std::size_t start = at > 0 && text[at - 1] == ' ' ? at - 1 : at;
+      const std::string replacement = (start < at ? ", " : "") + words;
+      text.replace(start, stop - start, replacement);
+      at = start + replacement.size();
+    }
+  }
+  return text;
+}
+
+// Where a piece of knowledge came from, as stored ("search: (open
+// fridge1)"), in words ("my own search, which chose to open the fridge").
+std::string spoken_source(const std::string& source) {
+  auto after = [&](std::string_view prefix) -> std::optional<std::string> {
+    if (!source.starts_with(prefix)) return std::nullopt;
+    return source.substr(prefix.size());
+  };
+  if (auto said = after("instructor: ")) return "the instructor, who said " + *said;
+  if (auto action = after("search: ")) return "my own search, which chose to " + spoken_action(*action);
+  if (source == "search") return "my own search";
+  if (auto action = after("rule: ")) return "a rule I had learned, which chose to " + spoken_action(*action);
+  if (auto said = after("llm: ")) return "the language model, which said " + *said;
+  if (auto said = after("corpus: ")) return "recorded language-model answers, which said " + *said;
+  if (auto like = after("analogy: ")) return "analogy, " + *like;
+  if (auto why = after("decision: ")) return "weighing what I knew: " + spoken_doors(spoken_source(*why));
+  if (auto why = after("fleet: ")) return "other households: " + spoken_doors(*why);
+  return source;
 }
 
 std::string subtask_phrase(const LearnedSubtask& s) {
@@ -154,11 +234,7 @@ std::string explain_rule(const Domain& domain, const Rule& rule) {
 }
 
 std::string explain_provenance(const Provenance& provenance) {
-  std::string source = provenance.source;
-  if (source.rfind("instructor: ", 0) == 0) source = "the instructor: " + source.substr(12);
-  else if (source.rfind("llm: ", 0) == 0) source = "the language model: " + source.substr(5);
-  else if (source.rfind("corpus: ", 0) == 0) source = "recorded language-model answers: " + source.substr(8);
-  return "learned on " + provenance.object + " from " + source;
+  return "learned on " + spoken_learned_on(provenance.object) + " from " + spoken_source(provenance.source);
 }
 
 }  // namespace apprentice

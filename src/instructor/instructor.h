@@ -23,8 +23,8 @@ enum class QuestionKind {
                    // without one, about the subtask: "Is there more to clear on the table,
                    // or is that all?"
   kNextAction,     // "What should I do next so that ...?" (towards `goal`)
-  kConfirmGoal,    // "[LM] For a ceramic-plate on the table is the goal that ...?"
-  kConfirmAction,  // "[LM] For the ceramic-plate should I 'Pick up ceramic-plate'?"
+  kConfirmGoal,    // "[LM] For a ceramic plate on the table, is the goal that ...?"
+  kConfirmAction,  // "[LM] For the ceramic plate, should I 'Pick up ceramic plate'?"
   kWhich,          // "Which drawer: the top drawer or the bottom drawer?" (one of `choices`)
 };
 

@@ -50,10 +50,15 @@ std::string describe_literals(const World& world, const Goal& goal, std::optiona
 
 std::string category_of(const World& world, ObjectId object) { return world.universe->info(object).category; }
 
-std::string for_object(const World& world, ObjectId object) {
-  std::string category = category_of(world, object);
-  std::string where = location_phrase(world, object);
-  return std::string(article_for(category)) + " " + category + (where.empty() ? "" : " " + where);
+// `text` with the object's kind as a person says it, "ceramic plate", where
+// it has the world's name for it, "ceramic-plate" (the LLM's words echo it).
+std::string with_spoken_kind(const World& world, ObjectId object, std::string_view text) {
+  const std::string category = category_of(world, object), spoken = spoken_category(category);
+  std::string out(text);
+  if (spoken == category) return out;
+  for (auto at = out.find(category); at != std::string::npos; at = out.find(category, at + spoken.size()))
+    out.replace(at, category.size(), spoken);
+  return out;
 }
 
 }  // namespace
@@ -250,8 +255,11 @@ std::string say_goal_question(const World& world, ObjectId object, std::string_v
   std::string_view statement = bare(goal_statement);
   constexpr std::string_view kPrefix = "the goal is that ";
   if (starts_with_ignoring_case(statement, kPrefix)) statement.remove_prefix(kPrefix.size());
-  return std::string(from_language_model ? "[LM] " : "") + "For " + for_object(world, object) +
-         " is the goal that " + std::string(trim(statement)) + "?";
+  const std::string spoken = spoken_category(category_of(world, object));
+  const std::string goal = with_spoken_kind(world, object, trim(statement));
+  const std::string where = location_phrase(world, object);
+  return std::string(from_language_model ? "[LM] " : "") + "For " + std::string(article_for(spoken)) + " " + spoken +
+         (where.empty() ? "" : " " + where) + ", is the goal that " + goal + "?";
 }
 
 std::string say_goal_question(const World& world, ObjectId object, const Goal& goal, bool from_language_model) {
@@ -260,8 +268,8 @@ std::string say_goal_question(const World& world, ObjectId object, const Goal& g
 
 std::string say_action_question(const World& world, ObjectId object, std::string_view action_text,
                                 bool from_language_model) {
-  return std::string(from_language_model ? "[LM] " : "") + "For the " + category_of(world, object) +
-         " should I '" + std::string(bare(action_text)) + "'?";
+  return std::string(from_language_model ? "[LM] " : "") + "For the " + spoken_category(category_of(world, object)) +
+         ", should I '" + with_spoken_kind(world, object, bare(action_text)) + "'?";
 }
 
 }  // namespace apprentice::language

@@ -88,16 +88,17 @@ std::string describe_plan(const World& world, std::span<const Action> actions);
 std::string say_next_goal_request(std::string_view subtask_verb);
 // "What do I do next for clear?"
 std::string say_next_action_request(std::string_view subtask_verb);
-// "[LM] For a ceramic-plate on the table is the goal that the ceramic-plate
-// is in the cupboard and the cupboard is closed?" — `goal_statement` is the
-// LLM's text ("the goal is that ..." or just what follows "that"); the tag
-// marks words that came from the language model.
+// "[LM] For a ceramic plate on the table, is the goal that the ceramic
+// plate is in the cupboard and the cupboard is closed?" — `goal_statement`
+// is the LLM's text ("the goal is that ..." or just what follows "that"),
+// with the kind as a person says it ("ceramic-plate" in it becomes
+// "ceramic plate"); the tag marks words that came from the language model.
 std::string say_goal_question(const World& world, ObjectId object, std::string_view goal_statement,
                               bool from_language_model = true);
 // The same for a goal the agent holds: "... is the goal that <describe_goal>?"
 std::string say_goal_question(const World& world, ObjectId object, const Goal& goal,
                               bool from_language_model);
-// "[LM] For the ceramic-plate should I 'Pick up ceramic-plate'?"
+// "[LM] For the ceramic plate, should I 'Pick up ceramic plate'?"
 std::string say_action_question(const World& world, ObjectId object, std::string_view action_text,
                                 bool from_language_model = true);
 

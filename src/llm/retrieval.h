@@ -109,7 +109,7 @@ class Confirmer {
  public:
   virtual ~Confirmer() = default;
   // Puts one candidate to the instructor as a yes/no question (the agent
-  // words it, e.g. "[LM] For a ceramic-plate on the table is the goal is that
+  // words it, e.g. "[LM] For a ceramic plate on the table, is the goal that
   // ...?", tagging corpus answers as such). Returns true for yes. An Error
   // (e.g. kCancelled at end of input) aborts finalize_choice.
   virtual Result<bool> confirm(QueryKind kind, const Candidate& candidate) = 0;

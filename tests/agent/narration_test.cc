@@ -237,7 +237,29 @@ TEST(Explanation, KnowledgeReadsAsEnglish) {
   EXPECT_EQ(explain_goal(goal),
             "When I clear the table (to tidy the kitchen), the ceramic plate goes in the dishwasher, and the dishwasher "
             "ends closed.");
-  EXPECT_EQ(explain_provenance(goal.provenance), "learned on ceramic-plate1 (ceramic-plate) from the instructor: \"...\"");
+  EXPECT_EQ(explain_provenance(goal.provenance), "learned on the ceramic plate from the instructor, who said \"...\"");
+}
+
+// Where a rule or goal came from, as the store keeps it ("search: (close
+// diaper-pail1)"), reads as English: no PDDL atom, no object id.
+TEST(Explanation, ProvenanceHasNoPddl) {
+  auto said = [](const std::string& object, const std::string& source) {
+    return explain_provenance(Provenance{object, source});
+  };
+  EXPECT_EQ(said("diaper-pail1 (diaper-pail)", "search: (close diaper-pail1)"),
+            "learned on the diaper pail from my own search, which chose to close the diaper pail");
+  EXPECT_EQ(said("ceramic-bowl1 (ceramic-bowl)", "search: (pick-up-from ceramic-bowl1 dish-rack1)"),
+            "learned on the ceramic bowl from my own search, which chose to take the ceramic bowl out of the dish rack");
+  EXPECT_EQ(said("mug2 (mug)", "rule: (put-in mug2 cupboard1)"),
+            "learned on the mug from a rule I had learned, which chose to put the mug in the cupboard");
+  EXPECT_EQ(said("crackers1 (crackers)", "llm: \"Open pantry\""),
+            "learned on the crackers from the language model, which said \"Open pantry\"");
+  EXPECT_EQ(said("ketchup1 (ketchup)", "decision: fleet: 3 of 4 other households put it in the fridge (closed fridge)"),
+            "learned on the ketchup from weighing what I knew: other households: 3 of 4 other households put it in "
+            "the fridge, with the fridge closed");
+  EXPECT_EQ(said("mug1 (mug)", "decision: like the cup (not (closed cupboard))"),
+            "learned on the mug from weighing what I knew: like the cup, with the cupboard open");
+  EXPECT_EQ(said("mug1 (mug)", "analogy: like the cup"), "learned on the mug from analogy, like the cup");
 }
 
 // The party's sideboard has a top and a bottom drawer: the goal learned

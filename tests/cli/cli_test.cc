@@ -2,6 +2,7 @@
 // world, plan and export-pddl subcommands (0 ok, 1 goal not reached, 2 bad
 // input), run as a user would run them.
 #include <filesystem>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -21,6 +22,7 @@ namespace {
 
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
+using ::testing::Not;
 using ::testing::StartsWith;
 
 namespace fs = std::filesystem;
@@ -322,6 +324,30 @@ TEST_F(Cli, KnowledgeInPddlNamesTheLookAlikeAGoalNames) {
   EXPECT_THAT(pddl.out, HasSubstr("(in ?o [bottom drawer]) and (closed [bottom drawer])"));
   Invocation english = run({"knowledge", "--knowledge", store});
   EXPECT_THAT(english.out, HasSubstr("the remote control goes in the top drawer, and the top drawer ends closed."));
+}
+
+// `knowledge` speaks English: where each goal and rule came from names no
+// PDDL action ("(close dishwasher1)"), no variable and no object id; the
+// PDDL is for --pddl.
+TEST_F(Cli, KnowledgeInEnglishHasNoPddl) {
+  Invocation taught = run({"experiment", tidy_kitchen(), "--conditions", "inst+search4", "--knowledge-out",
+                           (dir_ / "out").string(), "-q"});
+  ASSERT_EQ(taught.exit_code, 0) << taught.err;
+  const std::string store = (dir_ / "out" / "inst+search4.sqlite").string();
+  Invocation english = run({"knowledge", "--knowledge", store});
+  ASSERT_EQ(english.exit_code, 0) << english.err;
+  EXPECT_THAT(english.out, HasSubstr("(learned on the ceramic plate from my own search, which chose to close the "
+                                     "dishwasher)"));
+  const std::regex pddl_atom(R"(\((open|close|pick-up|pick-up-from|put-in|put-on|in|on|closed) [^)]*\))");
+  const std::regex object_id(R"(\b[a-z]+(-[a-z]+)*[0-9]+\b)");
+  std::istringstream lines(english.out);
+  for (std::string line; std::getline(lines, line);) {
+    EXPECT_FALSE(std::regex_search(line, pddl_atom)) << line;
+    EXPECT_FALSE(std::regex_search(line, object_id)) << line;
+    EXPECT_THAT(line, Not(HasSubstr("?o")));
+  }
+  Invocation pddl = run({"knowledge", "--knowledge", store, "--pddl"});
+  EXPECT_THAT(pddl.out, HasSubstr("from search: (close dishwasher1)"));
 }
 
 TEST_F(Cli, WorldShowsPropertiesAndLookAlikes) {

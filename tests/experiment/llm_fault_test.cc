@@ -202,7 +202,7 @@ TEST(LlmRateLimit, ARetryAfterA429GetsTheAnswerAndTheLlmIsUsed) {
   EXPECT_EQ(result.completion_rate, 100.0);
   EXPECT_THAT(result.transcript, ::testing::Not(HasSubstr(kCouldNotReach)));
   // The two goals the model knows were proposed and accepted.
-  EXPECT_THAT(result.transcript, HasSubstr("For a ketchup on the table is the goal that the ketchup is in the fridge "
+  EXPECT_THAT(result.transcript, HasSubstr("For a ketchup on the table, is the goal that the ketchup is in the fridge "
                                            "and the fridge is closed?\nInstructor: yes.\n"));
   EXPECT_GE(result.counts.yes, 2);
   EXPECT_EQ(server.requests(), 2 * result.llm_calls);

@@ -37,10 +37,10 @@ TEST(LlmGoals, TheInstructorHearsTheRepairedGoalInEnglish) {
   ConditionResult result = testing::run(scenario, "inst+search4+llm", experiment_options(factory("openai:" + server.url())));
   EXPECT_EQ(result.completion_rate, 100.0);
   // The bin has no lid: the closing is left out, and the rest is right.
-  EXPECT_THAT(result.transcript, HasSubstr("[LM] For a soda-can on the table is the goal that the soda-can is in the "
+  EXPECT_THAT(result.transcript, HasSubstr("[LM] For a soda can on the table, is the goal that the soda can is in the "
                                            "recycling bin?\nInstructor: yes.\n"));
   // The fridge has a door: "close what you opened" completes the goal.
-  EXPECT_THAT(result.transcript, HasSubstr("[LM] For a ketchup on the table is the goal that the ketchup is in the "
+  EXPECT_THAT(result.transcript, HasSubstr("[LM] For a ketchup on the table, is the goal that the ketchup is in the "
                                            "fridge and the fridge is closed?\nInstructor: yes.\n"));
   EXPECT_EQ(result.counts.yes, 2);
   EXPECT_EQ(result.counts.yes_no, 2);  // the fallback statements ground to nothing: never offered
@@ -54,9 +54,9 @@ TEST(LlmGoals, AfterANoTheModelIsAskedAgainWithTheRejectedAnswer) {
   ConditionResult result = testing::run(scenario, "inst+search4+llm", experiment_options(factory("openai:" + server.url())));
   EXPECT_EQ(result.completion_rate, 100.0);
   EXPECT_THAT(result.transcript,
-              HasSubstr("[LM] For a ketchup on the table is the goal that the ketchup is in the cupboard and the "
+              HasSubstr("[LM] For a ketchup on the table, is the goal that the ketchup is in the cupboard and the "
                         "cupboard is closed?\nInstructor: no.\n"
-                        "Agent: [LM] For a ketchup on the table is the goal that the ketchup is in the fridge and the "
+                        "Agent: [LM] For a ketchup on the table, is the goal that the ketchup is in the fridge and the "
                         "fridge is closed?\nInstructor: yes.\n"));
   bool reprompted = false;
   for (const std::string& prompt : server.goal_prompts())
@@ -98,7 +98,7 @@ TEST(LlmGoals, OfferingUngroundedResponsesAsThePaperDidCanBeMeasured) {
   paper.goal_responses = 3;
   ConditionResult offered = testing::run(scenario, "inst+search4+llm", paper);
   EXPECT_THAT(offered.transcript,
-              HasSubstr("[LM] For a ketchup on the table is the goal that the ketchup is on the moon?\nInstructor: no.\n"));
+              HasSubstr("[LM] For a ketchup on the table, is the goal that the ketchup is on the moon?\nInstructor: no.\n"));
   EXPECT_EQ(offered.counts.yes, 0);
   EXPECT_GT(offered.counts.yes_no, 0);
   EXPECT_EQ(offered.relevance, std::optional<double>(0.0));

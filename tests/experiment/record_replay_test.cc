@@ -112,7 +112,7 @@ TEST_P(RecordReplayEveryBackend, AReplayedCassetteReproducesEachConditionExactly
   // With no search the model's steps were put to the instructor too (until
   // the rules learned from them could act).
   EXPECT_THAT(recorded["inst+llm"].transcript,
-              HasSubstr("[LM] For the ceramic-plate should I 'Open dishwasher'?\nInstructor: yes.\n"));
+              HasSubstr("[LM] For the ceramic plate, should I 'Open dishwasher'?\nInstructor: yes.\n"));
   // With search to depth 4 no step was ever needed.
   EXPECT_THAT(recorded["inst+search4+llm"].transcript, ::testing::Not(HasSubstr("should I '")));
 }
@@ -171,7 +171,7 @@ TEST_F(RecordReplay, TheCliReplaysARecordedRunToTheSameTableAndTranscript) {
   EXPECT_EQ(a, b);
   EXPECT_GT(a[0]["llm_calls"].get<int>(), 0);
   const std::string transcript = testing::read_text(dir_ / "recorded" / "inst+search2+llm.txt");
-  EXPECT_THAT(transcript, HasSubstr("[LM] For a ketchup on the table is the goal that"));
+  EXPECT_THAT(transcript, HasSubstr("[LM] For a ketchup on the table, is the goal that"));
   EXPECT_EQ(testing::read_text(dir_ / "replayed" / "inst+search2+llm.txt"), transcript);
 }
 

@@ -94,10 +94,10 @@ TEST(Dialogue, AYesNoAnswerIsAnInstructionOfOneWordAndAYesNo) {
   ScriptedInstructor instructor({"yes.", "no.", "Yes"});
   Dialogue dialogue(instructor);
   World world;
-  ASSERT_TRUE(dialogue.ask(question(QuestionKind::kConfirmGoal, "[LM] For a ketchup on the table is the goal that "
+  ASSERT_TRUE(dialogue.ask(question(QuestionKind::kConfirmGoal, "[LM] For a ketchup on the table, is the goal that "
                                                                 "the ketchup is in the fridge?"), world));
   EXPECT_EQ(dialogue.counts(), (DialogueCounts{1, 1, 1, 1}));
-  ASSERT_TRUE(dialogue.ask(question(QuestionKind::kConfirmAction, "[LM] For the ketchup should I 'Open fridge'?"), world));
+  ASSERT_TRUE(dialogue.ask(question(QuestionKind::kConfirmAction, "[LM] For the ketchup, should I 'Open fridge'?"), world));
   EXPECT_EQ(dialogue.counts(), (DialogueCounts{2, 2, 2, 1}));
   ASSERT_TRUE(dialogue.ask(question(QuestionKind::kConfirmGoal, "Is it?"), world));
   EXPECT_EQ(dialogue.counts(), (DialogueCounts{3, 3, 3, 2}));
@@ -121,12 +121,12 @@ TEST(Dialogue, RepliesAreTrimmedAndTheTranscriptIsAsThePaperPrintsIt) {
   ASSERT_TRUE(reply.has_value());
   EXPECT_EQ(*reply, "Tidy kitchen.");
   dialogue.say("I cannot do that: the fridge is closed.");
-  ASSERT_TRUE(dialogue.ask(question(QuestionKind::kConfirmAction, "[LM] For the milk should I 'Pick up milk'?"), world));
+  ASSERT_TRUE(dialogue.ask(question(QuestionKind::kConfirmAction, "[LM] For the milk, should I 'Pick up milk'?"), world));
   EXPECT_EQ(dialogue.transcript_text(),
             "Agent: What task should I learn?\n"
             "Instructor: Tidy kitchen.\n"
             "Agent: I cannot do that: the fridge is closed.\n"
-            "Agent: [LM] For the milk should I 'Pick up milk'?\n"
+            "Agent: [LM] For the milk, should I 'Pick up milk'?\n"
             "Instructor: no.\n");
   ASSERT_EQ(dialogue.transcript().size(), 5u);
   EXPECT_EQ(dialogue.transcript()[1].speaker, "Instructor");

@@ -31,18 +31,18 @@ TEST(Generation, TheAgentsQuestions) {
   EXPECT_EQ(say_next_action_request("clear"), "What do I do next for clear?");
   EXPECT_EQ(say_goal_question(world35(), id("ceramic-plate1"),
                               "the goal is that the ceramic-plate is in the cupboard and the cupboard is closed"),
-            "[LM] For a ceramic-plate on the table is the goal that the ceramic-plate is in the cupboard and the "
+            "[LM] For a ceramic plate on the table, is the goal that the ceramic plate is in the cupboard and the "
             "cupboard is closed?");
   EXPECT_EQ(say_goal_question(world35(), id("glass-tumbler2"), goal("(and (in glass-tumbler2 cupboard1) (closed cupboard1))"),
                               false),
-            "For a glass-tumbler in the dish rack is the goal that the glass-tumbler is in the cupboard and the "
+            "For a glass tumbler in the dish rack, is the goal that the glass tumbler is in the cupboard and the "
             "cupboard is closed?");
   EXPECT_EQ(say_goal_question(world35(), id("apple-juice1"), "The goal is that the apple-juice is in the fridge."),
-            "[LM] For an apple-juice on the table is the goal that the apple-juice is in the fridge?");
+            "[LM] For an apple juice on the table, is the goal that the apple juice is in the fridge?");
   EXPECT_EQ(say_action_question(world35(), id("ceramic-plate1"), "Pick up ceramic-plate"),
-            "[LM] For the ceramic-plate should I 'Pick up ceramic-plate'?");
+            "[LM] For the ceramic plate, should I 'Pick up ceramic plate'?");
   EXPECT_EQ(say_action_question(world35(), id("ceramic-plate1"), "Open dishwasher.", false),
-            "For the ceramic-plate should I 'Open dishwasher'?");
+            "For the ceramic plate, should I 'Open dishwasher'?");
 }
 
 TEST(Generation, ActionsInTheInstructorsWords) {
