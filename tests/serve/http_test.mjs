@@ -330,7 +330,7 @@ test('--condition and --llm as for teach: the LLM\'s goal is offered as a yes/no
     const session = await client.start('tidy-kitchen');
     const asked = await session.teach(['tidy the kitchen', 'clear the table']);
     assert.equal(asked.kind, 'confirm-goal');
-    assert.match(asked.text, /ceramic-plate is in the dishwasher and the dishwasher is closed\?$/);
+    assert.match(asked.text, /For a ceramic plate on the table, is the goal that the ceramic plate is in the dishwasher and the dishwasher is closed\?$/);
     assert.deepEqual(asked.choices.map((c) => c.reply), ['yes', 'no']);
     assert.equal((await session.reply('yes', asked.seq)).status, 200);
     await session.question(asked.seq);
