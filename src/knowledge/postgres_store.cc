@@ -29,6 +29,11 @@ constexpr int kCreationLockClass = 0x61707073;
 // How long to wait after a lost connection before each new try: about 10 s
 // in all, longer than a PostgreSQL restart takes.
 constexpr int kReconnectDelaysMs[] = {100, 250, 500, 1000, 2000, 2000, 2000, 2000};
+// How long to wait before each new try of the store's lock, about 1.5 s in
+// all: a connection closed a moment ago (by this process or one that just
+// ended) keeps its lock until its server process has finished, which
+// PQfinish does not wait for.
+constexpr int kLockRetryDelaysMs[] = {20, 50, 100, 200, 400, 700};
 // How many times one call makes its connection again before it gives up.
 constexpr int kMostReconnects = 3;
 // The channel every save notifies, with a JSON array for payload: the
@@ -172,11 +177,16 @@ Status PostgresStore::take_session_lock() const {
   if (access_ == StoreAccess::kReadOnly)
     if (auto s = must("SET default_transaction_read_only = on"); !s) return s;
   const bool exclusive = access_ == StoreAccess::kFresh;
-  PgResult locked = run(std::string("SELECT ") + (exclusive ? "pg_try_advisory_lock" : "pg_try_advisory_lock_shared") +
-                        "($1::int, hashtext(coalesce(current_schema(), '')))",
-                        {std::to_string(kLockClass)});
-  if (!succeeded(locked.get())) return tl::unexpected(statement_error(where_, locked.get(), connection_.get(), secret_));
-  if (std::string(PQgetvalue(locked.get(), 0, 0)) == "t") return {};
+  const std::string try_lock = std::string("SELECT ") +
+                               (exclusive ? "pg_try_advisory_lock" : "pg_try_advisory_lock_shared") +
+                               "($1::int, hashtext(coalesce(current_schema(), '')))";
+  for (std::size_t attempt = 0;; ++attempt) {
+    PgResult locked = run(try_lock, {std::to_string(kLockClass)});
+    if (!succeeded(locked.get())) return tl::unexpected(statement_error(where_, locked.get(), connection_.get(), secret_));
+    if (std::string(PQgetvalue(locked.get(), 0, 0)) == "t") return {};
+    if (attempt == std::size(kLockRetryDelaysMs)) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(kLockRetryDelaysMs[attempt]));
+  }
   return make_error(ErrorCode::kIo,
                     where_ + ": the knowledge store is in use by another process" +
                         (exclusive ? "; an experiment starts a store over only when nobody else has it open. Wait for "
