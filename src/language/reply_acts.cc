@@ -311,7 +311,14 @@ ReplyActs read(const Grounder& grounder, const World& world, const ReplyContext&
 }  // namespace acts
 
 ReplyActs read_acts(const Grounder& grounder, const World& world, const ReplyContext& context, std::string_view text) {
-  return acts::read(grounder, world, context, text);
+  ReplyActs out = acts::read(grounder, world, context, text);
+  // A task or part named with another verb than the agent's says how it
+  // was taken ("I took \"clean up\" as tidying.").
+  for (const Reply& act : out.acts) {
+    if (const auto* task = std::get_if<TaskNamed>(&act); task && !task->note.empty()) out.notes.push_back(task->note);
+    if (const auto* part = std::get_if<SubtaskNamed>(&act); part && !part->note.empty()) out.notes.push_back(part->note);
+  }
+  return out;
 }
 
 }  // namespace apprentice::language
