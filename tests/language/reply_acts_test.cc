@@ -180,6 +180,15 @@ TEST_F(ReplyActsTest, AnotherVerbIsTakenAsTheNearestKnownOneAndSaidSo) {
   EXPECT_EQ(acts(step, "unpack the stuff on the counter"), "subtask unpack on counter1");
 }
 
+// "that's not where it goes" after an undo says what was wrong, not a
+// goal; "and tell me what's left" is the teacher's question.
+TEST_F(ReplyActsTest, WhatWasWrongIsNoGoalAndATellMeIsAQuestion) {
+  ReplyContext c = goal_question("comb1", "hairbrush1", "drawer1");
+  EXPECT_EQ(acts(c, "wait, go back one, that's not where the hairbrush goes"), "command undo");
+  EXPECT_EQ(acts(c, "in the cabinet and tell me what's left"), "goal (in comb1 cabinet1) | command whats-left");
+  EXPECT_EQ(acts(c, "tell me what's left"), "command whats-left");
+}
+
 TEST_F(ReplyActsTest, TheSameUndoSaidTwiceInOneReplyIsOneUndo) {
   ReplyContext c = goal_question("comb1", "hairbrush1", "drawer1");
   EXPECT_EQ(acts(c, "wait that's wrong, undo"), "command undo");
