@@ -91,6 +91,9 @@ struct ReplyContext {
 // first ("tidy kitchen").
 struct TaskNamed {
   std::string name;
+  // How a verb said was taken as a known one ("I took \"clean up\" as
+  // tidying."; language/known_verbs.h); empty when it was kept as said.
+  std::string note = {};
 };
 
 // "Clear an object that is on the table.", "First, clear the table.": a
@@ -100,6 +103,8 @@ struct SubtaskNamed {
   std::string verb;  // "clear"
   Relation relation = Relation::kOn;
   std::vector<ObjectId> places;  // never empty
+  // As TaskNamed::note: "I took \"pick up\" as clearing."
+  std::string note = {};
 };
 
 // "Repeat the following tasks while an object is on the table."

@@ -46,6 +46,17 @@ bool there_described(const Words& words) {
   return false;
 }
 
+// "not in the drawer", "that's not where it goes", "it is not the shelf":
+// a segment that only says what was wrong.
+bool says_what_was_wrong(const Words& said) {
+  Words words = without_interjections(said);
+  if (words.empty()) return false;
+  if (words.front() == "not") return true;
+  if (words.size() > 2 && is_one_of(words[0], {"that", "it", "this"}) && words[1] == "is" && words[2] == "not")
+    return true;
+  return has(words, {"not", "where"});
+}
+
 // A close action for `place`, grounded; nullopt when it cannot be closed.
 std::optional<Action> closing(const Grounder& grounder, const World& world, ObjectId place) {
   ActionCommand command;
@@ -231,10 +242,11 @@ ReplyActs read(const Grounder& grounder, const World& world, const ReplyContext&
   if (correcting && context.last_goal && context.asked == Asked::kGoal) {
     at.object = context.last_goal->object;
     at.recent_place = destination(world, GoalGiven{context.last_goal->goal});
-    // "not in the drawer" says what was wrong, not what is right.
+    // "not in the drawer", "that's not where the rake goes" say what was
+    // wrong, not what is right.
     std::vector<std::string> kept;
     for (const Segment& s : segments(answer_text))
-      if (s.words.empty() || s.words.front() != "not") kept.push_back(s.text);
+      if (!says_what_was_wrong(s.words)) kept.push_back(s.text);
     answer_text = join(kept, ", ");
     out.after_undo = answer_text;
   }
@@ -311,7 +323,14 @@ ReplyActs read(const Grounder& grounder, const World& world, const ReplyContext&
 }  // namespace acts
 
 ReplyActs read_acts(const Grounder& grounder, const World& world, const ReplyContext& context, std::string_view text) {
-  return acts::read(grounder, world, context, text);
+  ReplyActs out = acts::read(grounder, world, context, text);
+  // A task or part named with another verb than the agent's says how it
+  // was taken ("I took \"clean up\" as tidying.").
+  for (const Reply& act : out.acts) {
+    if (const auto* task = std::get_if<TaskNamed>(&act); task && !task->note.empty()) out.notes.push_back(task->note);
+    if (const auto* part = std::get_if<SubtaskNamed>(&act); part && !part->note.empty()) out.notes.push_back(part->note);
+  }
+  return out;
 }
 
 }  // namespace apprentice::language

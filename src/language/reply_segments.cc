@@ -44,6 +44,19 @@ std::vector<Segment> segments(std::string_view text) {
     else current.push_back(c);
   }
   flush();
+  // "leave the rake where it is and tell me what's left": a request to be
+  // told something is a segment of its own.
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    const Words& w = out[k].words;
+    for (std::size_t i = 1; i + 2 < w.size(); ++i)
+      if (w[i] == "and" && is_one_of(w[i + 1], {"tell", "show"}) && w[i + 2] == "me") {
+        Words first(w.begin(), w.begin() + static_cast<std::ptrdiff_t>(i));
+        Words second(w.begin() + static_cast<std::ptrdiff_t>(i + 1), w.end());
+        out[k] = {quoted_words(first), first};
+        out.insert(out.begin() + static_cast<std::ptrdiff_t>(k + 1), Segment{quoted_words(second), second});
+        break;
+      }
+  }
   return out;
 }
 
@@ -98,6 +111,13 @@ std::optional<Command> question(const Grounder& grounder, const World& world, co
   Words words = said;
   while (!words.empty() && (is_interjection(words.front()) || is_marker(words.front())) && words.front() != "what")
     words.erase(words.begin());
+  // "tell me what's left", "can you tell me where the soap is".
+  for (std::size_t i = 0; i + 2 < words.size() && i < 3; ++i)
+    if (is_one_of(words[i], {"tell", "show"}) && words[i + 1] == "me" &&
+        is_one_of(words[i + 2], {"what", "where", "why", "how"})) {
+      words.erase(words.begin(), words.begin() + static_cast<std::ptrdiff_t>(i + 2));
+      break;
+    }
   if (words.empty()) return std::nullopt;
   const std::string& first = words.front();
   if (first == "why") return Command{Command::Kind::kWhy, "", {}, {}};

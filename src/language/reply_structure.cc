@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "language/generation.h"
+#include "language/known_verbs.h"
 #include "language/narration.h"
 #include "language/reply_reading.h"
 #include "language/utterance.h"
@@ -86,9 +87,16 @@ bool names_location(const std::string& word, const ReplyInput& in) {
   return std::find(room.begin(), room.end(), word) != room.end();
 }
 
+// A task said by its verb's form after what it is done to: the verb's base
+// form and the other words.
+struct GerundTask {
+  std::string verb;
+  Words object;
+};
+
 // "the kitchen needs tidying", "kitchen tidying", "the kitchen needs to be
 // tidied": the verb's form after what it is done to.
-std::optional<TaskNamed> gerund_task(const Words& words, const ReplyInput& in) {
+std::optional<GerundTask> gerund_task(const Words& words, const ReplyInput& in) {
   for (std::size_t i = 1; i < words.size(); ++i) {
     const std::string& w = words[i];
     std::string base;
@@ -100,13 +108,13 @@ std::optional<TaskNamed> gerund_task(const Words& words, const ReplyInput& in) {
       base = in.vocabulary.any_verb(stem);
     }
     if (base.empty() || base == w || names_location(w, in)) continue;
-    std::string name = base;
+    GerundTask task{base, {}};
     for (std::size_t k = 0; k < words.size(); ++k) {
       const std::string& o = words[k];
       if (k == i || is_determiner(o) || is_copula(o) || is_auxiliary(o) || is_particle(o)) continue;
-      name += " " + o;
+      task.object.push_back(o);
     }
-    return TaskNamed{name};
+    return task;
   }
   return std::nullopt;
 }
@@ -297,15 +305,31 @@ class StructureReader {
     if (c.verb == "do" && !in_.context.taught_subtasks.empty()) return in_.context.taught_subtasks.back();
     return verb_name(c.verb, c.particle);
   }
+  // The part of the task a clause names over the places holding things.
   // A verb that only takes things from a place ("get everything off the
-  // bench", "take everything out of the baskets") or says nothing of what
-  // to do ("do the yellow bucket") names the part by the place: a surface
-  // is cleared, a receptacle emptied.
-  std::string subtask_verb(const Clause& c, const std::vector<ObjectId>& places) const {
-    std::string verb = subtask_verb(c);
-    if (places.empty() || !is_one_of(verb, {"get", "take", "grab", "do", "get out", "take out", "get off", "take off"}))
-      return verb;
-    return in_.world.universe->info(places.front()).kind == ObjectKind::kSurface ? "clear" : "empty";
+  // bench", "pick up all the stuff on the floor", "take everything out of
+  // the baskets") or says nothing of what to do ("do the yellow bucket")
+  // names the part by the place: a surface is cleared, a receptacle
+  // emptied. Another verb than the agent's step verbs ("unpack the bags")
+  // is the one WordNet puts closest, with a note for the read-back
+  // (known_verbs.h); else it is kept as said.
+  SubtaskNamed subtask(const Clause& c, const std::vector<ObjectId>& holding) const {
+    const ObjectKind kind = in_.world.universe->info(holding.front()).kind;
+    SubtaskNamed named{subtask_verb(c), relation(holding.front()), holding};
+    const bool takes = c.verb_class() == VerbClass::kPick;
+    if (takes || is_one_of(named.verb, {"do", "get out", "take out", "get off", "take off"})) {
+      std::string said = verb_name(c.verb, c.particle);
+      if (c.verb != "do" && !is_one_of(said, {"get", "take", "grab", "get out", "take out", "get off", "take off"}))
+        named.note = "I took " + apprentice::quoted(c.particle.empty() ? c.verb : c.verb + " " + c.particle) + " as " +
+                     ing_form(clearing_verb(kind)) + ".";
+      named.verb = clearing_verb(kind);
+    } else if (named.verb != "do" && c.verb != "do") {
+      if (auto taken = known_step_verb(in_.grounder.lexicon(), c.verb, c.particle, kind, in_.context.taught_subtasks)) {
+        named.verb = taken->verb;
+        named.note = taken->note;
+      }
+    }
+    return named;
   }
 
   // The places a phrase names: one, or every place of one kind ("the bags").
@@ -397,7 +421,7 @@ class StructureReader {
       if (!found || problem_ || ambiguous_) return std::nullopt;
       std::vector<ObjectId> holding = holding_items(found->objects);
       if (holding.empty()) return std::nullopt;
-      return SubtaskNamed{subtask_verb(c, holding), relation(holding.front()), holding};
+      return subtask(c, holding);
     }
     return std::nullopt;
   }
@@ -456,7 +480,7 @@ class StructureReader {
       item_named_ = true;  // a place where things go, not where they are
       return std::nullopt;
     }
-    return SubtaskNamed{subtask_verb(c, holding), relation(holding.front()), holding};
+    return subtask(c, holding);
   }
 
   const ReplyInput& in_;
@@ -465,6 +489,53 @@ class StructureReader {
   std::optional<Ambiguous> ambiguous_;
   bool item_named_ = false;
 };
+
+// The task named by its verb and what it is done to. The task's place is
+// the world's location: said ("clean up the bathroom after my shower",
+// "tidy the garden shed"), pointed at ("tidy up in here", "this room",
+// "it" for the room), said as another name for a room ("the lounge", "the
+// kids room"), or said as a time ("clean up after the party"); never a
+// filler or a word no one knows. What the task is done to is kept when it
+// is neither ("put the groceries away", "do the laundry"). A task over the
+// room said with another verb than the agent's ("clean up", "straighten")
+// is the agent's task verb WordNet puts closest (known_verbs.h), with a
+// note for the read-back. `up_first`: "up" said right after the verb.
+TaskNamed task_named(const ReplyInput& in, const std::string& verb, const std::string& particle, bool up, Words object,
+                     bool up_first) {
+  Words room = split_words(to_lower(in.world.location));
+  if (!room.empty()) {
+    // "after the party", "before I leave": a time, not what the task is done to.
+    auto time = std::find_if(object.begin(), object.end(), [](const std::string& w) {
+      return is_one_of(w, {"after", "before", "around", "for", "at", "when", "while", "until", "since"});
+    });
+    bool when = time == object.begin() && !object.empty();
+    object.erase(time, object.end());
+    auto at = std::search(object.begin(), object.end(), room.begin(), room.end());
+    const Lexicon& lexicon = in.grounder.lexicon();
+    auto roomlike = [&](const std::string& w) {
+      if (is_one_of(w, {"in", "here", "this", "room", "place", "it", "ugh", "um", "lol", "hmm", "oh", "so"})) return true;
+      if (lexicon.has_wordnet() && !lexicon.knows(w)) return true;
+      std::vector<std::string> one{w};
+      return !lexicon.kinds_under("room", one).empty();
+    };
+    bool pointed = object.empty() || std::any_of(object.begin(), object.end(), roomlike);
+    if (at != object.end() || pointed || when) object = room;
+  }
+  std::string name = verb_name(verb, particle);
+  if (particle == "off" || particle == "down" || particle == "over" || particle == "aside") name = verb + " " + particle;
+  // "clean up after the party": "up" stays before a preposition, whose
+  // object is the task's.
+  if (room.empty() && !object.empty() && is_one_of(object.front(), {"after", "before", "around"}) && up_first)
+    name = verb + " up";
+  std::string note;
+  if (!room.empty() && object == room)
+    if (auto taken = known_task_verb(in.grounder.lexicon(), verb, particle.empty() && up ? "up" : particle)) {
+      name = taken->verb;
+      note = taken->note;
+    }
+  for (const std::string& w : object) name += " " + w;
+  return TaskNamed{name, note};
+}
 
 }  // namespace
 
@@ -507,7 +578,7 @@ Reply read_task(const ReplyInput& in) {
   if (!words) {
     Words all;
     for (const Words& piece : said) all.insert(all.end(), piece.begin(), piece.end());
-    if (auto named = gerund_task(all, in)) return *named;
+    if (auto named = gerund_task(all, in)) return task_named(in, named->verb, "", false, std::move(named->object), false);
     return unusable(in, Problem{"I need the name of a task, said as what to do, such as \"" +
                                     example_replies(in.world, in.context).front() + "\".",
                                 std::nullopt});
@@ -540,41 +611,8 @@ Reply read_task(const ReplyInput& in) {
       }
     }
   }
-  // The task's place is the world's location: said ("clean up the
-  // bathroom after my shower", "tidy the garden shed"), pointed at ("tidy
-  // up in here", "this room", "it" for the room), said as another name for
-  // a room ("the lounge", "the kids room"), or said as a time ("clean up
-  // after the party"); never a filler or a word no one knows. What the task
-  // is done to is kept when it is neither ("put the groceries away", "do
-  // the laundry").
-  Words room = split_words(to_lower(in.world.location));
-  if (!room.empty()) {
-    // "after the party", "before I leave": a time, not what the task is done to.
-    auto time = std::find_if(object.begin(), object.end(), [](const std::string& w) {
-      return is_one_of(w, {"after", "before", "around", "for", "at", "when", "while", "until", "since"});
-    });
-    bool when = time == object.begin() && !object.empty();
-    object.erase(time, object.end());
-    auto at = std::search(object.begin(), object.end(), room.begin(), room.end());
-    const Lexicon& lexicon = in.grounder.lexicon();
-    auto roomlike = [&](const std::string& w) {
-      if (is_one_of(w, {"in", "here", "this", "room", "place", "it", "ugh", "um", "lol", "hmm", "oh", "so"})) return true;
-      if (lexicon.has_wordnet() && !lexicon.knows(w)) return true;
-      std::vector<std::string> one{w};
-      return !lexicon.kinds_under("room", one).empty();
-    };
-    bool pointed = object.empty() || std::any_of(object.begin(), object.end(), roomlike);
-    if (at != object.end() || pointed || when) object = room;
-  }
-  std::string name = verb_name(verb, particle);
-  if (particle == "off" || particle == "down" || particle == "over" || particle == "aside") name = verb + " " + particle;
-  // "clean up after the party": "up" stays before a preposition, whose
-  // object is the task's.
-  if (room.empty() && !object.empty() && is_one_of(object.front(), {"after", "before", "around"}) && words->size() > 1 &&
-      (*words)[1] == "up")
-    name = verb + " up";
-  for (const std::string& w : object) name += " " + w;
-  return TaskNamed{name};
+  const bool up = std::find(words->begin() + 1, words->end(), "up") != words->end();
+  return task_named(in, verb, particle, up, std::move(object), words->size() > 1 && (*words)[1] == "up");
 }
 
 Reply read_structure(const ReplyInput& in) {

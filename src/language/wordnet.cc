@@ -49,6 +49,9 @@ struct Library {
   static constexpr std::size_t kAnswersPerTable = 100000;
   util::BoundedTable<std::string, std::vector<SynsetOffset>> senses{kAnswersPerTable};
   util::BoundedTable<SynsetOffset, std::optional<Synset>> synsets{kAnswersPerTable};
+  // Verbs: their own tables, since data.verb's offsets are not data.noun's.
+  util::BoundedTable<std::string, std::vector<SynsetOffset>> verb_senses{kAnswersPerTable};
+  util::BoundedTable<SynsetOffset, std::optional<Synset>> verb_synsets{kAnswersPerTable};
   util::BoundedTable<std::pair<int, std::string>, std::vector<std::string>> base_forms{kAnswersPerTable};  // by part of speech
   util::BoundedTable<std::string, bool> verbs{kAnswersPerTable};
   util::BoundedTable<std::string, bool> known{kAnswersPerTable};
@@ -58,6 +61,8 @@ struct Library {
     sizes = SynsetSizes{};
     senses.clear();
     synsets.clear();
+    verb_senses.clear();
+    verb_synsets.clear();
     base_forms.clear();
     verbs.clear();
     known.clear();
@@ -180,48 +185,73 @@ std::vector<std::string> WordNet::verb_base_forms(std::string_view word) const {
 
 std::vector<std::string> WordNet::adjective_base_forms(std::string_view word) const { return base_forms(word, ADJ); }
 
-std::vector<SynsetOffset> WordNet::noun_senses(std::string_view lemma) const {
+namespace {
+
+// The senses of an exact lemma under one part of speech, kept in `table`.
+// Under no lock: takes it.
+std::vector<SynsetOffset> senses_of(std::string_view lemma, int part_of_speech,
+                                    util::BoundedTable<std::string, std::vector<SynsetOffset>> Library::*table) {
   if (!usable(lemma)) return {};
   Library& lib = library();
   std::lock_guard lock(lib.mutex);
   if (!lib.open) return {};
   std::string key = from_wordnet(CString(lemma).text);
-  if (const auto* kept = lib.senses.find(key)) return *kept;
+  if (const auto* kept = (lib.*table).find(key)) return *kept;
   std::vector<SynsetOffset> offsets;
   CString query(key);
-  if (IndexPtr index = index_lookup(query.text, NOUN)) {
+  if (IndexPtr index = index_lookup(query.text, part_of_speech)) {
     for (int i = 0; i < index->off_cnt; ++i) offsets.push_back(static_cast<SynsetOffset>(index->offset[i]));
     free_index(index);
   }
-  lib.senses.remember(key, offsets);
+  (lib.*table).remember(key, offsets);
   return offsets;
 }
 
-std::optional<Synset> WordNet::synset(SynsetOffset offset) const {
+// The synset at an offset of one part of speech's data file, with its
+// pointers of that part of speech, kept in `table`. Takes the lock.
+std::optional<Synset> synset_of(SynsetOffset offset, int part_of_speech,
+                                util::BoundedTable<SynsetOffset, std::optional<Synset>> Library::*table) {
   Library& lib = library();
   std::lock_guard lock(lib.mutex);
   std::optional<Synset> result;
   if (!lib.open) return result;
-  if (const auto* kept = lib.synsets.find(offset)) return *kept;
+  if (const auto* kept = (lib.*table).find(offset)) return *kept;
   char empty[1] = {'\0'};
   if (offset >= 0) {
-    if (SynsetPtr raw = read_synset(NOUN, offset, empty)) {
+    if (SynsetPtr raw = read_synset(part_of_speech, offset, empty)) {
       Synset s;
       s.offset = offset;
       s.lexicographer_file = raw->fnum;
       for (int i = 0; i < raw->wcount; ++i) s.lemmas.push_back(from_wordnet(raw->words[i]));
       s.gloss = definition_of(raw->defn);
       for (int i = 0; i < raw->ptrcount; ++i) {
-        if (raw->ppos[i] != NOUN) continue;
+        if (raw->ppos[i] != part_of_speech) continue;
         if (raw->ptrtyp[i] == HYPERPTR) s.hypernyms.push_back(raw->ptroff[i]);
         if (raw->ptrtyp[i] == HYPOPTR) s.hyponyms.push_back(raw->ptroff[i]);
+        if (raw->ptrtyp[i] == VERBGROUP) s.groups.push_back(raw->ptroff[i]);
       }
       free_synset(raw);
       result = std::move(s);
     }
   }
-  lib.synsets.remember(offset, result);
+  (lib.*table).remember(offset, result);
   return result;
+}
+
+}  // namespace
+
+std::vector<SynsetOffset> WordNet::noun_senses(std::string_view lemma) const {
+  return senses_of(lemma, NOUN, &Library::senses);
+}
+
+std::optional<Synset> WordNet::synset(SynsetOffset offset) const { return synset_of(offset, NOUN, &Library::synsets); }
+
+std::vector<SynsetOffset> WordNet::verb_senses(std::string_view lemma) const {
+  return senses_of(lemma, VERB, &Library::verb_senses);
+}
+
+std::optional<Synset> WordNet::verb_synset(SynsetOffset offset) const {
+  return synset_of(offset, VERB, &Library::verb_synsets);
 }
 
 namespace {

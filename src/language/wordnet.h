@@ -40,6 +40,8 @@ struct Synset {
   std::string gloss;                // the definition, without the examples
   std::vector<SynsetOffset> hypernyms;
   std::vector<SynsetOffset> hyponyms;
+  // Verbs only: the synsets of the same verb group ("$" in data.verb).
+  std::vector<SynsetOffset> groups = {};
 };
 
 class WordNet {
@@ -67,6 +69,11 @@ class WordNet {
   // The synset at an offset of data.noun. Pass only offsets WordNet gave
   // (noun_senses, a Synset's pointers): the C library trusts them.
   std::optional<Synset> synset(SynsetOffset offset) const;
+  // The same for verbs: the verb synsets of an exact lemma ("clean up"),
+  // most frequent sense first, and the synset at an offset of data.verb
+  // (its hypernyms and verb groups; no hyponyms).
+  std::vector<SynsetOffset> verb_senses(std::string_view lemma) const;
+  std::optional<Synset> verb_synset(SynsetOffset offset) const;
   // How many noun synsets a class holds: itself and every synset below it
   // by hyponymy (one under two hypernyms counts in each); 1 for a leaf, 0
   // for an offset WordNet lacks. Read from data.noun once per process, on

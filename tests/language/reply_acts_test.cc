@@ -139,7 +139,7 @@ TEST_F(ReplyActsTest, ATasksPlaceIsTheRoomNeverAFiller) {
   ReplyContext task;
   task.asked = Asked::kTask;
   EXPECT_EQ(acts(task, "can you tidy up in here? I just showered and it's a disaster"), "task tidy bathroom");
-  EXPECT_EQ(acts(task, "clean up the bathroom after my shower"), "task clean bathroom");
+  EXPECT_EQ(acts(task, "clean up the bathroom after my shower"), "task tidy bathroom");
   EXPECT_EQ(acts(task, "ugh, the bathroom's a total mess. can you tidy it up for me?"), "task tidy bathroom");
 }
 
@@ -150,6 +150,43 @@ TEST_F(ReplyActsTest, TakingEverythingOffAPlaceClearsOrEmptiesIt) {
   EXPECT_EQ(acts(step, "take all the stuff off the counter"), "subtask clear on counter1");
   // A place that holds nothing is not a part of the task.
   EXPECT_EQ(acts(step, "take everything out of the hamper"), "unusable");
+}
+
+// A task or a part said with another verb than the agent's is taken as
+// the known verb WordNet puts closest, and the read-back says so; a verb
+// nothing known is close to, or a task not over the room, is kept.
+TEST_F(ReplyActsTest, AnotherVerbIsTakenAsTheNearestKnownOneAndSaidSo) {
+  ReplyContext task;
+  task.asked = Asked::kTask;
+  ReplyActs read = read_acts(grounder(), world(), task, "clean up the bathroom please");
+  EXPECT_EQ(acts(task, "clean up the bathroom please"), "task tidy bathroom");
+  EXPECT_NE(std::find(read.notes.begin(), read.notes.end(), "I took \"clean up\" as tidying."), read.notes.end());
+  EXPECT_EQ(acts(task, "straighten the bathroom"), "task tidy bathroom");
+  EXPECT_EQ(acts(task, "tidy the bathroom"), "task tidy bathroom");
+  EXPECT_TRUE(read_acts(grounder(), world(), task, "tidy the bathroom").notes.empty());
+  EXPECT_EQ(acts(task, "wash the bathroom"), "task wash bathroom");
+  EXPECT_EQ(acts(task, "clean the dishes"), "task clean dishes");
+  ReplyContext step;
+  step.asked = Asked::kTaskStep;
+  read = read_acts(grounder(), world(), step, "pick up everything off the floor");
+  EXPECT_EQ(acts(step, "pick up everything off the floor"), "subtask clear on floor1");
+  EXPECT_NE(std::find(read.notes.begin(), read.notes.end(), "I took \"pick up\" as clearing."), read.notes.end());
+  // "unpack" is beside both clearing and emptying in WordNet: the place's
+  // kind decides.
+  EXPECT_EQ(acts(step, "unpack the stuff on the counter"), "subtask clear on counter1");
+  EXPECT_EQ(acts(step, "sort the stuff on the counter"), "subtask sort on counter1");
+  // A verb taught for a part is the teacher's own: kept.
+  step.taught_subtasks = {"unpack"};
+  EXPECT_EQ(acts(step, "unpack the stuff on the counter"), "subtask unpack on counter1");
+}
+
+// "that's not where it goes" after an undo says what was wrong, not a
+// goal; "and tell me what's left" is the teacher's question.
+TEST_F(ReplyActsTest, WhatWasWrongIsNoGoalAndATellMeIsAQuestion) {
+  ReplyContext c = goal_question("comb1", "hairbrush1", "drawer1");
+  EXPECT_EQ(acts(c, "wait, go back one, that's not where the hairbrush goes"), "command undo");
+  EXPECT_EQ(acts(c, "in the cabinet and tell me what's left"), "goal (in comb1 cabinet1) | command whats-left");
+  EXPECT_EQ(acts(c, "tell me what's left"), "command whats-left");
 }
 
 TEST_F(ReplyActsTest, TheSameUndoSaidTwiceInOneReplyIsOneUndo) {

@@ -1,0 +1,134 @@
+#include "language/known_verbs.h"
+
+#include <algorithm>
+#include <array>
+#include <tuple>
+
+#include "util/text.h"
+
+namespace apprentice::language {
+namespace {
+
+// A known verb, with the WordNet senses (numbered from 1, as WordNet
+// orders them) the agent means by it, and the kind of place a step verb is
+// for.
+struct KnownVerb {
+  std::string_view verb;
+  std::array<int, 2> senses;  // 0: none
+  ObjectKind place;
+};
+
+// "tidy, tidy up, clean up, neaten, straighten, straighten out".
+constexpr std::array<KnownVerb, 1> kTaskVerbs{{{"tidy", {1, 0}, ObjectKind::kItem}}};
+// clear 1 "unclutter" and 5 "remove from"; empty 1 "make empty" and 4
+// "remove the contents"; store 1 and 2 "keep in a place"; unload 2
+// "unload, unlade, offload".
+constexpr std::array<KnownVerb, 4> kStepVerbs{{{"clear", {1, 5}, ObjectKind::kSurface},
+                                               {"empty", {1, 4}, ObjectKind::kReceptacle},
+                                               {"store", {1, 2}, ObjectKind::kSurface},
+                                               {"unload", {2, 0}, ObjectKind::kReceptacle}}};
+
+// How many of the teacher's verb's senses, commonest first, are compared:
+// rarer senses ("clean" as "to win all the money") would make every verb
+// close to something.
+constexpr std::size_t kTeacherSenses = 4;
+// Verbs beside each other under a hypernym are close only when that
+// hypernym is not one of WordNet's most general verbs: "remove, take
+// away" (112 kinds) joins "unpack" and "empty"; "change, alter" (401)
+// would join "empty" with "paint".
+constexpr std::size_t kMaxKindsOfSharedHypernym = 150;
+
+bool contains(const std::vector<SynsetOffset>& offsets, SynsetOffset offset) {
+  return std::find(offsets.begin(), offsets.end(), offset) != offsets.end();
+}
+
+// How far apart two verb synsets are: 0 the same, 1 one directly above
+// the other or in one verb group, 2 beside each other under a hypernym of
+// at most kMaxKindsOfSharedHypernym kinds; nullopt otherwise.
+std::optional<int> distance(const WordNet& wordnet, SynsetOffset said, SynsetOffset known) {
+  if (said == known) return 0;
+  auto a = wordnet.verb_synset(said);
+  auto b = wordnet.verb_synset(known);
+  if (!a || !b) return std::nullopt;
+  if (contains(a->hypernyms, known) || contains(b->hypernyms, said) || contains(a->groups, known) ||
+      contains(b->groups, said))
+    return 1;
+  for (SynsetOffset above : a->hypernyms) {
+    if (!contains(b->hypernyms, above)) continue;
+    auto shared = wordnet.verb_synset(above);
+    if (shared && shared->hyponyms.size() <= kMaxKindsOfSharedHypernym) return 2;
+  }
+  return std::nullopt;
+}
+
+// The WordNet lemma of a verb as said: "clean up" when WordNet has it,
+// else the verb alone.
+std::string lemma_of(const WordNet& wordnet, std::string_view verb, std::string_view particle) {
+  if (!particle.empty()) {
+    std::string phrasal = std::string(verb) + " " + std::string(particle);
+    if (wordnet.has_verb(phrasal)) return phrasal;
+  }
+  return std::string(verb);
+}
+
+template <std::size_t N>
+std::optional<VerbTaken> nearest(const Lexicon& lexicon, std::string_view verb, std::string_view particle,
+                                 const std::array<KnownVerb, N>& known, std::optional<ObjectKind> place) {
+  const WordNet* wordnet = lexicon.wordnet();
+  if (wordnet == nullptr || verb.empty()) return std::nullopt;
+  const std::string lemma = lemma_of(*wordnet, verb, particle);
+  std::vector<SynsetOffset> said = wordnet->verb_senses(lemma);
+  if (said.size() > kTeacherSenses) said.resize(kTeacherSenses);
+  // The closest, then the commoner sense of the teacher's verb, then the
+  // verb for this kind of place.
+  std::optional<std::tuple<int, std::size_t, bool>> best;
+  const KnownVerb* chosen = nullptr;
+  for (const KnownVerb& k : known) {
+    std::vector<SynsetOffset> senses = wordnet->verb_senses(k.verb);
+    for (int number : k.senses) {
+      if (number <= 0 || static_cast<std::size_t>(number) > senses.size()) continue;
+      for (std::size_t rank = 0; rank < said.size(); ++rank) {
+        auto d = distance(*wordnet, said[rank], senses[static_cast<std::size_t>(number - 1)]);
+        if (!d) continue;
+        std::tuple<int, std::size_t, bool> key{*d, rank, !(place && k.place == *place)};
+        if (!best || key < *best) {
+          best = key;
+          chosen = &k;
+        }
+      }
+    }
+  }
+  if (chosen == nullptr) return std::nullopt;
+  std::string as_said = particle.empty() ? std::string(verb) : std::string(verb) + " " + std::string(particle);
+  return VerbTaken{std::string(chosen->verb), "I took " + apprentice::quoted(as_said) + " as " + ing_form(chosen->verb) + "."};
+}
+
+template <std::size_t N>
+bool is_known(std::string_view verb, const std::array<KnownVerb, N>& known) {
+  return std::any_of(known.begin(), known.end(), [&](const KnownVerb& k) { return k.verb == verb; });
+}
+
+}  // namespace
+
+std::optional<VerbTaken> known_task_verb(const Lexicon& lexicon, std::string_view verb, std::string_view particle) {
+  if (is_known(verb, kTaskVerbs)) return std::nullopt;
+  return nearest(lexicon, verb, particle, kTaskVerbs, std::nullopt);
+}
+
+std::optional<VerbTaken> known_step_verb(const Lexicon& lexicon, std::string_view verb, std::string_view particle,
+                                         ObjectKind place, std::span<const std::string> taught) {
+  std::string as_said = particle.empty() ? std::string(verb) : std::string(verb) + " " + std::string(particle);
+  if (is_known(as_said, kStepVerbs) || std::find(taught.begin(), taught.end(), as_said) != taught.end())
+    return std::nullopt;
+  return nearest(lexicon, verb, particle, kStepVerbs, place);
+}
+
+std::string clearing_verb(ObjectKind place) { return place == ObjectKind::kSurface ? "clear" : "empty"; }
+
+std::string ing_form(std::string_view verb) {
+  std::string out(verb);
+  if (out.size() > 2 && out.back() == 'e' && out[out.size() - 2] != 'e') out.pop_back();  // store -> storing
+  return out + "ing";
+}
+
+}  // namespace apprentice::language
