@@ -80,14 +80,14 @@ std::string llm_sources(const std::vector<ConditionResult>& results) {
 // the words taken for learned ones (the same in every condition), and each
 // condition's goals by analogy.
 void print_transfer(const std::vector<ConditionResult>& results, std::ostream& out) {
-  const std::vector<std::string>& renamed = results.front().report.renamed;
+  const std::vector<std::string>& renamed = results.front().agent.renamed;
   if (renamed.empty()) out << "No learned word needed another here.\n";
   else out << "The knowledge brought in, in this world's words (every condition):\n";
   for (const std::string& note : renamed) out << "  " << note << "\n";
   for (const ConditionResult& r : results) {
-    if (r.report.analogies.empty()) continue;
+    if (r.agent.analogies.empty()) continue;
     out << r.condition << ", by analogy:\n";
-    for (const std::string& note : r.report.analogies) out << "  " << note << "\n";
+    for (const std::string& note : r.agent.analogies) out << "  " << note << "\n";
   }
 }
 

@@ -7,6 +7,7 @@
 #include <map>
 #include <ostream>
 #include <set>
+#include <sstream>
 
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
@@ -55,6 +56,58 @@ std::vector<std::string> look_alikes(const Universe& u, ObjectId id) {
   for (ObjectId other : u.with_category(u.info(id).category))
     if (other != id) out.push_back(u.name(other));
   return out;
+}
+
+// The plan in PDDL, one action a line, and the search's figures on a
+// ";;" line (--pddl).
+void print_plan_pddl(const World& world, const PlanResult& result, bool greedy, std::ostream& out) {
+  const SearchStatistics& s = result.statistics;
+  for (const Action& a : result.plan) out << format_action(*world.domain, *world.universe, a) << "\n";
+  out << ";; status " << to_string(result.status) << ", " << result.plan.size() << " steps, ";
+  if (greedy) {
+    out << "greedy best-first search, " << s.nodes_expanded << " nodes expanded, " << s.nodes_generated
+        << " generated, " << s.states_registered << " states, heuristic " << s.initial_heuristic
+        << " at the start, " << s.steps_removed << " steps removed afterwards, ";
+  } else {
+    out << s.nodes_expanded << " nodes expanded, " << s.nodes_generated << " generated, depth limit "
+        << s.depth_limit_reached << ", ";
+  }
+  out << s.relevant_objects << " relevant objects, " << s.ground_actions << " ground actions, " << s.elapsed_ms
+      << " ms\n";
+}
+
+// What the search found, and what it took, in one sentence: "Greedy
+// best-first search found a plan of 4 steps in 3 ms: 12 nodes expanded
+// and 40 generated, ...".
+std::string plan_summary(const PlanResult& result, bool greedy, std::optional<int> depth) {
+  const SearchStatistics& s = result.statistics;
+  using language::count_phrase;
+  std::string search = greedy ? "Greedy best-first search" : "Iterative deepening to depth " + std::to_string(*depth);
+  std::ostringstream ms;
+  ms << std::fixed << std::setprecision(1) << s.elapsed_ms;
+  const std::string in = " in " + ms.str() + " ms";
+  std::string found;
+  switch (result.status) {
+    case SearchStatus::kSolved:
+      found = result.plan.empty()
+                  ? "found" + in + " that the goal holds already, so no step is needed"
+                  : "found a plan of " + count_phrase(static_cast<long long>(result.plan.size()), "step") + in;
+      break;
+    case SearchStatus::kExhausted: found = "found" + in + " that no plan reaches the goal"; break;
+    case SearchStatus::kBudgetExhausted: found = "reached its limit without a plan" + in; break;
+    case SearchStatus::kInProgress: found = "stopped without a plan" + in; break;
+  }
+  std::string how = count_phrase(static_cast<long long>(s.nodes_expanded), "node") + " expanded and " +
+                    std::to_string(s.nodes_generated) + " generated";
+  if (greedy) {
+    how += ", " + count_phrase(static_cast<long long>(s.states_registered), "state");
+    // -1: the start is a dead end, or the goal holds there; no value to give.
+    if (s.initial_heuristic >= 0) how += ", a heuristic value of " + std::to_string(s.initial_heuristic) + " at the start";
+    how += ", " + count_phrase(static_cast<long long>(s.steps_removed), "step") + " removed afterwards";
+  }
+  how += ", " + std::to_string(s.relevant_objects) + " of the objects relevant and " +
+         count_phrase(static_cast<long long>(s.ground_actions), "ground action");
+  return search + " " + found + ": " + how + ".";
 }
 
 }  // namespace
@@ -172,19 +225,10 @@ CommandResult run_plan(const PlanOptions& options, std::ostream& out, std::ostre
       j["depth_limit"] = s.depth_limit_reached;
     }
     out << dump_json(j, 2) << "\n";
+  } else if (options.pddl) {
+    print_plan_pddl(world, result, greedy, out);
   } else {
-    for (const Action& a : result.plan) out << format_action(*world.domain, *world.universe, a) << "\n";
-    out << ";; status " << to_string(result.status) << ", " << result.plan.size() << " steps, ";
-    if (greedy) {
-      out << "greedy best-first search, " << s.nodes_expanded << " nodes expanded, " << s.nodes_generated
-          << " generated, " << s.states_registered << " states, heuristic " << s.initial_heuristic
-          << " at the start, " << s.steps_removed << " steps removed afterwards, ";
-    } else {
-      out << s.nodes_expanded << " nodes expanded, " << s.nodes_generated << " generated, depth limit "
-          << s.depth_limit_reached << ", ";
-    }
-    out << s.relevant_objects << " relevant objects, " << s.ground_actions << " ground actions, " << s.elapsed_ms
-        << " ms\n";
+    out << language::plan_steps(world, result.plan) << plan_summary(result, greedy, options.depth) << "\n";
   }
   if (result.status == SearchStatus::kExhausted) {
     if (!why_not.empty())

@@ -28,6 +28,7 @@ struct PlanOptions {
   std::optional<double> time_limit_s;
   bool no_pruning = false;
   bool json = false;
+  bool pddl = false;      // the plan in PDDL and the search's figures on a ";;" line, instead of sentences
   bool progress = false;  // report progress on `progress_out` about once a second after the first
 };
 // Progress lines go to `progress_out` (stderr, when it is a terminal).

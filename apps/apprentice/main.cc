@@ -326,6 +326,7 @@ void add_world_commands(CLI::App& app, CommandLine& c) {
       ->check(whole_number_in(1, std::numeric_limits<long>::max()));
   plan_cmd->add_option("--time-limit", c.plan.time_limit_s, "Stop after this many seconds")->check(positive_number());
   plan_cmd->add_flag("--no-pruning", c.plan.no_pruning, "Ground every object, not only those relevant to the goal");
+  plan_cmd->add_flag("--pddl", c.plan.pddl, "The plan in PDDL, one action a line, and the search's figures on a ';;' line");
   plan_cmd->add_flag("--json", c.plan.json, "Machine-readable output");
   c.on_run(plan_cmd, [&c] {
     c.plan.progress = isatty(fileno(stderr)) != 0;

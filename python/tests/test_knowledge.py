@@ -112,3 +112,44 @@ def test_class_rules_as_the_knowledge_command_says_them_and_forgetting_one(kitch
         apprentice.forget_rule(tmp_path / "none.sqlite", "fruit")
     assert raised.value.code == "not found"
     assert not (tmp_path / "none.sqlite").exists()
+
+
+def test_a_household_and_a_domain_give_what_the_knowledge_command_gives(tmp_path):
+    """The stacking kitchen's store, kept for the smiths: read with its own
+    domain, Python and `knowledge --household --domain` agree; with the
+    kitchen's, whose actions its rules lack, both refuse it alike."""
+    import json
+    from conftest import SCENARIOS, SOURCE_DIR
+    stacking = SOURCE_DIR / "data" / "domains" / "kitchen-stacking.pddl"
+    kitchen = SOURCE_DIR / "data" / "domains" / "kitchen.pddl"
+    subprocess.run([str(BINARY), "experiment", str(SCENARIOS / "dish-tower.yaml"), "--conditions", "inst+search4",
+                    "--household", "smiths", "--knowledge-out", str(tmp_path)], check=True, capture_output=True)
+    store_path = tmp_path / "inst+search4.sqlite"
+
+    def cli(household, domain):
+        return subprocess.run([str(BINARY), "knowledge", "--knowledge", str(store_path), "--household", household,
+                               "--domain", str(domain), "--json"], capture_output=True, text=True)
+
+    run = cli("smiths", stacking)
+    assert run.returncode == 0, run.stderr
+    theirs = json.loads(run.stdout)
+    store = apprentice.KnowledgeStore(store_path, domain=stacking, household="smiths")
+    assert store.household == theirs["household"] == "smiths"
+    assert [(t.name, [(s.verb, s.relation, s.place) for s in t.subtasks]) for t in store.tasks] == \
+        [(t["name"], [(s["verb"], s["relation"], s["place"]) for s in t["subtasks"]]) for t in theirs["tasks"]]
+    assert [(g.text, g.learned_on, g.source) for g in store.goals] == \
+        [(g["text"], g["object"], g["source"]) for g in theirs["goals"]]
+    assert [(r.signature, r.learned_on, r.source) for r in store.rules] == \
+        [(r["signature"], r["object"], r["source"]) for r in theirs["rules"]]
+    assert [r.text for r in store.class_rules] == [r["text"] for r in theirs["class_rules"]]
+    assert store.goals and store.rules and store.tasks[0].name == "put away dishes"
+    # The default household holds none of the smiths' goals, in both.
+    default = json.loads(cli("default", stacking).stdout)
+    assert apprentice.KnowledgeStore(store_path, domain=stacking).goals == [] == default["goals"]
+    # The plain kitchen's domain has no action to stack with.
+    refused = cli("smiths", kitchen)
+    assert refused.returncode == 2
+    with pytest.raises(apprentice.Error) as raised:
+        apprentice.KnowledgeStore(store_path, domain=kitchen, household="smiths")
+    assert raised.value.code == "failed precondition"  # the CLI's exit 2
+    assert refused.stderr.strip() == "apprentice: " + str(raised.value)

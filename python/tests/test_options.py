@@ -256,3 +256,30 @@ def test_agent_household_and_run_task_as_the_cli(tmp_path):
     for key in cli_run:
         assert ours[key] == cli_run[key], key
     assert ours["assertions_achieved"] == ours["assertions_total"] == 3
+
+
+def robots_of(store):
+    """Who learned what in a store: (household, robot) per goal, and the
+    robots that saved its rules."""
+    import sqlite3
+    with sqlite3.connect(store) as db:
+        return (sorted(db.execute("SELECT household, robot FROM goals").fetchall()),
+                sorted({robot for (robot,) in db.execute("SELECT robot FROM rules")}))
+
+
+def test_agent_robot_as_the_cli(tmp_path):
+    cli = cli_teach("--robot", "kitchen-2", "--knowledge", str(tmp_path / "cli.sqlite"))
+    assert cli.returncode == 0, cli.stderr
+    apprentice.Agent(TWO_OBJECTS, knowledge=tmp_path / "py.sqlite", robot="kitchen-2").learn(
+        scripted_teacher(TEACHING))
+    ours = robots_of(tmp_path / "py.sqlite")
+    assert ours == robots_of(tmp_path / "cli.sqlite")
+    # Both goals and every rule name the robot given, not the host.
+    assert ours == ([("default", "kitchen-2")] * 2, ["kitchen-2"])
+    # A name the CLI refuses (exit 2, one line) Python refuses in the same words.
+    refused = cli_teach("--robot", "kitchen/2", "--knowledge", str(tmp_path / "cli.sqlite"))
+    assert refused.returncode == 2
+    with pytest.raises(apprentice.Error) as raised:
+        apprentice.Agent(TWO_OBJECTS, knowledge=tmp_path / "py.sqlite", robot="kitchen/2")
+    assert raised.value.code == "invalid input"
+    assert refused.stderr.strip() == "apprentice: " + str(raised.value)

@@ -66,3 +66,56 @@ def test_every_shipped_scenario_loads():
         scenario = apprentice.Scenario.load(path)
         assert scenario.items, path
         assert scenario.task.subtasks, path
+
+
+# A world written as JSON (YAML's subset), naming the shipped domain by name
+# from a folder of its own: two shelves told apart by a property, a door.
+JSON_WORLD = {
+    "name": "json-laundry",
+    "domain": "kitchen",
+    "location": "laundry room",
+    "places": [{"category": "folding-table", "kind": "surface"},
+               {"category": "shelf", "kind": "surface", "properties": ["high"]},
+               {"category": "shelf", "kind": "surface", "properties": ["low"]},
+               {"category": "cupboard", "kind": "receptacle", "door": "closed"},
+               {"category": "hamper", "kind": "receptacle"}],
+    "objects": [{"category": "towel", "at": "folding-table1", "count": 2},
+                {"category": "bleach", "at": "folding-table1"},
+                {"category": "jeans", "at": "hamper1"}],
+    "task": {"name": "do laundry", "subtasks": [{"verb": "clear", "place": "folding-table1"}]},
+    "intent": [{"subtask": "clear", "category": "towel", "place": "cupboard1", "closed": True},
+               {"subtask": "clear", "category": "bleach", "place": "shelf1"}],
+}
+
+
+def test_a_world_given_as_json_is_the_scenario_the_cli_reads(tmp_path):
+    import json
+    import subprocess
+    from conftest import BINARY
+    path = tmp_path / "laundry.json"
+    path.write_text(json.dumps(JSON_WORLD, indent=2))
+    cli = subprocess.run([str(BINARY), "world", str(path), "--json"], capture_output=True, text=True)
+    assert cli.returncode == 0, cli.stderr
+    world = json.loads(cli.stdout)
+    scenario = apprentice.Scenario.load(path)
+    assert (scenario.name, scenario.location) == (world["scenario"], world["location"]) == \
+        ("json-laundry", "laundry room")
+    assert scenario.domain_path.endswith("kitchen.pddl")
+
+    def seen(o):
+        return (o.id, o.category, o.kind, list(o.properties))
+
+    assert [seen(o) for o in scenario.places] == \
+        [(p["id"], p["category"], p["kind"], p["properties"]) for p in world["places"]]
+    def location(item):
+        place = scenario.where(item.id)
+        return ("on " if scenario.object(place).kind == "surface" else "in ") + place
+
+    assert [seen(o) + (location(o),) for o in scenario.items] == \
+        [(o["id"], o["category"], o["kind"], o["properties"], o["location"]) for o in world["objects"]]
+    assert [o["location"] for o in world["objects"]] == ["on folding-table1"] * 3 + ["in hamper1"]
+    doors = {p["id"]: p["door"] for p in world["places"] if "door" in p}
+    assert doors == {"cupboard1": "closed"} and "(closed cupboard1)" in scenario.facts
+    assert [p["properties"] for p in world["places"] if p["category"] == "shelf"] == [["high"], ["low"]]
+    assert [(s.verb, s.place) for s in scenario.task.subtasks] == [("clear", "folding-table1")]
+    assert scenario.intended_goal("clear", "towel2") == "(and (in towel2 cupboard1) (closed cupboard1))"

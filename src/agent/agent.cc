@@ -255,18 +255,7 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::start_known_subtask
   return {};
 }
 
-Status TaskLearningAgent::Session::remember_task() {
-  auto& tasks = agent_.knowledge_.tasks;
-  auto existing = std::find_if(tasks.begin(), tasks.end(), [&](const TaskKnowledge& t) { return t.name == progress_.task.name; });
-  std::optional<TaskKnowledge> previous;
-  if (existing == tasks.end()) {
-    tasks.push_back(progress_.task);
-  } else {
-    previous = *existing;
-    *existing = progress_.task;
-  }
-  return lessons_.store_task(progress_.task, std::move(previous));
-}
+Status TaskLearningAgent::Session::remember_task() { return lessons_.learn_task(agent_.knowledge_, progress_.task); }
 
 // --- Subtasks and their objects ----------------------------------------------
 

@@ -216,10 +216,9 @@ Status TaskLearningAgent::Session::learn_rules(const InProgress& work) {
   std::vector<Rule> rules =
       learn_policy_rules(*world().domain, *world().universe, episode, agent_.options_.generalization);
   for (Rule& rule : rules) {
-    Rule copy = rule;
-    if (!agent_.knowledge_.rules.add(*world().domain, std::move(rule))) continue;
-    ++progress_.rules_learned;
-    if (auto s = lessons_.store_rule(copy); !s) return s;
+    auto learned = lessons_.learn_rule(agent_.knowledge_, std::move(rule));
+    if (!learned) return tl::unexpected(learned.error());
+    if (*learned) ++progress_.rules_learned;
   }
   return {};
 }

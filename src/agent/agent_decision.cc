@@ -333,13 +333,15 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
     const bool by_analogy = is_analogy(top);
     const std::string how = decision.kind == Decision::Kind::kConfirm ? "as the teacher confirmed"
                                                                        : "confidence " + percent(decision.confidence);
+    // Said to a person (run's summary): the thing as people name it, never
+    // its id.
+    const std::string thing = language::spoken_name_and_location(w, object);
     if (by_analogy)
-      report_.analogies.push_back("took the goal of the " + top.evidence.front() + " for " + describe_object(object) +
-                                  ", " + how);
+      report_.analogies.push_back("took the goal of the " + language::spoken_category(top.evidence.front()) + " for " +
+                                  thing + ", " + how);
     else
-      report_.analogies.push_back("decided that " +
-                                  language::goal_outcome(w, object, *goal, language::spoken_name_and_location(w, object)) +
-                                  as + " (" + w.universe->name(object) + ", " + how + ")");
+      report_.analogies.push_back("decided that " + language::goal_outcome(w, object, *goal, thing) + as + " (" + how +
+                                  ")");
     if (learning_) {
       std::string source = by_analogy ? top.reason : "decision: " + top.reason;
       if (decision.kind == Decision::Kind::kConfirm) source += " (confirmed)";

@@ -303,12 +303,9 @@ Status TaskLearningAgent::Session::learn_goal(ObjectId object, const Goal& goal,
     spdlog::warn("goal not learned: {}", knowledge.error().message);
     return {};
   }
-  std::optional<GoalKnowledge> previous;
-  if (const GoalKnowledge* known = agent_.knowledge_.goals.find(knowledge->key)) previous = *known;
-  agent_.knowledge_.goals.add(*knowledge);
   progress_.last_goal = knowledge->key;
   ++progress_.goals_learned;
-  return lessons_.store_goal(*knowledge, std::move(previous));
+  return lessons_.learn_goal(agent_.knowledge_, *knowledge);
 }
 
 }  // namespace apprentice

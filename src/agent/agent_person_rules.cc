@@ -132,9 +132,7 @@ void TaskLearningAgent::Session::hear_rule(const language::RuleReading& rule, co
 
 Status TaskLearningAgent::Session::store_class_rule(const ClassRule& rule) {
   said_rules_.add(rule);
-  agent_.knowledge_.class_rules.add(rule);
-  agent_.knowledge_.forgotten_rules.remove(rule);
-  return lessons_.store_class_rule(rule);
+  return lessons_.learn_class_rule(agent_.knowledge_, rule);
 }
 
 Status TaskLearningAgent::Session::keep_induced_rules_learned() {

@@ -25,7 +25,10 @@ void Lessons::record(StoreWrite write) {
   if (!lessons_.empty()) lessons_.back().writes.push_back(std::move(write));
 }
 
-Status Lessons::store_goal(const GoalKnowledge& goal, std::optional<GoalKnowledge> previous) {
+Status Lessons::learn_goal(Knowledge& knowledge, const GoalKnowledge& goal) {
+  std::optional<GoalKnowledge> previous;
+  if (const GoalKnowledge* known = knowledge.goals.find(goal.key)) previous = *known;
+  knowledge.goals.add(goal);
   if (!store_) return {};
   if (auto s = store_->save_goal(goal); !s) return s;
   // Durable from here (the fleet's kill test reads these lines: a goal
@@ -41,17 +44,28 @@ Status Lessons::store_goal(const GoalKnowledge& goal, std::optional<GoalKnowledg
   return {};
 }
 
-Status Lessons::store_rule(const Rule& rule) {
-  if (!store_) return {};
-  if (auto s = store_->save_rule(*domain_, rule); !s) return s;
+Result<bool> Lessons::learn_rule(Knowledge& knowledge, Rule rule) {
+  Rule kept = rule;
+  if (!knowledge.rules.add(*domain_, std::move(rule))) return false;
+  if (!store_) return true;
+  if (auto s = store_->save_rule(*domain_, kept); !s) return tl::unexpected(s.error());
   StoreWrite write;
   write.kind = StoreWrite::Kind::kRule;
-  write.rule = rule;
+  write.rule = std::move(kept);
   record(std::move(write));
-  return {};
+  return true;
 }
 
-Status Lessons::store_task(const TaskKnowledge& task, std::optional<TaskKnowledge> previous) {
+Status Lessons::learn_task(Knowledge& knowledge, const TaskKnowledge& task) {
+  auto& tasks = knowledge.tasks;
+  auto existing = std::find_if(tasks.begin(), tasks.end(), [&](const TaskKnowledge& t) { return t.name == task.name; });
+  std::optional<TaskKnowledge> previous;
+  if (existing == tasks.end()) {
+    tasks.push_back(task);
+  } else {
+    previous = *existing;
+    *existing = task;
+  }
   if (!store_) return {};
   if (auto s = store_->save_task(task); !s) return s;
   StoreWrite write;
@@ -62,7 +76,9 @@ Status Lessons::store_task(const TaskKnowledge& task, std::optional<TaskKnowledg
   return {};
 }
 
-Status Lessons::store_class_rule(const ClassRule& rule) {
+Status Lessons::learn_class_rule(Knowledge& knowledge, const ClassRule& rule) {
+  knowledge.class_rules.add(rule);
+  knowledge.forgotten_rules.remove(rule);
   StoreWrite write;
   write.kind = StoreWrite::Kind::kClassRule;
   write.class_rule = rule;

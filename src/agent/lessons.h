@@ -9,7 +9,9 @@
 //
 // Lessons is passed only what it needs: the store (borrowed, may be null)
 // and the domain its rules are written in; the progress and the knowledge
-// are lent to each call.
+// are lent to each call. What a lesson teaches reaches the knowledge and
+// the store through Lessons alone (learn_goal, ...), so that no write can
+// miss its lesson.
 #pragma once
 
 #include <cstddef>
@@ -43,14 +45,18 @@ class Lessons {
   // The reply of the last lesson; null when there is none.
   const std::string* last_reply() const { return lessons_.empty() ? nullptr : &lessons_.back().reply; }
 
-  // Writes to the store (none without one), each kept in the open lesson
-  // with what it replaced, so that undo can revert it.
-  Status store_goal(const GoalKnowledge& goal, std::optional<GoalKnowledge> previous);
-  Status store_rule(const Rule& rule);
-  Status store_task(const TaskKnowledge& task, std::optional<TaskKnowledge> previous);
-  // A person's rule: kept in the open lesson even without a store (undo
-  // takes it out of the session's rules too), then written.
-  Status store_class_rule(const ClassRule& rule);
+  // What a reply teaches, kept in one call each: into `knowledge`, into the
+  // store (none without one), and into the open lesson with what it
+  // replaced, so that undo reverts the write. The knowledge changes first:
+  // when the store fails (the error is returned) the session still has it.
+  Status learn_goal(Knowledge& knowledge, const GoalKnowledge& goal);
+  // false, and nothing written, when `knowledge` holds the rule already.
+  Result<bool> learn_rule(Knowledge& knowledge, Rule rule);
+  Status learn_task(Knowledge& knowledge, const TaskKnowledge& task);
+  // A person's rule, no longer forgotten: kept in the open lesson even
+  // without a store (undo names it, for the session to take it out of the
+  // rules said), then written.
+  Status learn_class_rule(Knowledge& knowledge, const ClassRule& rule);
 
   // What is forgotten for good ("forget ketchup", "forget fruit"): no undo
   // may bring it back, so every lesson's knowledge forgets it too.

@@ -72,28 +72,12 @@ std::optional<double> silent_relevance(const Scenario& scenario, const std::vect
 
 ConditionResult condition_result(const Scenario& scenario, const Condition& condition, SessionReport report) {
   ConditionResult result;
+  static_cast<SessionReport&>(result) = std::move(report);
   result.condition = condition.name;
-  result.assertions_total = report.assertions_total;
-  result.assertions_achieved = report.assertions_achieved;
-  result.completion_rate = report.completion_rate;
-  result.objects_total = report.objects_total;
-  result.objects_done = report.objects_done;
-  result.counts = report.counts;
   if (condition.llm && condition.instruction && result.counts.yes_no > 0)
     result.relevance = 100.0 * result.counts.yes / result.counts.yes_no;
-  if (condition.llm && !condition.instruction) result.relevance = silent_relevance(scenario, report.agent.objects);
+  if (condition.llm && !condition.instruction) result.relevance = silent_relevance(scenario, result.agent.objects);
   result.uses_llm = condition.llm;
-  result.llm_calls = report.llm_calls;
-  result.llm_tokens = report.llm_tokens;
-  result.llm_failures = report.llm_failures;
-  result.llm_stopped = report.llm_stopped;
-  result.llm_stopped_after_calls = report.llm_stopped_after_calls;
-  result.llm_stop_error = report.llm_stop_error;
-  result.llm_ensemble = report.llm_ensemble;
-  result.llm_description = report.llm_description;
-  result.search_nodes = report.agent.search_nodes;
-  result.report = std::move(report.agent);
-  result.transcript = std::move(report.transcript);
   return result;
 }
 
@@ -203,7 +187,7 @@ std::string format_results_table(const std::vector<ConditionResult>& results, bo
     out += row_text("%-18s %-*s %11s %9s %9s %8d %7d %7d %12llu %9d %9.1f\n", name.c_str(), label,
                     r.llm_ensemble ? "ensemble" : "ours", percent(r.completion_rate).c_str(), objects.c_str(),
                     relevance_cell(r).c_str(), r.counts.instructions, r.counts.words, r.counts.yes_no,
-                    static_cast<unsigned long long>(r.search_nodes), r.llm_calls, r.wall_ms);
+                    static_cast<unsigned long long>(r.agent.search_nodes), r.llm_calls, r.wall_ms);
     if (r.degraded()) notes += "* " + r.condition + ": degraded, " + degraded_why(r) + "\n";
     // An ensemble of runs is not what the paper's agent had: not set beside it.
     if (!beside_paper || r.llm_ensemble) continue;

@@ -19,43 +19,24 @@
 
 namespace apprentice {
 
-struct ConditionResult {
+// One condition's row: the face's report of its session (SessionReport:
+// the counts, completion, objects, the LLM's totals, the agent's report and
+// the transcript), with what only the experiment works out. The paper's
+// completion counts assertions that already held at the start (the doors
+// of the tidy kitchen start closed and must end closed), so a run that
+// moves nothing scores above zero.
+struct ConditionResult : SessionReport {
   std::string condition;
-  // The paper's completion: the intent's goal assertions that hold at the
-  // end, over all of them. It counts assertions that already held at the
-  // start (the doors of the tidy kitchen start closed and must end closed),
-  // so a run that moves nothing scores above zero.
-  int assertions_achieved = 0;
-  int assertions_total = 0;
-  double completion_rate = 0;  // percent
-  // Objects whose whole intended goal holds at the end, over the objects
-  // the intent is about (Scenario::objects_to_tidy).
-  int objects_done = 0;
-  int objects_total = 0;
-  DialogueCounts counts;
   // Yes answers over yes/no questions, in percent. Without an instructor:
   // the share of adopted LLM goals that are the intended ones. Unset when
   // the condition uses no LLM (the paper's "--"), or when it asked the LLM
   // but nothing came of it to measure (no yes/no question; no goal adopted).
   std::optional<double> relevance;
   bool uses_llm = false;  // the condition asks an LLM (Relevant% "n/a" rather than "--")
-  int llm_calls = 0;
-  long llm_tokens = 0;
-  // LLM queries that failed (server down, hung, garbled); a row with any is
-  // degraded: its figures are not what the LLM would have given.
-  int llm_failures = 0;
-  bool llm_stopped = false;   // the LLM was not asked after repeated failures, or at all
-  // The breaker's stop: the queries made when it tripped, and the failure
-  // that tripped it (unset when it did not trip).
-  std::optional<int> llm_stopped_after_calls;
-  std::string llm_stop_error;
-  bool llm_ensemble = false;  // the answers pooled several sources (corpus pool=all)
-  std::uint64_t search_nodes = 0;
   double wall_ms = 0;
-  AgentReport report;
-  std::string transcript;
-  std::string llm_description;  // where LLM answers came from, if any
 
+  // A row with failed LLM queries, or whose LLM was stopped: its figures
+  // are not what the LLM would have given.
   bool degraded() const { return llm_failures > 0 || llm_stopped; }
 };
 
@@ -95,9 +76,8 @@ struct ExperimentOptions {
 Status check_runnable(const Scenario& scenario);
 
 // The face's report of one condition's session as the experiment's row:
-// the one place the two meet (the counts, the LLM's totals and the
-// agent's report move over; Relevant% is worked out here). The wall time
-// is the caller's.
+// the one place the two meet (the report moves in whole; Relevant% is
+// worked out here). The wall time is the caller's.
 ConditionResult condition_result(const Scenario& scenario, const Condition& condition, SessionReport report);
 
 // Runs one condition on a copy of `scenario`'s world; nothing is kept

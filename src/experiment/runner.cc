@@ -118,8 +118,8 @@ std::string results_json(const std::vector<ConditionResult>& results) {
                                  {"relevance", r.relevance ? nlohmann::json(*r.relevance) : nlohmann::json(nullptr)},
                                  {"llm_calls", r.llm_calls},
                                  {"llm_tokens", r.llm_tokens},
-                                 {"search_nodes", r.search_nodes},
-                                 {"transfer", nlohmann::json{{"renamed", r.report.renamed}, {"analogies", r.report.analogies}}},
+                                 {"search_nodes", r.agent.search_nodes},
+                                 {"transfer", nlohmann::json{{"renamed", r.agent.renamed}, {"analogies", r.agent.analogies}}},
                                  {"wall_ms", r.wall_ms}});
   return dump_json(all, 2);
 }

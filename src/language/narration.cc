@@ -495,6 +495,16 @@ std::string action_phrase(const World& world, const Action& action) {
   return action_clause(world, action, false).render(world);
 }
 
+std::string plan_steps(const World& world, std::span<const Action> plan) {
+  World now = world;
+  std::string out;
+  for (std::size_t i = 0; i < plan.size(); ++i) {
+    out += std::to_string(i + 1) + ". " + capitalize(action_phrase(now, plan[i])) + ".\n";
+    now.state = apply(*now.domain, now.state, plan[i]);
+  }
+  return out;
+}
+
 std::string refusal(const World& world, const Action& action) {
   const Domain& domain = *world.domain;
   if (!why_not_applicable(domain, *world.universe, world.state, action)) return "";

@@ -108,6 +108,11 @@ std::string report_actions(const World& world, std::span<const Action> actions);
 // "open the fridge", "put the ketchup in the fridge": the action as a
 // person would ask for it, without a final period.
 std::string action_phrase(const World& world, const Action& action);
+// A plan as steps a person reads, numbered, one a line: "1. Open the
+// fridge.\n2. Pick up the ketchup from the table.\n..." Each step is said
+// in the world as the steps before it leave it, starting from `world`; ""
+// for no step.
+std::string plan_steps(const World& world, std::span<const Action> plan);
 // Why the action cannot be done now, or "" if it can: "I am not holding
 // the stapler, so I cannot put it in the drawer."
 std::string refusal(const World& world, const Action& action);

@@ -45,9 +45,12 @@ TEST_F(LessonsTest, UndoRevertsTheLastLessonsWritesAndPutsTheProgressBack) {
   // Lesson 1: the task's name; the ketchup's goal.
   lessons.begin("Tidy kitchen.", progress, knowledge, scenario_.world.state, 0);
   progress.task = TaskKnowledge{"tidy kitchen", {LearnedSubtask{"clear", "on", "table"}}};
-  ASSERT_TRUE(lessons.store_task(progress.task, std::nullopt));
-  knowledge.goals.add(goal("ketchup", "fridge"));
-  ASSERT_TRUE(lessons.store_goal(goal("ketchup", "fridge"), std::nullopt));
+  ASSERT_TRUE(lessons.learn_task(knowledge, progress.task));
+  ASSERT_TRUE(lessons.learn_goal(knowledge, goal("ketchup", "fridge")));
+  // One call each: the knowledge has what the store has.
+  EXPECT_THAT(knowledge.goals.all(), ElementsAre(goal("ketchup", "fridge")));
+  ASSERT_EQ(knowledge.tasks.size(), 1u);
+  EXPECT_EQ(stored().tasks.size(), 1u);
   progress.evaluated.insert(7);
   progress.evaluated_order.push_back(7);
   progress.objects.push_back(ObjectReport{});
@@ -55,8 +58,8 @@ TEST_F(LessonsTest, UndoRevertsTheLastLessonsWritesAndPutsTheProgressBack) {
 
   // Lesson 2: the ketchup goes in the cupboard instead.
   lessons.begin("the ketchup goes in the cupboard", progress, knowledge, scenario_.world.state, 4);
-  knowledge.goals.add(goal("ketchup", "cupboard"));
-  ASSERT_TRUE(lessons.store_goal(goal("ketchup", "cupboard"), goal("ketchup", "fridge")));
+  ASSERT_TRUE(lessons.learn_goal(knowledge, goal("ketchup", "cupboard")));
+  EXPECT_THAT(knowledge.goals.all(), ElementsAre(goal("ketchup", "cupboard")));
   progress.evaluated.insert(9);
   progress.evaluated_order.push_back(9);
   progress.objects.push_back(ObjectReport{});
@@ -102,7 +105,11 @@ TEST_F(LessonsTest, WhatIsForgottenForGoodNoUndoBringsBack) {
   ClassRule rule;
   rule.class_name = "fruit";
   rule.source = RuleSource::kPerson;
-  ASSERT_TRUE(lessons.store_class_rule(rule));
+  knowledge.forgotten_rules.add(rule);
+  ASSERT_TRUE(lessons.learn_class_rule(knowledge, rule));
+  // Said again, it is no longer forgotten.
+  EXPECT_FALSE(knowledge.forgot(rule));
+  EXPECT_NE(knowledge.class_rules.find(rule), nullptr);
   lessons.forget_goal(goal("ketchup", "fridge").key);
   knowledge.goals.remove(goal("ketchup", "fridge").key);
   auto undone = lessons.undo(progress, knowledge);

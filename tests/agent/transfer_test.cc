@@ -4,6 +4,9 @@
 #include "agent/transfer.h"
 #include "agent/goal_proposals.h"
 
+#include <regex>
+#include <string>
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -237,6 +240,9 @@ TEST(TransferInTheAgent, PerformsTheRenamedKitchenWithTheKitchensKnowledge) {
   EXPECT_EQ(saltines->goal, "(and (in saltines1 larder1) (closed larder1))");
   EXPECT_GE(saltines->belief, default_decision_policy().act_at);
   EXPECT_THAT(report->analogies, ::testing::Contains(HasSubstr("decided that the saltines on the sideboard go in the larder, and the larder ends closed, like")));
+  // Said to a person: the things as people name them, never by their ids.
+  for (const std::string& line : report->analogies)
+    EXPECT_FALSE(std::regex_search(line, std::regex("[a-z][0-9]+\\b"))) << line;
   // The cream is like the half-and-half (WordNet: the refrigerator) and
   // like the granola bars (the examples' classes: the larder): in doubt, it
   // is left as needing help, saying what it might do.

@@ -20,6 +20,7 @@
 namespace apprentice {
 namespace {
 
+using ::testing::EndsWith;
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
 using ::testing::Not;
@@ -46,8 +47,23 @@ class Cli : public testing::ScratchTest {
   Invocation run(const std::vector<std::string>& args) const { return testing::run_cli(args, dir_, fs::path()); }
 };
 
-TEST_F(Cli, PlanFindsTheFourStepKetchupPlan) {
+TEST_F(Cli, PlanSaysTheFourStepKetchupPlanInSentences) {
   Invocation r = run({"plan", "--scenario", tidy_kitchen(), "--goal", kKetchupGoal});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::vector<std::string> lines = lines_of(r.out);
+  ASSERT_EQ(lines.size(), 5u) << r.out;
+  EXPECT_THAT(std::vector<std::string>(lines.begin(), lines.begin() + 4),
+              ElementsAre("1. Open the fridge.", "2. Pick up the ketchup.", "3. Put the ketchup in the fridge.",
+                          "4. Close the fridge."));
+  EXPECT_THAT(lines[4], StartsWith("Greedy best-first search found a plan of 4 steps in "));
+  EXPECT_THAT(lines[4], HasSubstr(" nodes expanded and "));
+  EXPECT_THAT(lines[4], EndsWith(" ground actions."));
+  EXPECT_THAT(r.out, Not(HasSubstr("(")));  // no PDDL without --pddl
+  EXPECT_EQ(r.err, "");
+}
+
+TEST_F(Cli, PlanInPddlWithPddl) {
+  Invocation r = run({"plan", "--scenario", tidy_kitchen(), "--goal", kKetchupGoal, "--pddl"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   std::vector<std::string> lines = lines_of(r.out);
   ASSERT_EQ(lines.size(), 5u) << r.out;
@@ -61,8 +77,11 @@ TEST_F(Cli, PlanFindsTheFourStepKetchupPlan) {
 TEST_F(Cli, PlanWithDepthTwoIsExhaustedAndExitsOne) {
   Invocation r = run({"plan", "--scenario", tidy_kitchen(), "--goal", kKetchupGoal, "--depth", "2"});
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_THAT(r.out, StartsWith(";; status exhausted, 0 steps, "));
-  EXPECT_THAT(r.out, HasSubstr("depth limit 2"));
+  EXPECT_THAT(r.out, StartsWith("Iterative deepening to depth 2 found in "));
+  EXPECT_THAT(r.out, HasSubstr(" ms that no plan reaches the goal: "));
+  Invocation pddl = run({"plan", "--scenario", tidy_kitchen(), "--goal", kKetchupGoal, "--depth", "2", "--pddl"});
+  EXPECT_THAT(pddl.out, StartsWith(";; status exhausted, 0 steps, "));
+  EXPECT_THAT(pddl.out, HasSubstr("depth limit 2"));
   EXPECT_EQ(r.err,
             "apprentice: no plan of at most 2 steps reaches the goal; try a larger --depth, or leave --depth out "
             "for greedy best-first search\n");
@@ -106,7 +125,7 @@ TEST_F(Cli, PlanWithoutDepthUsesGreedyBestFirstSearch) {
 }
 
 TEST_F(Cli, PlanTheWholeIntent) {
-  Invocation r = run({"plan", "--scenario", tidy_kitchen(), "--goal", "intent"});
+  Invocation r = run({"plan", "--scenario", tidy_kitchen(), "--goal", "intent", "--pddl"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   std::vector<std::string> lines = lines_of(r.out);
   ASSERT_FALSE(lines.empty());
@@ -154,7 +173,7 @@ TEST_F(Cli, PlanProgressGoesToTheTerminalOnly) {
   const std::string text = testing::read_text(out);
   EXPECT_THAT(text, HasSubstr("searching: "));
   EXPECT_THAT(text, HasSubstr(" nodes/s), best heuristic value "));
-  EXPECT_THAT(text, HasSubstr(";; status budget-exhausted"));
+  EXPECT_THAT(text, HasSubstr("Greedy best-first search reached its limit without a plan in "));
   // Not a terminal: no progress lines.
   Invocation piped = run({"plan", "--scenario", tidy_kitchen(), "--goal", "(and (in ketchup1 fridge1) (in ketchup1 pantry1))",
                           "--no-pruning", "--time-limit", "1.2"});

@@ -93,12 +93,12 @@ void expect_instructor_takes_over(const Scenario& scenario, const FaultCase& c, 
     ++said;
   EXPECT_EQ(said, kBreaker);
   // Nothing learned was lost: every goal is in the store.
-  EXPECT_EQ(result.report.goals_learned, without.report.goals_learned);
+  EXPECT_EQ(result.agent.goals_learned, without.agent.goals_learned);
   auto store = KnowledgeStore::open(knowledge_dir / (std::string(c.condition) + ".sqlite"));
   ASSERT_TRUE(store.has_value()) << store.error().describe();
   auto knowledge = store->load(*scenario.world.domain);
   ASSERT_TRUE(knowledge.has_value()) << knowledge.error().describe();
-  EXPECT_EQ(static_cast<int>(knowledge->goals.size()), without.report.goals_learned);
+  EXPECT_EQ(static_cast<int>(knowledge->goals.size()), without.agent.goals_learned);
   EXPECT_EQ(knowledge->tasks.size(), 1u);
   EXPECT_LT(seconds, kHangGuardSeconds);
   std::printf("%s: %s %d LLM calls, %.1f s\n", c.name, c.condition, result.llm_calls, seconds);
@@ -179,7 +179,7 @@ TEST_F(LlmUnreachable, WithoutAnInstructorTheRunEndsWithoutGoalsButCleanly) {
   EXPECT_EQ(result.counts.words, 76);
   EXPECT_THAT(result.transcript, HasSubstr(kCouldNotReach));
   EXPECT_THAT(result.transcript, ::testing::Not(HasSubstr("so I will ask")));
-  EXPECT_EQ(result.report.goals_learned, 0);
+  EXPECT_EQ(result.agent.goals_learned, 0);
   EXPECT_EQ(result.llm_failures, kBreaker);
   EXPECT_EQ(server.requests(), kBreaker * 2);
 }

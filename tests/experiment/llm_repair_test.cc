@@ -76,14 +76,14 @@ TEST(LlmGoals, WithoutAnInstructorAnUnusableAnswerIsFollowedByARePrompt) {
   ConditionResult result = testing::run(scenario, "search4+llm", experiment_options(factory("openai:" + server.url())));
   ASSERT_TRUE(result.relevance.has_value());
   bool milk_adopted = false;
-  for (const ObjectReport& object : result.report.objects)
+  for (const ObjectReport& object : result.agent.objects)
     if (object.object.rfind("milk", 0) == 0 && object.goal_source == GoalSource::kLlm && object.achieved) milk_adopted = true;
   EXPECT_TRUE(milk_adopted);
   // Turned off, the unusable answer fails the object, as before.
   ExperimentOptions no_reprompt = experiment_options(factory("openai:" + server.url()));
   no_reprompt.goal_repair.reprompt = false;
   ConditionResult once = testing::run(scenario, "search4+llm", no_reprompt);
-  for (const ObjectReport& object : once.report.objects)
+  for (const ObjectReport& object : once.agent.objects)
     if (object.object.rfind("milk", 0) == 0) {
       EXPECT_NE(object.goal_source, GoalSource::kLlm);
     }

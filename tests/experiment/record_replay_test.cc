@@ -50,7 +50,7 @@ void expect_same_run(const ConditionResult& recorded, const ConditionResult& rep
   EXPECT_EQ(replayed.llm_tokens, recorded.llm_tokens);
   EXPECT_EQ(replayed.completion_rate, recorded.completion_rate);
   EXPECT_EQ(replayed.assertions_achieved, recorded.assertions_achieved);
-  EXPECT_EQ(replayed.search_nodes, recorded.search_nodes);
+  EXPECT_EQ(replayed.agent.search_nodes, recorded.agent.search_nodes);
   EXPECT_EQ(replayed.transcript, recorded.transcript);
 }
 

@@ -18,7 +18,7 @@ ConditionResult result(std::string condition, double completion, std::optional<d
   r.completion_rate = completion;
   r.relevance = relevance;
   r.counts = DialogueCounts{instructions, words, yes_no, 0};
-  r.search_nodes = 260;
+  r.agent.search_nodes = 260;
   r.llm_calls = 7;
   r.wall_ms = 1.25;
   r.objects_done = 30;
@@ -177,7 +177,7 @@ TEST(RunCondition, EachRunStartsFromEmptyKnowledgeAndTheInitialWorld) {
   ConditionResult second = testing::run(scenario, "inst+search4", testing::experiment_options());
   EXPECT_EQ(first.counts, second.counts);
   EXPECT_EQ(first.transcript, second.transcript);
-  EXPECT_EQ(first.search_nodes, second.search_nodes);
+  EXPECT_EQ(first.agent.search_nodes, second.agent.search_nodes);
   EXPECT_EQ(first.counts, (DialogueCounts{40, 603, 0, 0}));
   EXPECT_EQ(first.completion_rate, 100.0);
   EXPECT_EQ(first.objects_done, 30);
