@@ -121,7 +121,7 @@ std::vector<DestinationProposal> GoalProposer::propose(const World& world, const
   // shopping.
   const std::vector<const GoalKnowledge*> prior = prior_for(key);
   if (!prior.empty() && prior.front()->key.task != key.task)
-    for (DestinationProposal& p : out) p.confidence *= 0.5;
+    for (DestinationProposal& p : out) p.discount = 0.5;
   // The person's rules and the LLM's summary's, where said for this task
   // (or before any task).
   std::vector<ClassRule> applicable;

@@ -23,7 +23,7 @@ std::vector<SourceBelief> by_source(std::span<const DestinationProposal> proposa
   for (const DestinationProposal& p : proposals) {
     auto s = std::find_if(sources.begin(), sources.end(), [&](const SourceBelief& b) { return b.source == p.source; });
     if (s == sources.end()) s = sources.insert(sources.end(), SourceBelief{p.source, {}, 0});
-    double confidence = std::clamp(policy.calibrated(p.source, p.confidence), kFloor, 1.0);
+    double confidence = std::clamp(policy.calibrated(p.source, p.confidence) * p.discount, kFloor, 1.0);
     auto d = std::find_if(s->named.begin(), s->named.end(), [&](const auto& n) { return n.first == p.destination; });
     if (d == s->named.end()) s->named.emplace_back(p.destination, confidence);
     else d->second = std::max(d->second, confidence);
@@ -131,7 +131,7 @@ Decision decide(std::span<const DestinationProposal> proposals, std::size_t plac
   for (const DestinationProposal& p : proposals)
     if (std::find(policy.not_disputing.begin(), policy.not_disputing.end(), p.source) == policy.not_disputing.end()) {
       disputing.push_back(p);
-      disputing.back().confidence = policy.calibrated(p.source, p.confidence);
+      disputing.back().confidence = policy.calibrated(p.source, p.confidence) * p.discount;
     }
   decision.disputed = disputed(disputing, best.destination, policy.dispute_at);
   const double act_at = decision.disputed ? std::max(policy.act_at, policy.act_disputed_at) : policy.act_at;

@@ -63,6 +63,12 @@ struct DestinationProposal {
   // The fleet's (knowledge/fleet_prior.h): how many other households put
   // the kind there, of how many that taught it.
   std::size_t households = 0, of_households = 0;
+  // The share of its chance, once calibrated (DecisionPolicy::calibration),
+  // that the proposal keeps: less than 1 for evidence from elsewhere (the
+  // examples of another task count half, agent/goal_proposals.h). Applied
+  // after the calibration, so that a calibration that flattens a source's
+  // confidences does not erase it.
+  double discount = 1;
 };
 
 // The combined belief in one destination.

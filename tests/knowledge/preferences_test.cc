@@ -237,6 +237,34 @@ TEST(Decision, ACalibratedSourceCountsForTheChanceItIsRightNotItsOwnFigure) {
   EXPECT_DOUBLE_EQ(calibrated.support.front().confidence, 0.999);
 }
 
+TEST(Decision, ADiscountedProposalKeepsItsShareOfTheCalibratedChance) {
+  DecisionPolicy policy;
+  policy.act_at = 0.9;
+  policy.confirm_at = 0.25;
+  // A calibration that flattens the induced rules (every figure one chance,
+  // about 0.82) would erase a discount taken off the figure itself; taken
+  // off the calibrated chance, the examples of another task still count
+  // half.
+  policy.calibration[ProposalSource::kInducedRule] = Calibration{1.5, 0.0};
+  DestinationProposal here{on("table"), 0.6, ProposalSource::kInducedRule, {}, {}, ""};
+  DestinationProposal elsewhere = here;
+  elsewhere.discount = 0.5;
+  const double chance = policy.calibrated(ProposalSource::kInducedRule, 0.6);
+  EXPECT_NEAR(decide(std::vector<DestinationProposal>{here}, 4, policy).confidence, chance, 1e-9);
+  Decision discounted = decide(std::vector<DestinationProposal>{elsewhere}, 4, policy);
+  EXPECT_NEAR(discounted.confidence, 0.5 * chance, 1e-9);
+  EXPECT_EQ(discounted.kind, Decision::Kind::kConfirm);
+  // Halving the figure instead is lost in the flat calibration.
+  DestinationProposal halved = here;
+  halved.confidence = 0.3;
+  EXPECT_NEAR(decide(std::vector<DestinationProposal>{halved}, 4, policy).confidence, chance, 1e-9);
+  // And a discounted source disputes only at its discounted chance.
+  DestinationProposal llm{in("box"), 0.95, ProposalSource::kLlmPlacement, {}, {}, ""};
+  policy.dispute_at = 0.5;
+  EXPECT_TRUE(decide(std::vector<DestinationProposal>{llm, here}, 4, policy).disputed);
+  EXPECT_FALSE(decide(std::vector<DestinationProposal>{llm, elsewhere}, 4, policy).disputed);
+}
+
 TEST(Decision, ASourceSureOfAnotherPlaceMakesTheAgentAskUnlessTheRestIsVerySure) {
   DecisionPolicy policy;
   policy.act_at = 0.9;
