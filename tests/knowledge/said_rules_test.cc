@@ -101,6 +101,47 @@ TEST(SaidRules, TheRestTakesOnlyWhatNoOtherClauseIsSureOf) {
   EXPECT_EQ(blouse.front().destination, on("bed"));
 }
 
+TEST(SaidRules, TheRestIsInDoubtWhereAnotherClauseFitsToo) {
+  TableConcepts concepts;
+  std::vector<ClassRule> rules = {said("outerwear", in("closet")), said("clothes", on("bed"), /*rest=*/true)};
+  // Not outerwear by WordNet, only clothing, but near "outerwear" by the
+  // vectors: the rest's bed stays below what the agent acts on alone.
+  const KindProfile jacket = thing("ski jacket", {"clothing"}, {0.2f, 0.98f});
+  ASSERT_TRUE(clause_evidence(rules[0], jacket, concepts).fits());
+  auto doubted = said_rule_proposals(rules, jacket, RuleSource::kPerson, concepts);
+  ASSERT_FALSE(doubted.empty());
+  EXPECT_EQ(doubted.front().destination, on("bed"));
+  EXPECT_LE(doubted.front().confidence, SaidRuleWeights{}.rest_in_doubt * 0.95 + 1e-9);
+  // Beside a clause the jacket does not fit, the rest takes it surely.
+  std::vector<ClassRule> beside_toys = {said("toys", in("closet")), said("clothes", on("bed"), /*rest=*/true)};
+  ASSERT_FALSE(clause_evidence(beside_toys[0], jacket, concepts).fits());
+  auto sure = said_rule_proposals(beside_toys, jacket, RuleSource::kPerson, concepts);
+  ASSERT_FALSE(sure.empty());
+  EXPECT_EQ(sure.front().destination, on("bed"));
+  EXPECT_GT(sure.front().confidence, 0.9);
+}
+
+TEST(SaidRules, AClassWordNetDoesNotKnowIsItsHeadWithModifiers) {
+  TableConcepts concepts;
+  // "light-colored clothes" is no noun of WordNet's; "clothes" is.
+  const ClassRule light = said("light-colored clothes", in("large-hamper"));
+  const ClassRule split = as_head_and_modifiers(light, concepts);
+  EXPECT_EQ(split.class_name, "clothes");
+  EXPECT_THAT(split.modifiers, testing::ElementsAre("light-colored"));
+  EXPECT_EQ(as_head_and_modifiers(said("toys", in("box")), concepts).class_name, "toys");
+  std::vector<ClassRule> rules = {light, said("dark-colored clothes", in("small-hamper")), said("toys", in("box"))};
+  // Clothing by WordNet, and "light" in its name: the light-colored clause.
+  const KindProfile top = thing("light yellow tank top", {"clothing"}, {}, {"light", "yellow"});
+  const ClauseEvidence evidence = clause_evidence(rules[0], top, concepts);
+  EXPECT_TRUE(evidence.wordnet);
+  EXPECT_TRUE(evidence.modifiers_in_name);
+  EXPECT_TRUE(clause_evidence(rules[1], top, concepts).modifiers_missing);
+  auto proposals = said_rule_proposals(rules, top, RuleSource::kPerson, concepts);
+  ASSERT_FALSE(proposals.empty());
+  EXPECT_EQ(proposals.front().destination, in("large-hamper"));
+  EXPECT_GT(proposals.front().confidence, 0.9);
+}
+
 TEST(SaidRules, ModifiersInTheNameDecideAndAnExceptionIsHonoured) {
   TableConcepts concepts;
   std::vector<ClassRule> rules = {said("", in("left-box"), false, {"plastic"}), said("", in("right-box"), false, {"metal"})};
