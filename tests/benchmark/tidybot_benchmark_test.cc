@@ -327,6 +327,61 @@ TEST(TidyBotPersonsRule, ANoteSaidWhereAThingGoesPlacesIt) {
   }
 }
 
+// A "no" to a yes/no about one thing is followed by where it goes, not by
+// a second guess (docs/benchmarks.md, "After a no, where").
+TEST(TidyBotPersonsRule, AfterANoTheTeacherIsAskedWhere) {
+  const std::string garage = R"(- annotator_notes: Put heavy items on the bottom shelf and light items on the top shelf.
+  benchmark_index: 7
+  receptacles:
+  - top shelf
+  - bottom shelf
+  - basket
+  room: garage
+  seen_objects:
+  - dumbbell
+  - feather
+  seen_placements:
+  - - dumbbell
+    - bottom shelf
+  - - feather
+    - top shelf
+  tags:
+  - attribute
+  unseen_objects:
+  - brick
+  - paper towel
+  - bowling ball
+  - balloon
+  - tire
+  - sponge
+  unseen_placements:
+  - - brick
+    - bottom shelf
+  - - paper towel
+    - top shelf
+  - - bowling ball
+    - bottom shelf
+  - - balloon
+    - top shelf
+  - - tire
+    - bottom shelf
+  - - sponge
+    - top shelf
+)";
+  auto results = run_protocol_b(garage);
+  ASSERT_TRUE(results);
+  ASSERT_EQ(results->results.size(), 2u);
+  const std::string& taught = results->results[1].scenarios[0].transcript;
+  const std::string no = "Instructor: no.\n";
+  std::size_t noes = 0;
+  for (std::size_t at = taught.find(no); at != std::string::npos; at = taught.find(no, at + 1)) {
+    ++noes;
+    EXPECT_EQ(taught.compare(at + no.size(), 19, "Agent: Where should"), 0) << taught.substr(at, 200);
+  }
+  // The vectors alone tell heavy from light: some guess is refused.
+  EXPECT_GT(noes, 0u) << taught;
+}
+
 TEST(TidyBotPersonsRule, AClassRuleIsNotOfferedForThingsOutsideItsClass) {
   const std::string nursery = R"(- annotator_notes: Dummies go in the top drawer.
   benchmark_index: 3
