@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "util/cosine.h"
 #include "util/text.h"
@@ -150,19 +151,28 @@ std::vector<DestinationProposal> said_rule_proposals(std::span<const ClassRule> 
   const double top = std::max(*std::max_element(scores.begin(), scores.end()), weights.none);
   double total = std::exp(weights.none - top);
   for (double& s : scores) total += s = std::exp(s - top);
+  std::vector<double> shares(mine.size());
+  for (std::size_t i = 0; i < mine.size(); ++i) shares[i] = scores[i] / total;
   // A person's rule for the rest is in doubt when a class said beside it
   // also fits the thing, if not surely ("outerwear in the closet and other
-  // clothes on the bed": is a ski jacket outerwear?): it is asked about,
-  // not acted on.
-  bool another_fits = false;
+  // clothes on the bed": is a ski jacket outerwear?): what the rest has
+  // above rest_in_doubt goes to the best of those clauses, so that the
+  // thing is asked about, not placed alone, however few places there are.
+  std::optional<std::size_t> fitting;
   for (std::size_t i = 0; i < mine.size(); ++i)
-    another_fits = another_fits || (!mine[i]->rest && evidence[i].said_a_class && evidence[i].fits());
+    if (!mine[i]->rest && evidence[i].said_a_class && evidence[i].fits() && (!fitting || scores[i] > scores[*fitting]))
+      fitting = i;
+  if (source == RuleSource::kPerson && fitting)
+    for (std::size_t i = 0; i < mine.size(); ++i)
+      if (mine[i]->rest && shares[i] > weights.rest_in_doubt) {
+        shares[*fitting] += shares[i] - weights.rest_in_doubt;
+        shares[i] = weights.rest_in_doubt;
+      }
   std::vector<DestinationProposal> out;
   for (std::size_t i = 0; i < mine.size(); ++i) {
     const ClassRule& rule = *mine[i];
     if (source == RuleSource::kPerson && !evidence[i].fits()) continue;
-    double share = scores[i] / total;
-    if (source == RuleSource::kPerson && rule.rest && another_fits) share = std::min(share, weights.rest_in_doubt);
+    const double share = shares[i];
     auto same = std::find_if(out.begin(), out.end(), [&](const DestinationProposal& p) { return p.destination == rule.destination; });
     if (same != out.end()) {
       same->confidence += share * rule.confidence;

@@ -93,9 +93,9 @@ struct SaidRuleWeights {
   double rest_penalty = 7.5;
   // The most a person's rule for the rest proposes when another clause of
   // the rule fits the thing too (ClauseEvidence::fits), below what the
-  // agent acts on alone: the person is asked rather than the rest's place
-  // taken. Chosen on the TidyBot benchmark's development half
-  // (docs/benchmarks.md, "The rest in doubt").
+  // agent acts on alone; the rest of its share goes to the best such
+  // clause: the person is asked rather than the rest's place taken
+  // (docs/benchmarks.md, "The person's rule at a where-question").
   double rest_in_doubt = 0.7;
   // The score of "none of the clauses": a thing that fits no clause well
   // (or only one it is an exception to) is not pushed onto the others.
