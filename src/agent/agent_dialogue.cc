@@ -198,6 +198,10 @@ TaskLearningAgent::Session::Flow<TaskLearningAgent::Session::Heard> TaskLearning
     // again (a program is asked at most max_retries times).
     if (auto rule = rule_in_reply(*text, reply, context)) {
       hear_rule(*rule, *text);
+      // Asked where a thing goes, the rule may place it: the caller decides
+      // again before asking.
+      if (context.asked == language::Asked::kGoal && context.object && asked.kind == QuestionKind::kSubtaskStep)
+        return Heard{std::nullopt, *text, refused, true};
       refused.push_back(apprentice::quoted(*text) + " (a rule, kept, but no answer to the question)");
       if (!person() && ++unusable > agent_.options_.max_retries) return Heard{std::nullopt, *text, refused};
       continue;

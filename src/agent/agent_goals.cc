@@ -189,6 +189,14 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
         },
         [&](const std::string& text) { return goal_for_another(object, text); });
     if (!heard) return tl::unexpected(heard.error());
+    if (heard->rule_heard) {
+      // A person's rule said instead of where this thing goes: it is
+      // weighed with the other sources first (it may place the thing, or
+      // make a yes/no of the question); else the question comes again.
+      auto decided = goal_by_decision(object, report);
+      if (!decided || *decided) return decided;
+      continue;
+    }
     if (!heard->reply) {
       // Given up on after refused replies: said in the report, with them.
       report.note = "no usable goal from the instructor";

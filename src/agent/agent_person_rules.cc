@@ -83,11 +83,19 @@ std::optional<language::RuleReading> TaskLearningAgent::Session::rule_in_reply(
   // A class that is only the world's kinds named in the plural ("plates and
   // forks go in the dishwasher") is the reply's ordinary reading; so is "an
   // object" ("Repeat the following tasks while an object is on the table").
+  // A word that the reference resolves to one kind only through WordNet
+  // ("clothes" to the dress: not a word of its name) is a class all the
+  // same; "plates" for the plate is that kind.
   auto a_class_of_its_own = [&](const language::RuleClass& c) {
     if (c.rest) return true;
     if (c.phrase.empty() || (is_general_head(c.head) && c.modifiers.empty())) return false;
     if (is_general_head(c.head)) return true;
-    return !agent_.understanding_.category(world(), c.phrase).has_value();
+    const std::optional<std::string> kind = agent_.understanding_.category(world(), c.phrase);
+    if (!kind) return true;
+    std::string name = *kind;
+    std::replace(name.begin(), name.end(), '-', ' ');
+    const std::vector<std::string> words = split_words(name);
+    return std::find(words.begin(), words.end(), c.head) == words.end();
   };
   std::size_t class_clauses = 0;
   bool rest = false;

@@ -63,6 +63,9 @@ class TaskLearningAgent::Session {
     // The replies refused at this question before it, each as typed with
     // why it could not be used ("\"on the tabel\" (I do not know the word 'tabel')").
     std::vector<std::string> refused = {};
+    // The reply was a person's rule, kept, said where the question was
+    // where a thing goes: the rule may answer it (no reply then).
+    bool rule_heard = false;
   };
   // Why a reply, though understood, does not answer this question; nullopt
   // if it does.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "util/cosine.h"
 #include "util/text.h"
@@ -30,14 +31,37 @@ std::vector<std::string> name_words_of(const KindProfile& thing) {
 
 bool in_name(const KindProfile& thing, const std::string& word) {
   const std::vector<std::string> words = name_words_of(thing);
-  return std::find(words.begin(), words.end(), singular(word)) != words.end();
+  auto has = [&](const std::string& w) { return std::find(words.begin(), words.end(), singular(w)) != words.end(); };
+  if (has(word)) return true;
+  // A compound modifier is in the name when its words are ("stainless-steel
+  // spoon": "stainless steel"), or its first word is and the rest says how
+  // ("light-colored": the light yellow tank top; "short-sleeved").
+  std::vector<std::string> parts;
+  for (std::size_t at = 0, dash; at <= word.size(); at = dash + 1) {
+    dash = std::min(word.find('-', at), word.size());
+    if (dash > at) parts.push_back(word.substr(at, dash - at));
+  }
+  if (parts.size() < 2) return false;
+  if (std::all_of(parts.begin(), parts.end(), has)) return true;
+  return has(parts.front()) && parts.back().size() > 3 && parts.back().ends_with("ed");
 }
 
 }  // namespace
 
-ClauseEvidence clause_evidence(const ClassRule& rule, const KindProfile& thing, const ConceptSource& concepts) {
+ClassRule as_head_and_modifiers(const ClassRule& rule, const ConceptSource& concepts) {
+  if (rule.class_name.empty() || !rule.class_id.empty() || !concepts.classes_named(rule.class_name).empty()) return rule;
+  const std::vector<std::string> words = split_words(rule.class_name);
+  if (words.size() < 2 || concepts.classes_named(words.back()).empty()) return rule;
+  ClassRule out = rule;
+  out.class_name = words.back();
+  out.modifiers.insert(out.modifiers.begin(), words.begin(), words.end() - 1);
+  return out;
+}
+
+ClauseEvidence clause_evidence(const ClassRule& as_said, const KindProfile& thing, const ConceptSource& concepts) {
   ClauseEvidence e;
-  e.said_a_class = !rule.class_id.empty() || !rule.class_name.empty() || !rule.modifiers.empty();
+  e.said_a_class = !as_said.class_id.empty() || !as_said.class_name.empty() || !as_said.modifiers.empty();
+  const ClassRule rule = as_head_and_modifiers(as_said, concepts);
   if (!rule.class_id.empty()) {
     e.wordnet = std::any_of(thing.classes.begin(), thing.classes.end(), [&](const ConceptClass& c) { return c.id == rule.class_id; });
   } else if (!rule.class_name.empty()) {
@@ -127,11 +151,28 @@ std::vector<DestinationProposal> said_rule_proposals(std::span<const ClassRule> 
   const double top = std::max(*std::max_element(scores.begin(), scores.end()), weights.none);
   double total = std::exp(weights.none - top);
   for (double& s : scores) total += s = std::exp(s - top);
+  std::vector<double> shares(mine.size());
+  for (std::size_t i = 0; i < mine.size(); ++i) shares[i] = scores[i] / total;
+  // A person's rule for the rest is in doubt when a class said beside it
+  // also fits the thing, if not surely ("outerwear in the closet and other
+  // clothes on the bed": is a ski jacket outerwear?): what the rest has
+  // above rest_in_doubt goes to the best of those clauses, so that the
+  // thing is asked about, not placed alone, however few places there are.
+  std::optional<std::size_t> fitting;
+  for (std::size_t i = 0; i < mine.size(); ++i)
+    if (!mine[i]->rest && evidence[i].said_a_class && evidence[i].fits() && (!fitting || scores[i] > scores[*fitting]))
+      fitting = i;
+  if (source == RuleSource::kPerson && fitting)
+    for (std::size_t i = 0; i < mine.size(); ++i)
+      if (mine[i]->rest && shares[i] > weights.rest_in_doubt) {
+        shares[*fitting] += shares[i] - weights.rest_in_doubt;
+        shares[i] = weights.rest_in_doubt;
+      }
   std::vector<DestinationProposal> out;
   for (std::size_t i = 0; i < mine.size(); ++i) {
     const ClassRule& rule = *mine[i];
     if (source == RuleSource::kPerson && !evidence[i].fits()) continue;
-    const double share = scores[i] / total;
+    const double share = shares[i];
     auto same = std::find_if(out.begin(), out.end(), [&](const DestinationProposal& p) { return p.destination == rule.destination; });
     if (same != out.end()) {
       same->confidence += share * rule.confidence;

@@ -61,6 +61,13 @@ inline constexpr double kFitCosine = 0.3;
 // How many steps above a thing its WordNet classes' names count.
 inline constexpr int kAncestorDepth = 4;
 
+// A class said with words before its head that WordNet does not know as
+// one noun ("light-colored clothes", "winter clothes", "plastic toys"), as
+// its head's class ("clothes") with those words as modifiers: WordNet then
+// speaks for the head, the name's words for the modifiers. Any other rule
+// as it is.
+ClassRule as_head_and_modifiers(const ClassRule& rule, const ConceptSource& concepts);
+
 ClauseEvidence clause_evidence(const ClassRule& rule, const KindProfile& thing, const ConceptSource& concepts);
 
 // The weights of the evidence in a clause's score, before the clauses
@@ -84,6 +91,12 @@ struct SaidRuleWeights {
   // name's words).
   double rest = 3.0;
   double rest_penalty = 7.5;
+  // The most a person's rule for the rest proposes when another clause of
+  // the rule fits the thing too (ClauseEvidence::fits), below what the
+  // agent acts on alone; the rest of its share goes to the best such
+  // clause: the person is asked rather than the rest's place taken
+  // (docs/benchmarks.md, "The person's rule at a where-question").
+  double rest_in_doubt = 0.7;
   // The score of "none of the clauses": a thing that fits no clause well
   // (or only one it is an exception to) is not pushed onto the others.
   double none = 2.0;

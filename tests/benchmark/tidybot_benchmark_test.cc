@@ -7,6 +7,8 @@
 
 #include "benchmark/tidybot_benchmark.h"
 #include <fstream>
+#include <optional>
+#include <string>
 
 #include "common/paths.h"
 #include "common/scratch.h"
@@ -259,6 +261,127 @@ TEST(TidyBotRecorded, TheDevelopmentHalfScoresAsItsReadmeSays) {
 // was offered for the rattle, the teddy bear, the blanket and the board
 // book ("Does the rattle ... go as you said: it goes in the top drawer?"):
 // nothing says any of them is a dummy.
+// Protocol B alone and with the teacher (b-alone, b-teacher) on scenarios
+// in the benchmark's format; nullopt (a failure added) when they do not run.
+std::optional<BenchmarkResults> run_protocol_b(const std::string& yaml) {
+  auto scenarios = parse_tidybot_scenarios(yaml, "written-here.yml");
+  if (!scenarios) {
+    ADD_FAILURE() << scenarios.error().describe();
+    return std::nullopt;
+  }
+  BenchmarkOptions options;
+  options.prompts_dir = apprentice::testing::source_path("data/prompts");
+  options.domain = apprentice::testing::source_path("data/domains/kitchen.pddl");
+  options.keep_transcripts = true;
+  for (const char* name : {"b-alone", "b-teacher"}) options.settings.push_back(*parse_setting(name));
+  auto results = run_tidybot(*scenarios, options);
+  if (!results) {
+    ADD_FAILURE() << results.error().describe();
+    return std::nullopt;
+  }
+  return std::move(*results);
+}
+
+// The note said as the answer to where the first thing goes: kept as a
+// rule (though "clothes" alone would name the skirt, the only kind here
+// WordNet puts under it by that word), and the thing asked about is placed
+// by it, not asked about again.
+TEST(TidyBotPersonsRule, ANoteSaidWhereAThingGoesPlacesIt) {
+  const std::string bedroom = R"(- annotator_notes: Put clothes in the hamper and toys in the toy box.
+  benchmark_index: 5
+  receptacles:
+  - hamper
+  - toy box
+  room: bedroom
+  seen_objects:
+  - skirt
+  - toy car
+  seen_placements:
+  - - skirt
+    - hamper
+  - - toy car
+    - toy box
+  tags:
+  - category
+  unseen_objects:
+  - jeans
+  - toy train
+  unseen_placements:
+  - - jeans
+    - hamper
+  - - toy train
+    - toy box
+)";
+  auto results = run_protocol_b(bedroom);
+  ASSERT_TRUE(results);
+  ASSERT_EQ(results->results.size(), 2u);
+  const ScenarioOutcome& taught = results->results[1].scenarios[0];
+  EXPECT_THAT(taught.transcript, HasSubstr("So clothes go in the hamper and toys go in the toy box.")) << taught.transcript;
+  const std::string first = "Where should the skirt on the cart go?";
+  const std::size_t asked = taught.transcript.find(first);
+  ASSERT_NE(asked, std::string::npos) << taught.transcript;
+  EXPECT_EQ(taught.transcript.find(first, asked + 1), std::string::npos) << taught.transcript;
+  for (const ObjectOutcome& o : taught.objects) {
+    if (o.object != "skirt") continue;
+    EXPECT_EQ(o.placed, "hamper");
+  }
+}
+
+// A "no" to a yes/no about one thing is followed by where it goes, not by
+// a second guess (docs/benchmarks.md, "After a no, where").
+TEST(TidyBotPersonsRule, AfterANoTheTeacherIsAskedWhere) {
+  const std::string garage = R"(- annotator_notes: Put heavy items on the bottom shelf and light items on the top shelf.
+  benchmark_index: 7
+  receptacles:
+  - top shelf
+  - bottom shelf
+  - basket
+  room: garage
+  seen_objects:
+  - dumbbell
+  - feather
+  seen_placements:
+  - - dumbbell
+    - bottom shelf
+  - - feather
+    - top shelf
+  tags:
+  - attribute
+  unseen_objects:
+  - brick
+  - paper towel
+  - bowling ball
+  - balloon
+  - tire
+  - sponge
+  unseen_placements:
+  - - brick
+    - bottom shelf
+  - - paper towel
+    - top shelf
+  - - bowling ball
+    - bottom shelf
+  - - balloon
+    - top shelf
+  - - tire
+    - bottom shelf
+  - - sponge
+    - top shelf
+)";
+  auto results = run_protocol_b(garage);
+  ASSERT_TRUE(results);
+  ASSERT_EQ(results->results.size(), 2u);
+  const std::string& taught = results->results[1].scenarios[0].transcript;
+  const std::string no = "Instructor: no.\n";
+  std::size_t noes = 0;
+  for (std::size_t at = taught.find(no); at != std::string::npos; at = taught.find(no, at + 1)) {
+    ++noes;
+    EXPECT_EQ(taught.compare(at + no.size(), 19, "Agent: Where should"), 0) << taught.substr(at, 200);
+  }
+  // The vectors alone tell heavy from light: some guess is refused.
+  EXPECT_GT(noes, 0u) << taught;
+}
+
 TEST(TidyBotPersonsRule, AClassRuleIsNotOfferedForThingsOutsideItsClass) {
   const std::string nursery = R"(- annotator_notes: Dummies go in the top drawer.
   benchmark_index: 3
@@ -290,15 +413,8 @@ TEST(TidyBotPersonsRule, AClassRuleIsNotOfferedForThingsOutsideItsClass) {
   - - board book
     - shelf
 )";
-  auto scenarios = parse_tidybot_scenarios(nursery, "nursery.yml");
-  ASSERT_TRUE(scenarios) << scenarios.error().describe();
-  BenchmarkOptions options;
-  options.prompts_dir = apprentice::testing::source_path("data/prompts");
-  options.domain = apprentice::testing::source_path("data/domains/kitchen.pddl");
-  options.keep_transcripts = true;
-  for (const char* name : {"b-alone", "b-teacher"}) options.settings.push_back(*parse_setting(name));
-  auto results = run_tidybot(*scenarios, options);
-  ASSERT_TRUE(results) << results.error().describe();
+  auto results = run_protocol_b(nursery);
+  ASSERT_TRUE(results);
   ASSERT_EQ(results->results.size(), 2u);
   const std::string& taught = results->results[1].scenarios[0].transcript;
   ASSERT_THAT(taught, HasSubstr("Dummies go in the top drawer.")) << taught;

@@ -62,6 +62,14 @@ ClassRule said(const std::string& cls, Destination where, bool rest = false, std
   return rule;
 }
 
+// The person's rules' most confident proposal for a thing (an empty one,
+// failing the test, when they propose nothing).
+DestinationProposal best_of(const std::vector<ClassRule>& rules, const KindProfile& thing, const ConceptSource& concepts) {
+  auto proposals = said_rule_proposals(rules, thing, RuleSource::kPerson, concepts);
+  EXPECT_FALSE(proposals.empty());
+  return proposals.empty() ? DestinationProposal{} : proposals.front();
+}
+
 TEST(SaidRules, WordNetPutsAThingUnderItsClause) {
   TableConcepts concepts;
   std::vector<ClassRule> rules = {said("toys", in("storage-box")), said("clothes", on("chair"))};
@@ -99,6 +107,44 @@ TEST(SaidRules, TheRestTakesOnlyWhatNoOtherClauseIsSureOf) {
   auto blouse = said_rule_proposals(rules, thing("blouse", {"clothing"}, {0, 1}), RuleSource::kPerson, concepts);
   ASSERT_FALSE(blouse.empty());
   EXPECT_EQ(blouse.front().destination, on("bed"));
+}
+
+TEST(SaidRules, TheRestIsInDoubtWhereAnotherClauseFitsToo) {
+  TableConcepts concepts;
+  std::vector<ClassRule> rules = {said("outerwear", in("closet")), said("clothes", on("bed"), /*rest=*/true)};
+  // Not outerwear by WordNet, only clothing, but near "outerwear" by the
+  // vectors: the rest's bed stays below what the agent acts on alone.
+  const KindProfile jacket = thing("ski jacket", {"clothing"}, {0.2f, 0.98f});
+  ASSERT_TRUE(clause_evidence(rules[0], jacket, concepts).fits());
+  const DestinationProposal doubted = best_of(rules, jacket, concepts);
+  EXPECT_EQ(doubted.destination, on("bed"));
+  EXPECT_LE(doubted.confidence, SaidRuleWeights{}.rest_in_doubt * 0.95 + 1e-9);
+  // Beside a clause the jacket does not fit, the rest takes it surely.
+  std::vector<ClassRule> beside_toys = {said("toys", in("closet")), said("clothes", on("bed"), /*rest=*/true)};
+  ASSERT_FALSE(clause_evidence(beside_toys[0], jacket, concepts).fits());
+  const DestinationProposal sure = best_of(beside_toys, jacket, concepts);
+  EXPECT_EQ(sure.destination, on("bed"));
+  EXPECT_GT(sure.confidence, 0.9);
+}
+
+TEST(SaidRules, AClassWordNetDoesNotKnowIsItsHeadWithModifiers) {
+  TableConcepts concepts;
+  // "light-colored clothes" is no noun of WordNet's; "clothes" is.
+  const ClassRule light = said("light-colored clothes", in("large-hamper"));
+  const ClassRule split = as_head_and_modifiers(light, concepts);
+  EXPECT_EQ(split.class_name, "clothes");
+  EXPECT_THAT(split.modifiers, testing::ElementsAre("light-colored"));
+  EXPECT_EQ(as_head_and_modifiers(said("toys", in("box")), concepts).class_name, "toys");
+  std::vector<ClassRule> rules = {light, said("dark-colored clothes", in("small-hamper")), said("toys", in("box"))};
+  // Clothing by WordNet, and "light" in its name: the light-colored clause.
+  const KindProfile top = thing("light yellow tank top", {"clothing"}, {}, {"light", "yellow"});
+  const ClauseEvidence evidence = clause_evidence(rules[0], top, concepts);
+  EXPECT_TRUE(evidence.wordnet);
+  EXPECT_TRUE(evidence.modifiers_in_name);
+  EXPECT_TRUE(clause_evidence(rules[1], top, concepts).modifiers_missing);
+  const DestinationProposal best = best_of(rules, top, concepts);
+  EXPECT_EQ(best.destination, in("large-hamper"));
+  EXPECT_GT(best.confidence, 0.9);
 }
 
 TEST(SaidRules, ModifiersInTheNameDecideAndAnExceptionIsHonoured) {
