@@ -17,6 +17,7 @@
 #include <set>
 
 #include "agent/session.h"
+#include "language/known_verbs.h"
 #include "language/narration.h"
 #include "util/log.h"
 #include "util/text.h"
@@ -45,10 +46,15 @@ Result<AgentReport> TaskLearningAgent::learn(Simulator& simulator, Dialogue& dia
   return session.learn_task();
 }
 
+const TaskKnowledge* TaskLearningAgent::find_task(const std::string& name) const {
+  if (const TaskKnowledge* task = knowledge_.find_task(name)) return task;
+  if (name.empty()) return knowledge_.tasks.size() == 1 ? &knowledge_.tasks.front() : nullptr;
+  return knowledge_.find_task(language::task_name_as_read(understanding_.lexicon(), name));
+}
+
 Result<AgentReport> TaskLearningAgent::perform(Simulator& simulator, const std::string& task_name) {
   Session session(*this, simulator, nullptr, false);  // first: it may rename what is known (transfer.h)
-  const TaskKnowledge* task = knowledge_.find_task(task_name);
-  if (task == nullptr && task_name.empty() && knowledge_.tasks.size() == 1) task = &knowledge_.tasks.front();
+  const TaskKnowledge* task = find_task(task_name);
   if (task == nullptr)
     return make_error(ErrorCode::kNotFound, "no task '" + task_name + "' has been learned");
   return session.perform_task(*task);

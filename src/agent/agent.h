@@ -92,6 +92,12 @@ class TaskLearningAgent {
 
   const Knowledge& knowledge() const { return knowledge_; }
 
+  // The learned task a name stands for: the task of that name, or the one
+  // a teacher saying the name would have taught ("clean living room" finds
+  // "tidy living room", language::task_name_as_read); with an empty name,
+  // the only task when exactly one was learned. Null when none.
+  const TaskKnowledge* find_task(const std::string& name) const;
+
   // Watches `store` (borrowed; it must outlive the agent; null: none) for
   // what other robots learn while this one runs: before each object it
   // takes the store's news (KnowledgeStore::news), goals of its household

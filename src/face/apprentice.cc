@@ -230,10 +230,11 @@ void add_llm_totals(const LlmAdvisor* advisor, SessionReport& out) {
 
 // Why there is nothing to perform, naming the store (or the agent) and what
 // it holds; nothing when there is a task to perform.
-std::optional<Error> unknown_task(const Knowledge& knowledge, const std::string& name, const std::string& holder) {
+std::optional<Error> unknown_task(const TaskLearningAgent& agent, const std::string& name, const std::string& holder) {
+  const Knowledge& knowledge = agent.knowledge();
   if (knowledge.tasks.empty())
     return Error{ErrorCode::kNotFound, holder + " holds no learned task yet; teach one with 'apprentice teach'"};
-  if (knowledge.find_task(name) != nullptr || (name.empty() && knowledge.tasks.size() == 1)) return std::nullopt;
+  if (agent.find_task(name) != nullptr) return std::nullopt;
   std::vector<std::string> names;
   for (const TaskKnowledge& task : knowledge.tasks) names.push_back(apprentice::quoted(task.name));
   const std::string holds =
@@ -304,7 +305,7 @@ Result<SessionReport> AgentSession::learn(Instructor& instructor) {
 
 Result<SessionReport> AgentSession::perform(const std::string& task, const Scenario* elsewhere) {
   const std::string holder = parts_->store ? parts_->store->location() : std::string("the agent");
-  if (auto missing = unknown_task(parts_->agent->knowledge(), task, holder)) return tl::unexpected(*missing);
+  if (auto missing = unknown_task(*parts_->agent, task, holder)) return tl::unexpected(*missing);
   const Scenario& scenario = elsewhere != nullptr ? *elsewhere : parts_->scenario;
   Simulator simulator(scenario.world);
   auto report = parts_->agent->perform(simulator, task);

@@ -115,6 +115,23 @@ std::optional<VerbTaken> known_task_verb(const Lexicon& lexicon, std::string_vie
   return nearest(lexicon, verb, particle, kTaskVerbs, std::nullopt);
 }
 
+std::string task_name_as_read(const Lexicon& lexicon, std::string_view name) {
+  std::vector<std::string> words;
+  for (std::size_t at = 0; at < name.size();) {
+    const std::size_t end = std::min(name.find(' ', at), name.size());
+    if (end > at) words.emplace_back(name.substr(at, end - at));
+    at = end + 1;
+  }
+  if (words.size() < 2) return std::string(name);
+  // "clean up garage": the particle is said with the verb, and dropped.
+  const bool particle = words.size() > 2 && (words[1] == "up" || words[1] == "out");
+  auto taken = known_task_verb(lexicon, words[0], particle ? words[1] : std::string());
+  if (!taken) return std::string(name);
+  std::string out = taken->verb;
+  for (std::size_t i = particle ? 2 : 1; i < words.size(); ++i) out += " " + words[i];
+  return out;
+}
+
 std::optional<VerbTaken> known_step_verb(const Lexicon& lexicon, std::string_view verb, std::string_view particle,
                                          ObjectKind place, std::span<const std::string> taught) {
   std::string as_said = particle.empty() ? std::string(verb) : std::string(verb) + " " + std::string(particle);

@@ -37,6 +37,13 @@ struct VerbTaken {
 // `said`: the verb and its particle as said ("clean up", "clean").
 std::optional<VerbTaken> known_task_verb(const Lexicon& lexicon, std::string_view verb, std::string_view particle);
 
+// A task's name as the reader names that task when a teacher says it:
+// "clean living room" is "tidy living room", "clean up garage" is "tidy
+// garage"; a name whose verb is known, or has no known verb close, is
+// returned as given. For a name written elsewhere (a scenario's task, run
+// --task) to find the task a teacher's words taught.
+std::string task_name_as_read(const Lexicon& lexicon, std::string_view name);
+
 // The step verb a verb said for a part of the task stands for, at a place
 // of kind `place`; nullopt when it is known (a step verb, or one of
 // `taught`, the verbs of the parts taught so far) or no known one is close.

@@ -361,7 +361,7 @@ TEST_F(Teach, APlayroomTaughtAsAPersonTalks) {
                                  "same as the book on the floor", "crayons go with the blocks", "that's it"})));
   EXPECT_EQ(teach.wait(), 0) << teach.out() << teach.err();
   EXPECT_THAT(teach.out(), HasSubstr("Agent: What should I do first to tidy the playroom?\n"));
-  EXPECT_THAT(teach.out(), HasSubstr("Agent: So I pick up what is on the floor, one thing at a time.\n"));
+  EXPECT_THAT(teach.out(), HasSubstr("Agent: I took \"pick up\" as clearing.\nAgent: So I clear what is on the floor, one thing at a time.\n"));
   EXPECT_THAT(teach.out(), HasSubstr("Instructor: the cars go into the blue one\nAgent: So the toy car goes in the blue bin.\n"));
   EXPECT_THAT(teach.out(), HasSubstr("Instructor: same as the book on the floor\nAgent: So the picture book goes on the bookshelf.\n"));
   EXPECT_THAT(teach.out(), HasSubstr("Instructor: crayons go with the blocks\nAgent: So the crayon goes in the red bin.\n"));

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "fresh_corpus.h"
+#include "language/known_verbs.h"
 #include "language/reply.h"
 #include "language_fixtures.h"
 
@@ -178,6 +179,19 @@ TEST_F(ReplyActsTest, AnotherVerbIsTakenAsTheNearestKnownOneAndSaidSo) {
   // A verb taught for a part is the teacher's own: kept.
   step.taught_subtasks = {"unpack"};
   EXPECT_EQ(acts(step, "unpack the stuff on the counter"), "subtask unpack on counter1");
+}
+
+// A task's name written elsewhere (a scenario, run --task) is named as the
+// reader names the task when a teacher says it, so that it finds what the
+// teacher's words taught.
+TEST_F(ReplyActsTest, ATaskNameWrittenElsewhereIsNamedAsTheReaderNamesIt) {
+  const Lexicon& lexicon = grounder().lexicon();
+  EXPECT_EQ(task_name_as_read(lexicon, "clean living room"), "tidy living room");
+  EXPECT_EQ(task_name_as_read(lexicon, "clean up garage"), "tidy garage");
+  EXPECT_EQ(task_name_as_read(lexicon, "tidy kitchen"), "tidy kitchen");
+  EXPECT_EQ(task_name_as_read(lexicon, "wash bathroom"), "wash bathroom");
+  EXPECT_EQ(task_name_as_read(lexicon, "unpack groceries"), "unpack groceries");
+  EXPECT_EQ(task_name_as_read(lexicon, "clean"), "clean");
 }
 
 // "that's not where it goes" after an undo says what was wrong, not a

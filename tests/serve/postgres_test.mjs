@@ -65,7 +65,7 @@ test('two sessions teach into one PostgreSQL store at once and lose nothing; a l
     // A session started now reads both lessons from the store.
     const c = await client.start('tidy-kitchen', database);
     const asked = await c.teach([kitchen[0]]);
-    assert.ok(c.events.some((e) => e.type === 'say' && /^I know how to clean the kitchen; I will ask only about what is new\.$/.test(e.text)),
+    assert.ok(c.events.some((e) => e.type === 'say' && /^I know how to tidy the kitchen; I will ask only about what is new\.$/.test(e.text)),
               JSON.stringify(c.events.map((e) => e.text)));
     const knows = asked.knowledge.map((k) => k.text).join('\n');
     assert.match(knows, /the ketchup goes in the fridge/i);
