@@ -116,12 +116,7 @@ std::optional<VerbTaken> known_task_verb(const Lexicon& lexicon, std::string_vie
 }
 
 std::string task_name_as_read(const Lexicon& lexicon, std::string_view name) {
-  std::vector<std::string> words;
-  for (std::size_t at = 0; at < name.size();) {
-    const std::size_t end = std::min(name.find(' ', at), name.size());
-    if (end > at) words.emplace_back(name.substr(at, end - at));
-    at = end + 1;
-  }
+  const std::vector<std::string> words = split_words(name);
   if (words.size() < 2) return std::string(name);
   // "clean up garage": the particle is said with the verb, and dropped.
   const bool particle = words.size() > 2 && (words[1] == "up" || words[1] == "out");
