@@ -1,5 +1,7 @@
 #include "agent/goal_proposals.h"
 
+#include "agent/class_rule_knowledge.h"
+
 #include <algorithm>
 #include <set>
 
@@ -153,7 +155,10 @@ std::string evidence_phrase(const World& world, std::span<const DestinationPropo
   bool llm = false;
   const DestinationProposal* fleet = nullptr;
   for (const DestinationProposal& p : support) {
-    if (p.source == ProposalSource::kPersonRule && p.rule && !p.rule->said.empty()) said.push_back(p.rule->said);
+    if (p.source == ProposalSource::kPersonRule && p.rule && !p.rule->said.empty()) {
+      const std::string subject = rule_subject(*p.rule);
+      if (std::find(said.begin(), said.end(), subject) == said.end()) said.push_back(subject);
+    }
     else if (p.source == ProposalSource::kFleet) fleet = fleet != nullptr ? fleet : &p;
     else if (p.source == ProposalSource::kLlmPlacement || p.source == ProposalSource::kLlmExamples ||
              p.source == ProposalSource::kLlmRule) llm = true;
@@ -161,7 +166,9 @@ std::string evidence_phrase(const World& world, std::span<const DestinationPropo
       for (const std::string& kind : p.evidence)
         if (like.size() < 2 && std::find(like.begin(), like.end(), kind) == like.end()) like.push_back(kind);
   }
-  if (!said.empty()) return "as you said";
+  // The class said, so that a person can tell whether the thing is one
+  // ("Does the paint pot go with brushes, as you said: ...?").
+  if (!said.empty()) return "with " + language::list_phrase(said) + ", as you said";
   if (!like.empty()) {
     std::vector<std::string> names;
     for (const std::string& kind : like) names.push_back("the " + language::spoken_category(kind));

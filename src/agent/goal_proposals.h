@@ -86,8 +86,8 @@ std::optional<Goal> goal_at(const World& world, const Destination& destination, 
 std::size_t place_count(const World& world, std::span<const ObjectId> away_from);
 
 // The evidence of a decision, as the agent says it after the destination:
-// "like the banana and the apple", "as you said: fruits on the coffee
-// table", "as the language model placed it", "as in all 9 other households
+// "like the banana and the apple", "with fruits, as you said" (the
+// classes of the person's rules), "as the language model suggests", "as in all 9 other households
 // I know of". "" when there is none.
 std::string evidence_phrase(const World& world, std::span<const DestinationProposal> support);
 // Where a fleet proposal (ProposalSource::kFleet) comes from: "in the one

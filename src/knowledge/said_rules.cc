@@ -69,6 +69,7 @@ ClauseEvidence clause_evidence(const ClassRule& as_said, const KindProfile& thin
       for (const ConceptClass& c : thing.classes)
         if (c.id == said.id) (said.depth == 0 ? e.wordnet : e.wordnet_parent) = true;
     if (e.wordnet) e.wordnet_parent = false;
+    e.wordnet_knows_both = !thing.classes.empty() && !concepts.classes_named(rule.class_name).empty();
     // The class's own word in the thing's name: "toy hammer", "tissue box".
     const std::vector<std::string> class_words = split_words(rule.class_name);
     e.word_in_name = !class_words.empty() && in_name(thing, class_words.back());
@@ -100,6 +101,11 @@ ClauseEvidence clause_evidence(const ClassRule& as_said, const KindProfile& thin
 }
 
 bool ClauseEvidence::sure() const { return wordnet || word_in_name; }
+
+bool ClauseEvidence::only_related() const {
+  return said_a_class && wordnet_knows_both && !sure() && !wordnet_parent && !modifiers_in_name &&
+         class_cosine < kNearClassCosine;
+}
 
 bool ClauseEvidence::fits() const {
   if (!said_a_class || sure() || wordnet_parent || modifiers_in_name) return true;
@@ -172,7 +178,9 @@ std::vector<DestinationProposal> said_rule_proposals(std::span<const ClassRule> 
   for (std::size_t i = 0; i < mine.size(); ++i) {
     const ClassRule& rule = *mine[i];
     if (source == RuleSource::kPerson && !evidence[i].fits()) continue;
-    const double share = shares[i];
+    const double share = source == RuleSource::kPerson && evidence[i].only_related()
+                             ? std::min(shares[i], weights.only_related_at_most)
+                             : shares[i];
     auto same = std::find_if(out.begin(), out.end(), [&](const DestinationProposal& p) { return p.destination == rule.destination; });
     if (same != out.end()) {
       same->confidence += share * rule.confidence;

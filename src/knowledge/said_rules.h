@@ -39,8 +39,18 @@ struct ClauseEvidence {
   double word_cosine = 0;
   double head_cosine = 0;
   double class_cosine = 0;
+  // WordNet knows both the class word (a physical class) and the thing's
+  // head: its silence on the thing is then a "no", and the vectors, which
+  // measure relatedness and not membership ("brushes" and a paint pot),
+  // cannot make the thing a member alone.
+  bool wordnet_knows_both = false;
   // WordNet or the name's own words put the thing in the class.
   bool sure() const;
+  // Only the vectors put the thing in the class, against WordNet's silence
+  // where it knows both words, and none of the thing's own WordNet classes
+  // is named near the class word (kNearClassCosine): a guess the person is
+  // asked to confirm.
+  bool only_related() const;
   // Whether anything says the thing is in the clause's class at all: WordNet
   // (or the parent of a collective word), the class's word or every
   // modifier in its name, or a cosine of the class's words with one word of
@@ -57,6 +67,12 @@ struct ClauseEvidence {
 // and another's for 194 (docs/benchmarks.md, "A class rule only for what
 // fits it").
 inline constexpr double kFitCosine = 0.3;
+
+// The least cosine of the class's words with the name of one of the
+// thing's own WordNet classes that counts as WordNet's near agreement
+// ("electronics" and a laptop's "computer"; not "brushes" and a paint
+// pot's "container").
+inline constexpr double kNearClassCosine = 0.5;
 
 // How many steps above a thing its WordNet classes' names count.
 inline constexpr int kAncestorDepth = 4;
@@ -108,6 +124,12 @@ struct SaidRuleWeights {
   // person meant: its clauses' scores count half (at 2/3, protocol A with
   // the LLM acted on 3.3% wrong on the development half; at 1/2, 3.0%).
   double llm_sharpness = 0.5;
+  // The most a person's clause proposes for a thing it is only related to
+  // (ClauseEvidence::only_related), below what the agent acts on alone: a
+  // one-clause rule ("the brushes go in the sink") competes only with
+  // "none", and the vectors put the paint pot, the sponge and the glue
+  // stick near brushes; the person is asked instead.
+  double only_related_at_most = 0.6;
 
   double score(const ClassRule& rule, const ClauseEvidence& evidence) const;
 };
@@ -116,7 +138,8 @@ struct SaidRuleWeights {
 // some rule names (most probable first); none when the source said none.
 // A person's clause the thing does not fit (ClauseEvidence::fits) proposes
 // nothing (its share is left to none of them): a class rule never goes to a
-// thing it does not fit. An LLM's summary's clauses are not held to it: on
+// thing it does not fit. One the thing is only related to proposes at most
+// `only_related_at_most`: asked, never acted on alone. An LLM's summary's clauses are not held to it: on
 // the development half, the summary's "textbooks" no longer spoke for the
 // shelf for a soda can, which shifted the summary's belief enough that the
 // LLM's wrong placement of it was acted on (a-alone+llm 3.0% → 3.3% wrong).

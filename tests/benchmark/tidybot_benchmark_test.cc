@@ -259,7 +259,8 @@ TEST(TidyBotRecorded, TheDevelopmentHalfScoresAsItsReadmeSays) {
 // A person's class rule goes only to the things in its class. A nursery,
 // written here after a teach dialogue where "dummy goes in the top drawer"
 // was offered for the rattle, the teddy bear, the blanket and the board
-// book ("Does the rattle ... go as you said: it goes in the top drawer?"):
+// book ("Does the rattle ... go as you said: it goes in the top drawer?";
+// now "go with dummies, as you said"):
 // nothing says any of them is a dummy.
 // Protocol B alone and with the teacher (b-alone, b-teacher) on scenarios
 // in the benchmark's format; nullopt (a failure added) when they do not run.
@@ -419,7 +420,7 @@ TEST(TidyBotPersonsRule, AClassRuleIsNotOfferedForThingsOutsideItsClass) {
   const std::string& taught = results->results[1].scenarios[0].transcript;
   ASSERT_THAT(taught, HasSubstr("Dummies go in the top drawer.")) << taught;
   for (const char* thing : {"rattle", "teddy bear", "blanket", "board book"}) {
-    EXPECT_THAT(taught, ::testing::Not(HasSubstr("Does the " + std::string(thing) + " on the cart go as you said")))
+    EXPECT_THAT(taught, ::testing::Not(HasSubstr("Does the " + std::string(thing) + " on the cart go with dummies")))
         << taught;
     for (const SettingResult& r : results->results) {
       for (const ObjectOutcome& o : r.scenarios[0].objects) {

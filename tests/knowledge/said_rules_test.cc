@@ -178,6 +178,29 @@ TEST(SaidRules, AClauseGoesOnlyToAThingThatFitsIt) {
   EXPECT_FALSE(said_rule_proposals(rest, blanket, RuleSource::kPerson, concepts).empty());
 }
 
+// Where WordNet knows the class and the thing and does not put one under
+// the other, the vectors relate ("brushes" and a paint pot) but do not make
+// a member: the clause is offered, to be asked, below what the agent acts
+// on alone. Where WordNet does not know the thing, the vectors speak.
+TEST(SaidRules, AThingOnlyRelatedToAClassIsAskedAbout) {
+  TableConcepts concepts;
+  std::vector<ClassRule> rules = {said("toys", in("top-drawer"))};
+  const KindProfile pot = thing("pot", {"vessel"}, {0.8f, 0.6f});
+  const ClauseEvidence evidence = clause_evidence(rules[0], pot, concepts);
+  EXPECT_TRUE(evidence.fits());
+  EXPECT_TRUE(evidence.only_related());
+  auto proposals = said_rule_proposals(rules, pot, RuleSource::kPerson, concepts);
+  ASSERT_EQ(proposals.size(), 1u);
+  EXPECT_GT(proposals.front().confidence, 0.25);
+  EXPECT_LE(proposals.front().confidence, SaidRuleWeights{}.only_related_at_most * 0.95 + 1e-9);
+  // The same vector, and no WordNet classes: the vectors decide.
+  const KindProfile unknown = thing("whirligig", {}, {0.8f, 0.6f});
+  EXPECT_FALSE(clause_evidence(rules[0], unknown, concepts).only_related());
+  auto alone = said_rule_proposals(rules, unknown, RuleSource::kPerson, concepts);
+  ASSERT_EQ(alone.size(), 1u);
+  EXPECT_GT(alone.front().confidence, 0.9);
+}
+
 TEST(SaidRules, TheClassWordInTheNameIsEvidence) {
   TableConcepts concepts;
   std::vector<ClassRule> rules = {said("toys", in("drawer")), said("clothes", in("basket"))};
