@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "agent/goal_repair.h"
 #include "agent/goal_proposals.h"
 #include "agent/session.h"
 #include "language/narration.h"
@@ -158,9 +159,10 @@ TaskLearningAgent::Session::answer_to_proposal(const Question& asked, ObjectId o
     }
     reply = std::move(where);
   }
-  const auto& given = std::get<language::GoalGiven>(reply);
+  std::string read_back;
+  const language::GoalGiven given = with_doors_closed(object, std::get<language::GoalGiven>(reply), read_back);
   begin_lesson(heard->text);
-  say(language::read_back_goal(w, object, given.goal));
+  say(read_back);
   const std::string source = "instructor: " + apprentice::quoted(heard->text);
   if (auto s = learn_goal(object, given.goal, source); !s) return stop(s.error());
   if (auto s = learn_goals_of_others(object, object, given, source); !s) return stop(s.error());
@@ -274,6 +276,9 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
     if (!decision.destination) return std::optional<Goal>();
     std::optional<Goal> goal = goal_at(w, *decision.destination, object);
     if (!goal) return std::optional<Goal>();
+    // A destination says the doors the examples or the rule said; a door
+    // they said nothing of is closed after, as the teacher's goals are.
+    goal = with_closings(w, *goal, closings_to_complete(w, *goal, object, agent_.knowledge_.goals));
     if (first) {
       if (auto place = placed_at(w, *goal, object)) report.proposed = w.universe->name(*place);
       report.belief = decision.confidence;

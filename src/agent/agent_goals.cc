@@ -2,6 +2,7 @@
 // one) or from the instructor, and learning them as goal knowledge.
 #include <algorithm>
 
+#include "agent/goal_repair.h"
 #include "agent/session.h"
 #include "language/generation.h"
 #include "language/narration.h"
@@ -211,11 +212,12 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
       say("I will leave " + language::spoken_name_and_location(w, object) + " as it is.");
       return std::optional<Goal>();
     }
-    const auto& given = std::get<language::GoalGiven>(*heard->reply);
     const ObjectId about = ahead.value_or(object);
+    std::string read_back;
+    const language::GoalGiven given =
+        with_doors_closed(about, std::get<language::GoalGiven>(*heard->reply), read_back);
     const std::string source = "instructor: " + apprentice::quoted(heard->text);
-    say(language::read_back_goal(w, about, given.goal) +
-        (ahead ? " I will do that when I come to " + language::object_pronoun(w, about) + "." : ""));
+    say(read_back + (ahead ? " I will do that when I come to " + language::object_pronoun(w, about) + "." : ""));
     if (auto s = learn_goal(about, given.goal, source); !s) return stop(s.error());
     if (auto s = learn_goals_of_others(object, about, given, source); !s) return stop(s.error());
     if (ahead) continue;
@@ -244,6 +246,31 @@ std::optional<language::Reply> TaskLearningAgent::Session::goal_for_another(Obje
           current().verb + " what is " + current().relation + " " + language::spoken_places(world(), current().places) +
           ". Where should " + language::spoken_name(world(), object) + " go?",
       agent_.understanding_.example_replies(world(), context(language::Asked::kGoal, object)), std::nullopt});
+}
+
+language::GoalGiven TaskLearningAgent::Session::with_doors_closed(ObjectId about, language::GoalGiven given,
+                                                                  std::string& read_back) {
+  const World& w = world();
+  bool by_norm = false;
+  auto close = [&](ObjectId object, Goal& goal) {
+    const std::vector<ClosingToAdd> closings = closings_to_complete(w, goal, object, agent_.knowledge_.goals);
+    if (closings.empty()) return;
+    goal = with_closings(w, goal, closings);
+    by_norm = by_norm || std::any_of(closings.begin(), closings.end(), [](const ClosingToAdd& c) { return c.by_norm; });
+  };
+  close(about, given.goal);
+  for (Goal& other : given.others) {
+    std::vector<ObjectId> items;
+    for (ObjectId o : other.objects())
+      if (w.universe->info(o).kind == ObjectKind::kItem) items.push_back(o);
+    if (items.size() == 1) close(items.front(), other);
+  }
+  read_back = language::read_back_goal(w, about, given.goal);
+  if (by_norm && !closing_norm_said_) {
+    closing_norm_said_ = true;
+    read_back += " " + language::closing_norm_note();
+  }
+  return given;
 }
 
 Status TaskLearningAgent::Session::learn_goals_of_others(ObjectId asked, ObjectId about, const language::GoalGiven& given,

@@ -147,6 +147,34 @@ std::optional<bool> learned_closing(const World& world, const GoalMemory& learne
   return verdict;
 }
 
+}  // namespace
+
+std::vector<ClosingToAdd> closings_to_complete(const World& world, const Goal& goal, ObjectId object,
+                                               const GoalMemory& learned) {
+  const Vocabulary& v = world.vocabulary;
+  std::vector<ClosingToAdd> out;
+  for (ObjectId place : destinations(world, goal, object)) {
+    if (!world.state.holds(Fact(v.openable, {place}))) continue;
+    const Fact closed(v.closed, {place});
+    // Closed or open, as said ("leave it open": not closed).
+    const bool said = std::any_of(goal.literals.begin(), goal.literals.end(), [&](const Literal& l) { return l.fact == closed; });
+    if (said) continue;
+    std::optional<bool> learned_verdict = learned_closing(world, learned, world.universe->info(place).category);
+    // Closed now: the agent will have opened it.
+    const bool close = learned_verdict ? *learned_verdict : world.state.holds(closed);
+    if (close) out.push_back(ClosingToAdd{place, !learned_verdict.has_value()});
+  }
+  return out;
+}
+
+Goal with_closings(const World& world, const Goal& goal, const std::vector<ClosingToAdd>& closings) {
+  std::vector<Literal> literals = goal.literals;
+  for (const ClosingToAdd& closing : closings) literals.push_back(Literal{Fact(world.vocabulary.closed, {closing.place}), true});
+  return Goal(std::move(literals));
+}
+
+namespace {
+
 class Analyser {
  public:
   Analyser(Understanding& understanding, const World& world, ObjectId object, const GoalMemory& learned,
@@ -216,21 +244,13 @@ class Analyser {
 
   // Step 3.
   void complete_closings(AnalysedGoal& out) {
-    const Vocabulary& v = world_.vocabulary;
-    std::vector<Literal> literals = out.goal->literals;
-    for (ObjectId place : destinations(world_, *out.goal, object_)) {
-      if (!world_.state.holds(Fact(v.openable, {place}))) continue;
-      const Fact closed(v.closed, {place});
-      const bool said = std::any_of(literals.begin(), literals.end(), [&](const Literal& l) { return l.fact == closed; });
-      if (said) continue;
-      std::optional<bool> learned = learned_closing(world_, learned_, world_.universe->info(place).category);
-      const bool close = learned ? *learned : world_.state.holds(closed);
-      if (!close) continue;
-      literals.push_back(Literal{closed, true});
-      out.closings.push_back(place);
-      out.closing_by_norm.push_back(!learned.has_value());
+    const std::vector<ClosingToAdd> closings = closings_to_complete(world_, *out.goal, object_, learned_);
+    if (closings.empty()) return;
+    out.goal = with_closings(world_, *out.goal, closings);
+    for (const ClosingToAdd& closing : closings) {
+      out.closings.push_back(closing.place);
+      out.closing_by_norm.push_back(closing.by_norm);
     }
-    if (!out.closings.empty()) out.goal = Goal(std::move(literals));
   }
 
   // Step 4.

@@ -108,6 +108,20 @@ GoalAnalysis analyse_goals(Understanding& understanding, const World& world, Obj
                            const std::vector<llm::Candidate>& candidates, const GoalMemory& learned,
                            const GoalRepairOptions& options);
 
+// "Close what you opened", for any goal (an LLM's, after repair, or a
+// teacher's): the receptacles with a door that `goal` puts `object` into,
+// closed now, of which the goal says neither closed nor open ("leave it
+// open" says open), that should end closed: as the goals learned for that
+// kind of receptacle do, or, with none learned for it, by the norm.
+struct ClosingToAdd {
+  ObjectId place = 0;
+  bool by_norm = false;  // not from goals learned for it
+};
+std::vector<ClosingToAdd> closings_to_complete(const World& world, const Goal& goal, ObjectId object,
+                                               const GoalMemory& learned);
+// `goal` with `closings` added.
+Goal with_closings(const World& world, const Goal& goal, const std::vector<ClosingToAdd>& closings);
+
 // A sentence for the logs and the goal's provenance: what was repaired, e.g.
 // "left out 'the recycling bin is closed' (The recycling bin has no door to
 // close.); added that the fridge is closed (close what you opened)". Empty

@@ -207,6 +207,12 @@ class TaskLearningAgent::Session {
   // ("plates and forks go in the dishwasher"): those still to come in this
   // subtask are learned for their kinds, and said; the rest are asked
   // about in their turn.
+  // A teacher's goal with the doors it opens closed after, unless the
+  // teacher said to leave them open (closings_to_complete, agent/
+  // goal_repair.h), for `about` and for each other thing it gave a goal;
+  // `read_back` gets closing_norm_note() the first time in the session
+  // that a closing came from the norm alone.
+  language::GoalGiven with_doors_closed(ObjectId about, language::GoalGiven given, std::string& read_back);
   Status learn_goals_of_others(ObjectId asked, ObjectId about, const language::GoalGiven& given,
                                const std::string& source);
   // Whether `item` is in or on a place of the current subtask and not yet
@@ -261,6 +267,8 @@ class TaskLearningAgent::Session {
   // LLM's summary's, as class rules (agent/person_rule.h); and what the LLM
   // says of the person's preferences (asked once, when a thing first needs
   // it).
+  // Whether closing_norm_note() was said this session.
+  bool closing_norm_said_ = false;
   std::vector<std::string> rules_said_;
   ClassRules said_rules_;
   LlmPreferences llm_preferences_;

@@ -456,6 +456,10 @@ std::string read_back_goal(const World& world, ObjectId object, const Goal& goal
   return "So " + goal_outcome(world, object, goal, spoken_name(world, object)) + ".";
 }
 
+std::string closing_norm_note() {
+  return "I close what I open; say \"leave it open\" when something should stay open.";
+}
+
 std::string announce_known_goal(const World& world, ObjectId object, const Goal& goal) {
   return "Next, " + spoken_name_and_location(world, object) + ": " +
          goal_outcome(world, object, goal, plural_name(world, object) ? "they" : "it") + ".";

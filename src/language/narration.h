@@ -92,6 +92,9 @@ std::string goal_facts(const World& world, const Goal& goal);
 std::string goal_outcome(const World& world, ObjectId object, const Goal& goal, std::string_view subject);
 // "So the ketchup goes in the fridge, and the fridge ends closed."
 std::string read_back_goal(const World& world, ObjectId object, const Goal& goal);
+// Said once a session, after the first read-back whose closing the agent
+// added by the norm "close what you opened": why, and how to say otherwise.
+std::string closing_norm_note();
 // "Next, the milk on the table: it goes in the fridge, and the fridge ends
 // closed."
 std::string announce_known_goal(const World& world, ObjectId object, const Goal& goal);

@@ -1,10 +1,14 @@
-// A person's class rule at the terminal (`apprentice teach`, the real
-// binary): it goes alone only to the things WordNet or their names put in
-// its class; a thing the word vectors only relate to it is asked about,
-// with the class named, and a "no" is kept.
+// Two norms of a patient helper at the terminal (`apprentice teach`, the
+// real binary):
+//  - a person's class rule goes alone only to the things WordNet or their
+//    names put in its class; a thing the word vectors only relate to it is
+//    asked about, with the class named, and a "no" is kept;
+//  - a door opened to put something away is closed after, unless the
+//    teacher says to leave it open, and the read-back says so.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "common/paths.h"
 #include "common/scratch.h"
 #include "process.h"
 
@@ -37,11 +41,11 @@ std::string lines(const std::vector<std::string>& script) {
   return text;
 }
 
-class TeachRules : public testing::ScratchTest {};
+class TeachNorms : public testing::ScratchTest {};
 
 // Found by hand in a classroom: "the brushes go in the sink", said at the
 // paint pot's question, put the paint pot in the sink "as you said".
-TEST_F(TeachRules, AClassRuleIsAskedNotActedOnForAThingItDoesNotName) {
+TEST_F(TeachNorms, AClassRuleIsAskedNotActedOnForAThingItDoesNotName) {
   Process teach({APPRENTICE_BINARY, "teach", "--scenario", write("art-room.yaml", kArtRoom).string()});
   ASSERT_TRUE(teach.write(lines({"tidy the classroom", "clear the table", "the sink", "the brushes go in the sink",
                                  "no, it goes in the cupboard", "yes", "that is all"})));
@@ -54,7 +58,7 @@ TEST_F(TeachRules, AClassRuleIsAskedNotActedOnForAThingItDoesNotName) {
       << out;
   EXPECT_THAT(out, Not(HasSubstr("The paint pot on the table goes in the sink"))) << out;
   EXPECT_THAT(out, HasSubstr("Instructor: no, it goes in the cupboard\n"
-                             "Agent: So the paint pot goes in the cupboard.\n"))
+                             "Agent: So the paint pot goes in the cupboard, and the cupboard ends closed."))
       << out;
   EXPECT_THAT(out, HasSubstr("Agent: Does the sponge on the table go with brushes, as you said: it goes in the "
                              "sink?\nInstructor: yes\nAgent: So the sponge goes in the sink.\n"))
@@ -65,7 +69,7 @@ TEST_F(TeachRules, AClassRuleIsAskedNotActedOnForAThingItDoesNotName) {
 // The rule said first, at the paintbrush's question: the paintbrush, a
 // brush to WordNet, goes to the sink without a question; the sponge, in
 // neither class, is asked about.
-TEST_F(TeachRules, AClassRuleGoesAloneToWhatWordNetPutsInIt) {
+TEST_F(TeachNorms, AClassRuleGoesAloneToWhatWordNetPutsInIt) {
   Process teach({APPRENTICE_BINARY, "teach", "--scenario", write("art-room.yaml", kArtRoom).string()});
   ASSERT_TRUE(teach.write(lines({"tidy the classroom", "clear the table", "brushes go in the sink, pots in the cupboard",
                                  "quit"})));
@@ -77,6 +81,30 @@ TEST_F(TeachRules, AClassRuleGoesAloneToWhatWordNetPutsInIt) {
   EXPECT_THAT(after, HasSubstr("So the paintbrush goes in the sink")) << out;
   EXPECT_THAT(after, Not(HasSubstr("the paintbrush on the table go"))) << out;
   EXPECT_THAT(after, HasSubstr("Agent: Where should the sponge on the table go?\n")) << out;
+}
+
+// "the dishwasher" for a thing, said by a person who did not think of the
+// door: it is closed after, and why is said once. "leave it open" keeps
+// another door open; goals said with the door ("and close it") are as said.
+TEST_F(TeachNorms, ADoorOpenedToPutSomethingAwayIsClosedUnlessToldToLeaveItOpen) {
+  Process teach({APPRENTICE_BINARY, "teach", "--scenario", testing::source_path("data/scenarios/tidy-kitchen.yaml").string()});
+  ASSERT_TRUE(teach.write(lines({"tidy kitchen", "clear the table", "the dishwasher", "the fridge and leave it open",
+                                 "the pantry", "quit"})));
+  teach.wait();
+  const std::string& out = teach.out();
+  const std::string note = "I close what I open; say \"leave it open\" when something should stay open.";
+  EXPECT_THAT(out, HasSubstr("Instructor: the dishwasher\n"
+                             "Agent: So the ceramic plate goes in the dishwasher, and the dishwasher ends closed. " +
+                             note + "\nAgent: I opened the dishwasher, put the ceramic plate in it, and closed it.\n"))
+      << out;
+  EXPECT_THAT(out, HasSubstr("Instructor: the fridge and leave it open\n"
+                             "Agent: So the metal fork goes in the fridge, and the fridge ends open.\n"
+                             "Agent: I opened the fridge and put the metal fork in it.\n"))
+      << out;
+  // Said once a session.
+  EXPECT_THAT(out, HasSubstr("Instructor: the pantry\n"
+                             "Agent: So the glass tumbler goes in the pantry, and the pantry ends closed.\n"))
+      << out;
 }
 
 }  // namespace
