@@ -1,6 +1,7 @@
 // apprentice.Knowledge and apprentice.KnowledgeStore: learned goals, rules
 // and task structure as Python objects, read-only.
 #include "agent/class_rule_knowledge.h"
+#include "agent/goal_proposals.h"
 #include "agent/concept_source.h"
 #include "agent/goal_proposals.h"
 #include "agent/understanding.h"

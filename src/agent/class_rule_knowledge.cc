@@ -81,13 +81,6 @@ bool names_subject(const ClassRule& rule, const std::vector<std::string>& said) 
 
 }  // namespace
 
-std::string rule_subject(const ClassRule& rule) {
-  std::string what = rule.class_name;
-  if (!rule.modifiers.empty()) what = join(rule.modifiers, " ") + (what.empty() ? " things" : " " + what);
-  if (what.empty()) return rule.rest ? "everything else" : "everything";
-  return rule.rest ? "other " + what : what;
-}
-
 std::string rule_destination(const ClassRule& rule) {
   return rule.destination.relation + " the " + language::spoken_category(place_phrase(rule));
 }

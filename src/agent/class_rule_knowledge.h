@@ -37,9 +37,7 @@ std::vector<ClassRule> class_rules_in_use(const Knowledge& knowledge, const Conc
 // matches ("fruit" names "edible fruit"), and a plural its singular.
 std::vector<ClassRule> rules_named(std::span<const ClassRule> rules, std::string_view phrase);
 
-// What a rule is about, in English: "edible fruit", "plastic things",
-// "other clothes", "everything else".
-std::string rule_subject(const ClassRule& rule);
+// What a rule is about, in English: rule_subject (agent/goal_proposals.h).
 // Where it sends things, in English: "on the coffee table", "in the left
 // storage box".
 std::string rule_destination(const ClassRule& rule);

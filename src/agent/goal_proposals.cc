@@ -1,7 +1,5 @@
 #include "agent/goal_proposals.h"
 
-#include "agent/class_rule_knowledge.h"
-
 #include <algorithm>
 #include <set>
 
@@ -187,11 +185,15 @@ std::string fleet_phrase(const DestinationProposal& fleet) {
   return "in " + chose + " of the " + of + " other households I know of";
 }
 
-std::string say_class_rule(const ClassRule& rule) {
+std::string rule_subject(const ClassRule& rule) {
   std::string what = rule.class_name;
   if (!rule.modifiers.empty()) what = join(rule.modifiers, " ") + (what.empty() ? " things" : " " + what);
-  if (what.empty()) what = rule.rest ? "everything else" : "everything";
-  else if (rule.rest) what = "other " + what;
+  if (what.empty()) return rule.rest ? "everything else" : "everything";
+  return rule.rest ? "other " + what : what;
+}
+
+std::string say_class_rule(const ClassRule& rule) {
+  const std::string what = rule_subject(rule);
   std::string place = rule.destination.place.category;
   for (auto p = rule.destination.place.properties.rbegin(); p != rule.destination.place.properties.rend(); ++p)
     place = *p + " " + place;

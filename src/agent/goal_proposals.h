@@ -96,6 +96,10 @@ std::string evidence_phrase(const World& world, std::span<const DestinationPropo
 // know of".
 std::string fleet_phrase(const DestinationProposal& fleet);
 
+// What a rule is about, in English: "edible fruit", "plastic things",
+// "other clothes", "everything else".
+std::string rule_subject(const ClassRule& rule);
+
 // A class rule in English, with its evidence and source: "edible fruit
 // goes on the coffee table, from the banana and the apple (induced from the
 // examples, 83% sure)"; "other clothes go on the bed, as said: \"...\"".

@@ -9,6 +9,7 @@
 #include <set>
 
 #include "agent/class_rule_knowledge.h"
+#include "agent/goal_proposals.h"
 #include "agent/concept_source.h"
 #include "agent/goal_proposals.h"
 #include "common/scenarios.h"
