@@ -16,12 +16,9 @@ struct WorldOptions {
 };
 CommandResult run_world(const WorldOptions& options, std::ostream& out);
 
-// --goal intent: the conjunction of every goal assertion of the scenario's intent.
-inline constexpr const char* kIntentGoal = "intent";
-
 struct PlanOptions {
   std::string scenario;
-  std::string goal;  // PDDL, or kIntentGoal
+  std::string goal;  // PDDL, or "intent" (kIntentGoal, face/apprentice.h)
   // Iterative deepening to this depth; without it, greedy best-first search.
   std::optional<int> depth;
   std::optional<long> node_limit;
@@ -36,7 +33,7 @@ CommandResult run_plan(const PlanOptions& options, std::ostream& out, std::ostre
 
 struct ExportPddlOptions {
   std::string scenario;
-  std::string goal;  // PDDL, or kIntentGoal
+  std::string goal;  // PDDL, or "intent" (kIntentGoal, face/apprentice.h)
   std::string out_dir;
 };
 CommandResult run_export_pddl(const ExportPddlOptions& options, std::ostream& out);

@@ -35,7 +35,7 @@ struct InterpretOptions {
   std::optional<std::string> sentence; // exactly one of sentence and corpus
   std::optional<std::string> corpus;   // JSON-lines file
   // --asked: read the sentence as a reply to this kind of question
-  // (task, task-step, subtask-end, goal, action, yes-no, which).
+  // (question_kinds(), face/apprentice.h: task, task-step, subtask-end, goal, action, yes-no, which).
   std::optional<std::string> asked;
   std::optional<std::string> recent;   // the place named last (an id)
   std::vector<std::string> choices;    // ids offered at a which-question

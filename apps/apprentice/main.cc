@@ -27,6 +27,7 @@
 #include "cmd_core.h"
 #include "cmd_interpret.h"
 #include "cmd_serve.h"
+#include "face/apprentice.h"
 #include "llm/factory.h"
 #include "util/log.h"
 #include "util/spelling.h"
@@ -377,9 +378,7 @@ void add_interpret_command(CLI::App& app, CommandLine& c) {
   cmd->add_option("--subtask", given.subtask, "The subtask (a category --object is taken at its place)");
   cmd->add_option("--corpus", given.corpus, "A JSONL corpus of LLM goal statements to ground");
   cmd->add_flag("--json", c.interpret.json, "Machine-readable output");
-  cmd->add_option("--asked", given.asked,
-                  "Read the sentence as a reply to a question: task, task-step, subtask-end, goal, action, "
-                  "yes-no or which");
+  cmd->add_option("--asked", given.asked, "Read the sentence as a reply to this kind of question: " + join(question_kinds(), ", "));
   cmd->add_option("--recent", given.recent, "With --asked: the place named last (an id)");
   cmd->add_option("--choices", c.interpret.choices, "With --asked which: the ids offered")->delimiter(',')->allow_extra_args(false);
   cmd->add_option("sentence", given.sentence, "The sentence to interpret");

@@ -32,13 +32,17 @@ from ._apprentice import (  # noqa: F401  (re-exported)
     __version__,
     condition_names,
     forget_rule,
+    interpret,
     paper_row,
+    plan,
+    question_kinds,
 )
 from ._apprentice import _experiment_json
 
 __all__ = [
     "Agent", "ClassRule", "Question", "Error", "Goal", "Knowledge", "KnowledgeStore", "LearnedSubtask", "Object", "Rule",
-    "Scenario", "Subtask", "Task", "TaskKnowledge", "condition_names", "experiment", "forget_rule", "paper_row",
+    "Scenario", "Subtask", "Task", "TaskKnowledge", "condition_names", "experiment", "forget_rule", "interpret", "paper_row",
+    "plan", "question_kinds",
 ]
 
 
@@ -47,9 +51,15 @@ class Question(str):
     reads, that also says what it is about, so that a program can answer
     from meaning.
 
-    kind: "task-name", "task-step", "subtask-step" (about `object`: its
-        goal; without one: is the subtask done?), "next-action",
-        "confirm-goal" or "confirm-action" (yes/no questions).
+    asked: what kind of question it is, in the one vocabulary of
+        question_kinds, `interpret(asked=...)` and `apprentice interpret
+        --asked`: "task", "task-step", "subtask-end", "goal", "action",
+        "yes-no" or "which"; `interpret(scenario, reply, asked=q.asked,
+        object=q.object)` reads a reply as the agent would.
+    kind: the same as the dialogue names it (and `apprentice serve`'s
+        page): "task-name", "task-step", "subtask-step" (about `object`:
+        its goal; without one: is the subtask done?), "next-action",
+        "confirm-goal" or "confirm-action" (yes/no questions), "which".
     task, subtask: "tidy kitchen", "clear", once known ("" before).
     object, category, place: the object of interest ("ketchup1",
         "ketchup") and the id of the place it is on or in now, or None.
@@ -58,9 +68,9 @@ class Question(str):
     """
 
     def __new__(cls, text, kind="", task="", subtask="", object=None, category=None, place=None, goal=None,
-                action=None):
+                action=None, asked=""):
         self = super().__new__(cls, text)
-        self.kind, self.task, self.subtask = kind, task, subtask
+        self.kind, self.asked, self.task, self.subtask = kind, asked, task, subtask
         self.object, self.category, self.place = object, category, place
         self.goal, self.action = goal, action
         return self

@@ -79,7 +79,8 @@ class PythonInstructor final : public Instructor {
     }
     if (question.goal) goal = py::str(format_goal(*world.domain, *world.universe, *question.goal));
     if (question.action) action = py::str(format_action(*world.domain, *world.universe, *question.action));
-    return question_class_(question.text, py::arg("kind") = to_string(question.kind), py::arg("task") = question.task,
+    return question_class_(question.text, py::arg("kind") = to_string(question.kind),
+                           py::arg("asked") = question_kind(question), py::arg("task") = question.task,
                            py::arg("subtask") = question.subtask, py::arg("object") = object,
                            py::arg("category") = category, py::arg("place") = place, py::arg("goal") = goal,
                            py::arg("action") = action);

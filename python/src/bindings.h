@@ -32,6 +32,13 @@ T unwrap(Result<T> result) {
   return std::move(*result);
 }
 
+// A keyword argument checked as the CLI checks its flag, named `name` in
+// the error: a whole number in [low, high], True or False, a str. Another
+// value raises apprentice.Error ("invalid input").
+long whole_number(const py::handle& value, const char* name, long low, long high);
+bool flag(const py::handle& value, const char* name);
+std::string text(const py::handle& value, const char* name);
+
 // The keyword options the Agent and experiment() take besides their named
 // arguments, as the CLI's flags of the same names (--no-rules is
 // use_rules=False): use_rules, max_reprompts, goal_repair, offer_ungrounded,
@@ -104,5 +111,6 @@ void bind_scenario(py::module_& m);
 void bind_knowledge(py::module_& m);
 void bind_agent(py::module_& m);
 void bind_experiment(py::module_& m);
+void bind_plan_and_interpret(py::module_& m);
 
 }  // namespace apprentice::python

@@ -28,16 +28,14 @@ void raise_error(const Error& error) {
   throw py::error_already_set();
 }
 
-namespace {
-
-int whole_number(const py::handle& value, const char* name, long low, long high) {
+long whole_number(const py::handle& value, const char* name, long low, long high) {
   if (!py::isinstance<py::int_>(value) || py::isinstance<py::bool_>(value))
     raise_error(Error{ErrorCode::kInvalidInput, std::string(name) + ": " + std::string(py::repr(value)) + " is not a whole number"});
   long number = value.cast<long>();
   if (number < low || number > high)
     raise_error(Error{ErrorCode::kInvalidInput, std::string(name) + ": " + std::to_string(number) + " is out of range (" +
                                                     std::to_string(low) + " to " + std::to_string(high) + ")"});
-  return static_cast<int>(number);
+  return number;
 }
 
 bool flag(const py::handle& value, const char* name) {
@@ -51,8 +49,6 @@ std::string text(const py::handle& value, const char* name) {
     raise_error(Error{ErrorCode::kInvalidInput, std::string(name) + ": " + std::string(py::repr(value)) + " is not a str"});
   return value.cast<std::string>();
 }
-
-}  // namespace
 
 void apply_agent_options(const py::kwargs& options, AgentSpec& spec) {
   constexpr long kMost = std::numeric_limits<int>::max();
@@ -68,7 +64,7 @@ void apply_agent_options(const py::kwargs& options, AgentSpec& spec) {
     else if (name == "llm_timeout_ms") spec.llm.timeout = std::chrono::milliseconds(whole_number(value, "llm_timeout_ms", 1, kMost));
     else if (name == "llm_connect_timeout_ms")
       spec.llm.connect_timeout = std::chrono::milliseconds(whole_number(value, "llm_connect_timeout_ms", 1, kMost));
-    else if (name == "llm_seed") spec.llm.seed = whole_number(value, "llm_seed", 0, kMost);
+    else if (name == "llm_seed") spec.llm.seed = static_cast<int>(whole_number(value, "llm_seed", 0, kMost));
     else if (name == "llm_optional") spec.llm.optional = flag(value, "llm_optional");
     else if (name == "llm_goal_responses") spec.llm.goal_responses = whole_number(value, "llm_goal_responses", 1, 10);
     else if (name == "household") spec.household = text(value, "household");
@@ -109,4 +105,5 @@ PYBIND11_MODULE(_apprentice, m) {
   bind_knowledge(m);
   bind_agent(m);
   bind_experiment(m);
+  bind_plan_and_interpret(m);
 }

@@ -7,6 +7,7 @@
 #include "agent/session.h"
 #include "language/generation.h"
 #include "language/narration.h"
+#include "language/narration_conversation.h"
 #include "search/greedy_best_first.h"
 #include "search/iterative_deepening.h"
 #include "util/log.h"
@@ -59,7 +60,7 @@ TaskLearningAgent::Session::Flow<bool> TaskLearningAgent::Session::achieve(InPro
     if (!next) {
       report.note = "no way to reach the goal";
       if (!learning_)
-        report_.help_needed.push_back("how to make it so that " + language::goal_facts(world(), work.goal));
+        report_.help_needed.push_back(language::help_needed_for_goal_to_hold(world(), work.goal));
       return false;
     }
     if (auto status = execute(*next); !status) {
@@ -132,8 +133,7 @@ TaskLearningAgent::Session::Flow<std::optional<Action>> TaskLearningAgent::Sessi
   std::vector<llm::Candidate> candidates = llm.actions(llm_context(work.object), goal_text, work.llm_steps, known);
   const bool instructed = agent_.options_.condition.instruction;
   if (llm.last_failure() && candidates.empty())
-    say("I could not reach the language model (" + llm.last_failure()->message + ")" +
-        (instructed ? ", so I will ask." : "."));
+    say(language::could_not_reach_llm(llm.last_failure()->message, instructed));
   std::map<std::string, Action> usable;  // by the candidate's text
   for (const llm::Candidate& candidate : candidates) {
     ActionMeaning meaning = agent_.understanding_.action(world(), candidate.text, work.object);
@@ -182,7 +182,7 @@ TaskLearningAgent::Session::Flow<std::optional<Action>> TaskLearningAgent::Sessi
                           if (std::holds_alternative<language::ActionGiven>(r) ||
                               std::holds_alternative<language::Finished>(r))
                             return std::nullopt;
-                          return "I asked what to do next.";
+                          return language::asked_what_to_do_next();
                         });
   if (!heard) return tl::unexpected(heard.error());
   if (!heard->reply) {
@@ -192,7 +192,7 @@ TaskLearningAgent::Session::Flow<std::optional<Action>> TaskLearningAgent::Sessi
   begin_lesson(heard->text);
   if (std::holds_alternative<language::Finished>(*heard->reply)) {
     work.report.note = "left as it is, as the instructor said";
-    say("I will leave " + language::spoken_name(world(), work.object) + " as it is.");
+    say(language::will_leave_as_it_is(world(), work.object, false));
     return std::optional<Action>();
   }
   const Action& action = std::get<language::ActionGiven>(*heard->reply).action;

@@ -159,10 +159,10 @@ TaskLearningAgent::Session::answer_to_proposal(const Question& asked, ObjectId o
     }
     reply = std::move(where);
   }
-  std::string read_back;
-  const language::GoalGiven given = with_doors_closed(object, std::get<language::GoalGiven>(reply), read_back);
+  bool say_norm = false;
+  const language::GoalGiven given = with_doors_closed(object, std::get<language::GoalGiven>(reply), say_norm);
   begin_lesson(heard->text);
-  say(read_back);
+  say(language::read_back_goal(w, object, given.goal) + (say_norm ? " " + language::closing_norm_note() : ""));
   const std::string source = "instructor: " + apprentice::quoted(heard->text);
   if (auto s = learn_goal(object, given.goal, source); !s) return stop(s.error());
   if (auto s = learn_goals_of_others(object, object, given, source); !s) return stop(s.error());

@@ -5,7 +5,6 @@
 // (it asks which), and a reply it cannot use (it says why, with replies
 // that would work, and asks again).
 #include <algorithm>
-#include <map>
 
 #include "agent/class_rule_knowledge.h"
 #include "agent/goal_proposals.h"
@@ -13,45 +12,14 @@
 #include "knowledge/goal_memory.h"
 #include "language/generation.h"
 #include "language/narration.h"
+#include "language/narration_conversation.h"
 #include "util/log.h"
 #include "util/text.h"
 
 namespace apprentice {
 
-namespace {
-
-std::string kinds_of_answer(language::Asked asked) {
-  switch (asked) {
-    case language::Asked::kTask: return "Tell me the task you want me to learn";
-    case language::Asked::kTaskStep:
-      return "Tell me the next step of the task: a subtask with the place it is about, or that the task is done";
-    case language::Asked::kSubtaskEnd: return "Tell me whether there is more to this subtask, or that it is done";
-    case language::Asked::kGoal:
-      return "Tell me where it goes, and anything else that should be so when it is put away";
-    case language::Asked::kAction: return "Tell me one thing to do next";
-    case language::Asked::kYesNo: return "Answer yes or no";
-    case language::Asked::kWhich: return "Tell me which one you mean";
-  }
-  return "Answer the question";
-}
-
-std::string quoted_examples(const std::vector<std::string>& examples, std::size_t most) {
-  std::vector<std::string> shown;
-  for (std::size_t i = 0; i < examples.size() && i < most; ++i) shown.push_back("\"" + examples[i] + "\"");
-  std::string out;
-  for (std::size_t i = 0; i < shown.size(); ++i) out += (i == 0 ? "" : (i + 1 == shown.size() ? " or " : ", ")) + shown[i];
-  return out;
-}
-
-}  // namespace
-
-std::string with_period(std::string text) {
-  // A quotation that ends a sentence with its own period needs no other.
-  std::size_t end = text.size();
-  if (end >= 2 && text[end - 1] == '"' && (text[end - 2] == '.' || text[end - 2] == '?' || text[end - 2] == '!'))
-    return text;
-  return text + ".";
-}
+// session.h's, for the agent's other files: narration's.
+std::string with_period(std::string text) { return language::with_period(std::move(text)); }
 
 Question TaskLearningAgent::Session::question(QuestionKind kind, std::string text, std::optional<ObjectId> object,
                                              std::optional<Goal> goal, std::optional<Action> action) const {
@@ -236,7 +204,7 @@ TaskLearningAgent::Session::Flow<language::Reply> TaskLearningAgent::Session::se
   for (;;) {
     for (const auto& s : context.settled)
       if (s.phrase == ambiguous.phrase)
-        return language::Reply(language::Unusable{"I still cannot tell which " + ambiguous.phrase + " you mean.",
+        return language::Reply(language::Unusable{language::still_cannot_tell_which(ambiguous.phrase),
                                                   agent_.understanding_.example_replies(world(), context), {}});
     language::ReplyContext which = this->context(language::Asked::kWhich, context.object);
     which.choices = ambiguous.candidates;
@@ -247,11 +215,11 @@ TaskLearningAgent::Session::Flow<language::Reply> TaskLearningAgent::Session::se
         if (std::find(ambiguous.candidates.begin(), ambiguous.candidates.end(), chosen->object) !=
             ambiguous.candidates.end())
           return std::nullopt;
-      return "I asked which one you mean.";
+      return language::asked_which_one();
     });
     if (!heard) return tl::unexpected(heard.error());
     if (!heard->reply)
-      return language::Reply(language::Unusable{"I could not tell which " + ambiguous.phrase + " you mean.", {}, {}});
+      return language::Reply(language::Unusable{language::could_not_tell_which(ambiguous.phrase), {}, {}});
     context.settled.push_back({ambiguous.phrase, std::get<language::Chosen>(*heard->reply).object});
     language::Reply again = agent_.understanding_.reply(world(), context, text);
     const auto* still = std::get_if<language::Ambiguous>(&again);
@@ -264,7 +232,7 @@ TaskLearningAgent::Session::Flow<bool> TaskLearningAgent::Session::confirm(const
   auto heard = converse(asked, context(language::Asked::kYesNo, asked.object),
                         [](const language::Reply& r) -> std::optional<std::string> {
                           if (std::holds_alternative<language::YesNo>(r)) return std::nullopt;
-                          return "I asked a yes-or-no question.";
+                          return language::asked_yes_or_no();
                         });
   if (!heard) return tl::unexpected(heard.error());
   if (!heard->reply) return false;
@@ -276,10 +244,7 @@ TaskLearningAgent::Session::Flow<bool> TaskLearningAgent::Session::confirm(const
 void TaskLearningAgent::Session::explain(const std::string& reason, const language::ReplyContext& context,
                                          std::vector<std::string> examples) {
   if (examples.empty()) examples = agent_.understanding_.example_replies(world(), context);
-  std::string text = reason;
-  if (!text.empty() && text.back() != '.' && text.back() != '?' && text.back() != '!') text += ".";
-  if (!examples.empty()) text += " You could say, for example, " + with_period(quoted_examples(examples, 2));
-  say(text, Voice::kResponse);
+  say(language::reply_refused(reason, examples), Voice::kResponse);
 }
 
 TaskLearningAgent::Session::Step TaskLearningAgent::Session::obey(const language::Command& command,
@@ -302,129 +267,59 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::obey(const language
 }
 
 void TaskLearningAgent::Session::help(const Question& asked, const language::ReplyContext& context) {
-  say("I asked: " + asked.text, Voice::kResponse);
-  std::vector<std::string> examples = agent_.understanding_.example_replies(world(), context);
-  std::string kinds = kinds_of_answer(context.asked);
-  say(kinds + (examples.empty() ? "." : ", for example " + with_period(quoted_examples(examples, 3))), Voice::kResponse);
-  say("You can also type: help; status (what I see and what I have learned); undo (forget what your last answer "
-      "taught me); forget <kind of object> (forget where that kind of thing goes); quit, or Ctrl-D (stop; what I "
-      "learned is kept).",
+  say(language::i_asked(asked.text), Voice::kResponse);
+  say(language::kinds_of_answer(context.asked, agent_.understanding_.example_replies(world(), context)),
       Voice::kResponse);
+  say(language::commands_at_any_question(), Voice::kResponse);
 }
 
 void TaskLearningAgent::Session::status(const Question& asked) {
-  const World& w = world();
-  const Universe& u = *w.universe;
-  const Vocabulary& v = w.vocabulary;
-  std::vector<std::string> doors;
-  for (ObjectId p : u.of_kind(ObjectKind::kReceptacle)) {
-    if (!w.state.holds(Fact(v.openable, {p}))) continue;
-    doors.push_back(language::spoken_name(w, p) + " is " + (w.state.holds(Fact(v.closed, {p})) ? "closed" : "open"));
-  }
-  std::string seen = "I see this: " + (doors.empty() ? std::string() : language::list_phrase(doors) + ".");
-  for (ObjectId place = 0; place < u.size(); ++place) {
-    if (u.info(place).kind == ObjectKind::kItem) continue;
-    std::vector<ObjectId> items;
-    for (PredicateId relation : {v.on, v.in})
-      for (const Fact& f : w.state.facts_with_second(relation, 2, place)) items.push_back(f.args[0]);
-    if (!items.empty())
-      seen += " " + language::capitalize(std::string(language::relation_word(w, place))) + " " +
-              language::spoken_name(w, place) + ": " + language::spoken_things(w, items) + ".";
-  }
-  for (const Fact& f : w.state.facts_of(v.holding))
-    if (f.arity == 1) seen += " I am holding " + language::spoken_name(w, f.args[0]) + ".";
-  say(seen, Voice::kResponse);
-  std::string doing = "I am learning ";
-  if (progress_.task.name.empty()) doing = "I have not been given a task yet";
-  else doing += "to " + language::task_phrase(progress_.task.name);
-  if (progress_.current)
-    doing += "; now I " + progress_.current->verb + " what is " + progress_.current->relation + " " +
-             language::spoken_places(w, progress_.current->places);
-  if (progress_.in_progress) doing += ", working on " + language::spoken_name(w, progress_.in_progress->object);
-  else if (asked.object) doing += ", asking about " + language::spoken_name(w, *asked.object);
-  const DialogueCounts& counts = dialogue_->counts();
-  doing += ". So far I know " + language::count_phrase(static_cast<long long>(agent_.knowledge_.goals.size()), "goal") +
-           " and " + language::count_phrase(static_cast<long long>(agent_.knowledge_.rules.size()), "rule") +
-           ", after " + language::count_phrase(counts.instructions, "instruction") + " this session.";
-  say(doing, Voice::kResponse);
+  say(language::what_i_see(world()), Voice::kResponse);
+  language::WhatIAmDoing doing;
+  doing.task = progress_.task.name;
+  if (progress_.current) doing.subtask = language::SubtaskUnderWay{current().verb, current().relation, current().places};
+  if (progress_.in_progress) doing.working_on = progress_.in_progress->object;
+  doing.asking_about = asked.object;
+  doing.goals = static_cast<long long>(agent_.knowledge_.goals.size());
+  doing.rules = static_cast<long long>(agent_.knowledge_.rules.size());
+  doing.instructions = dialogue_->counts().instructions;
+  say(language::what_i_am_doing(world(), doing), Voice::kResponse);
 }
 
 void TaskLearningAgent::Session::answer_whats_left() {
   const World& w = world();
   if (!progress_.current) {
-    if (progress_.task.name.empty()) say("I have not been given a task yet.", Voice::kResponse);
+    if (progress_.task.name.empty()) say(language::no_task_yet(), Voice::kResponse);
     else say(whats_left_of_task(), Voice::kResponse);
     return;
   }
   std::vector<ObjectId> left;
   for (ObjectId o : w.universe->of_kind(ObjectKind::kItem))
     if (still_to_come(o) && (!progress_.in_progress || progress_.in_progress->object != o)) left.push_back(o);
-  std::string where = current().relation + " " + language::spoken_places(w, current().places);
-  if (left.empty()) say("Nothing else is left " + where + ".", Voice::kResponse);
-  else say("Still " + where + ": " + language::spoken_things(w, left) + ".", Voice::kResponse);
+  say(language::whats_left_of_subtask(w, {current().verb, current().relation, current().places}, left),
+      Voice::kResponse);
 }
 
 // Between parts of the task: the parts done, and the things not dealt with
-// yet where they are ("Not dealt with yet: on the desk, the mug and the
-// pen; in the bag, the apple."). The agent cannot know which of them the
-// task means, so it says all of them and leaves the choice to the teacher.
+// yet where they are. The agent cannot know which of them the task means,
+// so it says all of them and leaves the choice to the teacher.
 std::string TaskLearningAgent::Session::whats_left_of_task() const {
-  const World& w = world();
-  std::vector<std::string> parts;
-  for (const LearnedSubtask& s : progress_.task.subtasks)
-    parts.push_back(s.verb + " what is " + s.relation + " the " + language::spoken_category(s.place_category));
-  std::string said = parts.empty() ? "No part of the task is done yet."
-                                   : "So far I have learned to " + language::list_phrase(parts) + ".";
-  std::vector<ObjectId> places;
-  std::map<ObjectId, std::vector<ObjectId>> at;
-  for (ObjectId o : w.universe->of_kind(ObjectKind::kItem)) {
-    if (progress_.evaluated.count(o)) continue;
-    std::optional<ObjectId> place = language::place_of(w, o);
-    if (!place) continue;
-    if (!at.count(*place)) places.push_back(*place);
-    at[*place].push_back(o);
-  }
-  if (places.empty()) return said + " Every thing here has been dealt with; say \"that's all\" if the task is done.";
-  std::vector<std::string> groups;
-  for (ObjectId place : places)
-    groups.push_back(std::string(language::relation_word(w, place)) + " " + language::spoken_name(w, place) + ", " +
-                     language::spoken_things(w, at[place]));
-  std::string list;
-  for (std::size_t i = 0; i < groups.size(); ++i) list += (i == 0 ? "" : "; ") + groups[i];
-  return said + " Not dealt with yet: " + list + ". Tell me what to do next, or say \"that's all\".";
+  std::vector<language::PartLearned> parts;
+  for (const LearnedSubtask& s : progress_.task.subtasks) parts.push_back({s.verb, s.relation, s.place_category});
+  std::vector<ObjectId> not_dealt_with;
+  for (ObjectId o : world().universe->of_kind(ObjectKind::kItem))
+    if (!progress_.evaluated.count(o)) not_dealt_with.push_back(o);
+  return language::whats_left_of_task(world(), parts, not_dealt_with);
 }
 
 void TaskLearningAgent::Session::answer_where(const language::Command& command) {
-  const World& w = world();
-  if (command.things.empty()) {
-    say("I don't see " + command.argument + " here.", Voice::kResponse);
-    return;
-  }
-  std::vector<std::string> said;
-  for (ObjectId o : command.things) {
-    if (said.size() == 3) break;
-    if (w.state.holds(Fact(w.vocabulary.holding, {o}))) {
-      said.push_back("I am holding " + language::spoken_name(w, o));
-      continue;
-    }
-    std::optional<ObjectId> at = language::place_of(w, o);
-    if (!at) continue;
-    said.push_back(language::capitalize(language::spoken_name(w, o)) + " is " +
-                   std::string(language::relation_word(w, *at)) + " " + language::spoken_name(w, *at));
-  }
-  if (said.empty()) say("I don't know where " + command.argument + " is.", Voice::kResponse);
-  for (const std::string& line : said) say(line + ".", Voice::kResponse);
+  for (const std::string& line : language::where_things_are(world(), command.argument, command.things))
+    say(line, Voice::kResponse);
 }
 
 void TaskLearningAgent::Session::answer_why() {
   const std::string* last = lessons_.last_reply();
-  if (last == nullptr) {
-    say("I have only done what I already knew; you have not told me anything yet this session.", Voice::kResponse);
-    return;
-  }
-  say(with_period("Because of what you told me last: \"" + *last + "\"") +
-          " If that was wrong, say undo, or tell me what you meant.",
-      Voice::kResponse);
+  say(last == nullptr ? language::why_without_a_reply() : language::because_of_last_reply(*last), Voice::kResponse);
 }
 
 void TaskLearningAgent::Session::do_now(const std::vector<Action>& actions) {
@@ -434,14 +329,12 @@ void TaskLearningAgent::Session::do_now(const std::vector<Action>& actions) {
     const ObjectId thing = action.arguments()[0];
     bool closed = world().state.holds(Fact(world().vocabulary.closed, {thing}));
     if ((name == "close" && closed) || (name == "open" && !closed)) {
-      say(language::capitalize(language::spoken_name(world(), thing)) + " is already " + (closed ? "closed" : "open") +
-              ".",
-          Voice::kResponse);
+      say(language::already_open_or_closed(world(), thing, closed), Voice::kResponse);
       continue;
     }
     std::string why = language::refusal(world(), action);
     if (!why.empty() || !execute(action)) {
-      say(why.empty() ? "I could not " + language::action_phrase(world(), action) + "." : why, Voice::kResponse);
+      say(why.empty() ? language::could_not(world(), action) : why, Voice::kResponse);
       continue;
     }
     done.push_back(action);
@@ -474,11 +367,7 @@ Status TaskLearningAgent::Session::forget(const std::string& kind) {
     // A kind that is not here may still be known.
     std::vector<std::string> fits = known_kinds(kind);
     if (fits.size() > 1) {
-      std::vector<std::string> named;
-      for (const std::string& c : fits) named.push_back("the " + language::spoken_category(c));
-      say("Which kind do you mean: " + language::list_phrase(named) + "? Say, for example, \"forget " +
-              language::spoken_category(fits.front()) + "\".",
-          Voice::kResponse);
+      say(language::which_kind_to_forget(fits), Voice::kResponse);
       return {};
     }
     if (fits.size() == 1) category = fits.front();
@@ -491,9 +380,7 @@ Status TaskLearningAgent::Session::forget(const std::string& kind) {
     auto rule = forget_rule_named(kind);
     if (!rule) return tl::unexpected(rule.error());
     if (*rule) return {};
-    say("I have not learned where to put " +
-            (category ? "the " + language::spoken_category(*category) : std::string(trim(kind))) +
-            ", so there is nothing to forget.",
+    say(language::nothing_to_forget(category ? std::optional<std::string_view>(*category) : std::nullopt, kind),
         Voice::kResponse);
     return {};
   }
@@ -505,8 +392,7 @@ Status TaskLearningAgent::Session::forget(const std::string& kind) {
       if (auto s = agent_.store_->remove_goal(key); !s) return s;
     }
   }
-  say("I forgot where " + language::kind_goes(*category) + "; I will ask when I meet one.",
-      Voice::kResponse);
+  say(language::forgot_where_kind_goes(*category), Voice::kResponse);
   return {};
 }
 
@@ -521,10 +407,8 @@ Result<bool> TaskLearningAgent::Session::forget_rule_named(const std::string& wh
   for (const ClassRule& rule : named)
     if (std::find(said.begin(), said.end(), say_class_rule(rule)) == said.end()) said.push_back(say_class_rule(rule));
   if (said.size() > 1) {
-    std::vector<std::string> subjects;
-    for (const ClassRule& rule : named) subjects.push_back("\"forget " + rule_subject(rule) + " " + rule_destination(rule) + "\"");
-    say("I have several rules about " + std::string(trim(what)) + ": " + join(said, "; ") + ". Say which, for example " +
-            subjects.front() + ".",
+    const ClassRule& first = named.front();
+    say(language::which_rule_to_forget(what, said, rule_subject(first) + " " + rule_destination(first)),
         Voice::kResponse);
     return true;
   }
@@ -535,7 +419,7 @@ Result<bool> TaskLearningAgent::Session::forget_rule_named(const std::string& wh
     said_rules_.remove(rule);
     proposer_.forget(rule);
   }
-  say("I forgot that " + said.front() + "; I will ask where such things go.", Voice::kResponse);
+  say(language::forgot_rule(said.front()), Voice::kResponse);
   return true;
 }
 

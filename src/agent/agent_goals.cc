@@ -6,6 +6,7 @@
 #include "agent/session.h"
 #include "language/generation.h"
 #include "language/narration.h"
+#include "language/narration_conversation.h"
 #include "util/log.h"
 #include "util/text.h"
 
@@ -87,8 +88,7 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
   for (int round = 0; round < rounds; ++round) {
     std::vector<llm::Candidate> candidates = unseen(llm.goals(context), seen);
     if (llm.last_failure() && candidates.empty()) {
-      say("I could not reach the language model (" + llm.last_failure()->message + ")" +
-          (instructed ? ", so I will ask." : "."));
+      say(language::could_not_reach_llm(llm.last_failure()->message, instructed));
       return std::optional<Goal>();
     }
     if (candidates.empty()) break;  // nothing new: a corpus or cassette has no answer to a re-prompt
@@ -172,7 +172,7 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
           ahead.reset();
           if (std::holds_alternative<language::Finished>(r)) return std::nullopt;
           const auto* given = std::get_if<language::GoalGiven>(&r);
-          if (given == nullptr) return "I asked where " + language::spoken_name(w, object) + " goes.";
+          if (given == nullptr) return language::asked_where_it_goes(w, object);
           std::vector<ObjectId> mentioned = given->goal.objects();
           if (std::find(mentioned.begin(), mentioned.end(), object) != mentioned.end()) return std::nullopt;
           std::vector<ObjectId> items;
@@ -183,10 +183,7 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
             return std::nullopt;
           }
           // A goal about something else is never stored as this one's.
-          std::vector<std::string> names;
-          for (ObjectId o : items) names.push_back(language::spoken_name(w, o));
-          return "That says what becomes of " + (names.empty() ? "other things" : language::list_phrase(names)) +
-                 ", but I asked about " + language::spoken_name_and_location(w, object) + ".";
+          return language::says_what_becomes_of_others(w, items, object);
         },
         [&](const std::string& text) { return goal_for_another(object, text); });
     if (!heard) return tl::unexpected(heard.error());
@@ -201,23 +198,21 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
     if (!heard->reply) {
       // Given up on after refused replies: said in the report, with them.
       report.note = "no usable goal from the instructor";
-      std::string help = "where " + language::spoken_name_and_location(w, object) + " goes (" + current().verb + ")";
-      if (!heard->refused.empty()) help += "; the replies I could not use: " + join(heard->refused, ", ");
-      report_.help_needed.push_back(std::move(help));
+      report_.help_needed.push_back(language::help_needed_for_goal(w, object, current().verb, heard->refused));
       return std::optional<Goal>();
     }
     begin_lesson(heard->text);
     if (std::holds_alternative<language::Finished>(*heard->reply)) {
       report.note = "left where it is, as the instructor said";
-      say("I will leave " + language::spoken_name_and_location(w, object) + " as it is.");
+      say(language::will_leave_as_it_is(w, object, true));
       return std::optional<Goal>();
     }
     const ObjectId about = ahead.value_or(object);
-    std::string read_back;
-    const language::GoalGiven given =
-        with_doors_closed(about, std::get<language::GoalGiven>(*heard->reply), read_back);
+    bool say_norm = false;
+    const language::GoalGiven given = with_doors_closed(about, std::get<language::GoalGiven>(*heard->reply), say_norm);
     const std::string source = "instructor: " + apprentice::quoted(heard->text);
-    say(read_back + (ahead ? " I will do that when I come to " + language::object_pronoun(w, about) + "." : ""));
+    say((ahead ? language::read_back_goal_for_later(w, about, given.goal) : language::read_back_goal(w, about, given.goal)) +
+        (say_norm ? " " + language::closing_norm_note() : ""));
     if (auto s = learn_goal(about, given.goal, source); !s) return stop(s.error());
     if (auto s = learn_goals_of_others(object, about, given, source); !s) return stop(s.error());
     if (ahead) continue;
@@ -241,15 +236,12 @@ std::optional<language::Reply> TaskLearningAgent::Session::goal_for_another(Obje
   // Not in this subtask's places: its subtask is not known yet.
   const ObjectId other = items.front();
   return language::Reply(language::Unusable{
-      "I will ask about " + language::spoken_name(world(), other) + " when I come to " +
-          language::object_pronoun(world(), other) + "; now I " +
-          current().verb + " what is " + current().relation + " " + language::spoken_places(world(), current().places) +
-          ". Where should " + language::spoken_name(world(), object) + " go?",
+      language::will_ask_about_later(world(), other, {current().verb, current().relation, current().places}, object),
       agent_.understanding_.example_replies(world(), context(language::Asked::kGoal, object)), std::nullopt});
 }
 
 language::GoalGiven TaskLearningAgent::Session::with_doors_closed(ObjectId about, language::GoalGiven given,
-                                                                  std::string& read_back) {
+                                                                  bool& say_norm) {
   const World& w = world();
   bool by_norm = false;
   auto close = [&](ObjectId object, Goal& goal) {
@@ -265,19 +257,15 @@ language::GoalGiven TaskLearningAgent::Session::with_doors_closed(ObjectId about
       if (w.universe->info(o).kind == ObjectKind::kItem) items.push_back(o);
     if (items.size() == 1) close(items.front(), other);
   }
-  read_back = language::read_back_goal(w, about, given.goal);
-  if (by_norm && !closing_norm_said_) {
-    closing_norm_said_ = true;
-    read_back += " " + language::closing_norm_note();
-  }
+  say_norm = by_norm && !closing_norm_said_;
+  closing_norm_said_ = closing_norm_said_ || by_norm;
   return given;
 }
 
 Status TaskLearningAgent::Session::learn_goals_of_others(ObjectId asked, ObjectId about, const language::GoalGiven& given,
                                                         const std::string& source) {
   const World& w = world();
-  std::vector<std::string> same;
-  std::vector<ObjectId> learned, later;
+  std::vector<ObjectId> same, learned, later;
   for (const Goal& goal : given.others) {
     std::vector<ObjectId> items;
     for (ObjectId o : goal.objects())
@@ -299,21 +287,10 @@ Status TaskLearningAgent::Session::learn_goals_of_others(ObjectId asked, ObjectI
     bool alike = goal.literals.size() == given.goal.literals.size() &&
                  std::equal(goal.literals.begin(), goal.literals.end(), given.goal.literals.begin(),
                             [&](const Literal& a, const Literal& b) { return as_asked(a) == b; });
-    if (alike) same.push_back(language::spoken_name(w, item));
+    if (alike) same.push_back(item);
     else say(language::read_back_goal(w, item, goal));
   }
-  auto them = [&](const std::vector<ObjectId>& things) {
-    return things.size() == 1 ? language::object_pronoun(w, things.front()) : std::string("them");
-  };
-  if (!same.empty())
-    say("The same goes for " + language::list_phrase(same) + ", when I come to " + them(learned) + ".");
-  else if (!learned.empty())
-    say("I will do that when I come to " + them(learned) + ".");
-  if (!later.empty()) {
-    std::vector<std::string> names;
-    for (ObjectId o : later) names.push_back(language::spoken_name(w, o));
-    say("I will ask about " + language::list_phrase(names) + " when I come to " + them(later) + ".");
-  }
+  for (const std::string& line : language::goals_for_others(w, same, learned, later)) say(line);
   return {};
 }
 

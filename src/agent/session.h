@@ -209,10 +209,10 @@ class TaskLearningAgent::Session {
   // about in their turn.
   // A teacher's goal with the doors it opens closed after, unless the
   // teacher said to leave them open (closings_to_complete, agent/
-  // goal_repair.h), for `about` and for each other thing it gave a goal;
-  // `read_back` gets closing_norm_note() the first time in the session
-  // that a closing came from the norm alone.
-  language::GoalGiven with_doors_closed(ObjectId about, language::GoalGiven given, std::string& read_back);
+  // goal_repair.h), for `about` and for each other thing it gave a goal.
+  // `say_norm` is set the first time in the session that a closing came
+  // from the norm alone: the read-back then adds closing_norm_note().
+  language::GoalGiven with_doors_closed(ObjectId about, language::GoalGiven given, bool& say_norm);
   Status learn_goals_of_others(ObjectId asked, ObjectId about, const language::GoalGiven& given,
                                const std::string& source);
   // Whether `item` is in or on a place of the current subtask and not yet

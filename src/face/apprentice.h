@@ -226,6 +226,110 @@ std::string done();
 std::string answer(bool yes);
 }  // namespace words
 
+// Planning and reading English without an agent: what `apprentice plan`
+// and `apprentice interpret` print, for the CLI and the Python module alike
+// (face/plan_and_interpret.cc). Each call takes the world read-only.
+
+// The goal that stands for the whole task (`plan --goal intent`): every
+// goal assertion of the scenario's intent.
+inline constexpr std::string_view kIntentGoal = "intent";
+
+// The goal `text` names in `scenario`'s world: PDDL, or kIntentGoal.
+// Errors: kInvalidInput for English (told that `interpret` reads it) or a
+// goal naming what the world lacks (with "did you mean ketchup1?").
+Result<Goal> parse_goal_or_intent(const Scenario& scenario, const std::string& text);
+
+struct PlanRequest {
+  std::string goal;  // PDDL ("(and (in ketchup1 fridge1) (closed fridge1))"), or kIntentGoal
+  // Iterative deepening to this depth (a shortest plan); unset: greedy
+  // best-first search.
+  std::optional<int> depth;
+  std::optional<long> node_limit;      // stop after expanding this many nodes
+  std::optional<double> time_limit_s;  // stop after this many seconds
+  bool pruning = true;                 // ground only the objects relevant to the goal
+  // Greedy search only: called about once a second after the first with a
+  // line on its progress ("searching: 1200 nodes in 1.0 s (...)").
+  std::function<void(const std::string&)> progress;
+};
+
+// What a search found, in the three forms `plan` prints.
+struct PlanFound {
+  bool solved = false;
+  std::string status;                // "solved", "exhausted", "budget-exhausted", ...
+  std::vector<std::string> actions;  // the plan in PDDL, one action each
+  std::string text;  // `plan`: the numbered sentences ("1. Open the fridge.") and the search in one sentence
+  std::string pddl;  // `plan --pddl`: one action a line, the search's figures on a ";;" line
+  std::string json;  // `plan --json`
+  // When no plan reaches the goal: why, in one sentence (the CLI's line
+  // on stderr); empty otherwise.
+  std::string why_not;
+  // What relevance pruning did and why it is safe: sentences for a log.
+  std::vector<std::string> notes;
+};
+
+// Searches from `scenario`'s state to `request.goal`. Not finding a plan is
+// no error (PlanFound::solved). Errors: kInvalidInput for a goal that is not
+// PDDL (English is told that `interpret` reads it) or names what the world
+// lacks.
+Result<PlanFound> plan(const Scenario& scenario, const PlanRequest& request);
+
+// The kinds of question a teacher's reply is read at, in the one vocabulary
+// of `interpret --asked`, Python's `interpret(asked=...)` and
+// `Question.asked`, and docs/language.md: "task", "task-step",
+// "subtask-end", "goal", "action", "yes-no", "which".
+std::vector<std::string> question_kinds();
+// The kind of question `question` is, in that vocabulary: a subtask's
+// question about an object asks for its goal, without one whether the
+// subtask is done; both confirmations are yes-no.
+std::string question_kind(const Question& question);
+
+// The question a reply answers (`interpret --asked`).
+struct AskedQuestion {
+  std::string kind;                   // one of question_kinds()
+  std::optional<std::string> object;  // the thing asked about: an id ("mug2"), or a category (at `subtask`'s place)
+  std::optional<std::string> subtask; // "clear"
+  std::optional<std::string> recent;  // the place named last (an id)
+  std::vector<std::string> choices;   // kind "which": the ids offered
+};
+
+// How a reply reads at a question.
+struct ReplyReading {
+  std::string reply, asked;
+  std::string meaning;   // "goal (and (in ketchup1 fridge1) (closed fridge1))", "unusable", ...
+  bool usable = false;   // neither unusable nor ambiguous
+  std::string reason;    // unusable: why, in English
+  std::string question;  // ambiguous: what the agent would ask
+  std::vector<std::string> examples;  // unusable: replies that would work
+  std::string text;      // what `interpret --asked` prints
+  std::string json;      // what `interpret --asked --json` prints
+};
+
+// Reads `reply` as a teacher's answer to `asked` in `scenario`'s world.
+// Errors: kInvalidInput for a kind not in question_kinds(); kNotFound for
+// an object, place or choice the world lacks.
+Result<ReplyReading> interpret_reply(const Scenario& scenario, std::string_view reply, const AskedQuestion& asked);
+
+// How a sentence reads as a goal or an action (`interpret "sentence"`).
+struct SentenceReading {
+  bool grounded = false;
+  // The grammar does not cover it (the CLI's exit 2); `detail` says where.
+  bool outside_grammar = false;
+  std::string detail;
+  std::string text;  // what `interpret` prints
+  std::string json;  // what `interpret --json` prints
+};
+
+// Interprets `sentence` about `object` (an id, or a category at
+// `subtask`'s place). Errors: kNotFound for an object the world lacks.
+Result<SentenceReading> interpret_sentence(const Scenario& scenario, std::string_view sentence,
+                                           const std::optional<std::string>& object,
+                                           const std::optional<std::string>& subtask);
+
+// Grounds every line of a JSON-lines corpus of LLM goal statements and
+// returns the report `interpret --corpus` prints (JSON with `json`).
+// Errors: the corpus file's (kNotFound, kInvalidInput with its line, kIo).
+Result<std::string> interpret_corpus(const Scenario& scenario, const std::filesystem::path& corpus, bool json);
+
 // Measures against a scenario's intent: its goal assertions that hold in
 // `state`; the objects whose whole intended goal holds; the paper's
 // completion rate in percent (100 when there are none).

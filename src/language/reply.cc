@@ -198,6 +198,12 @@ std::string_view to_string(Asked asked) {
   return "task";
 }
 
+std::optional<Asked> asked_named(std::string_view name) {
+  for (Asked asked : kEveryAsked)
+    if (to_string(asked) == name) return asked;
+  return std::nullopt;
+}
+
 namespace {
 
 // A goal that leaves the thing asked about where it is ("leave it on the

@@ -41,6 +41,12 @@ enum class Asked {
 };
 
 std::string_view to_string(Asked asked);
+// Every kind of question, in the order help and the docs list them: the one
+// vocabulary of `interpret --asked` and of Python.
+inline constexpr Asked kEveryAsked[] = {Asked::kTask, Asked::kTaskStep, Asked::kSubtaskEnd, Asked::kGoal,
+                                        Asked::kAction, Asked::kYesNo, Asked::kWhich};
+// The kind `name` names ("goal"), if any.
+std::optional<Asked> asked_named(std::string_view name);
 
 struct ReplyContext {
   Asked asked = Asked::kTask;

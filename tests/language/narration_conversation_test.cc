@@ -1,0 +1,87 @@
+// The agent's sentences in conversation (language/narration_conversation.h):
+// status, the teacher's own questions, refused replies and goals said for
+// other things, each from the facts the agent passes.
+#include "language/narration_conversation.h"
+
+#include <gtest/gtest.h>
+
+#include "language_fixtures.h"
+
+namespace apprentice::language {
+namespace {
+
+using testing::kitchen30;
+
+ObjectId thing(std::string_view name) { return *kitchen30().world.universe->find(name); }
+
+SubtaskUnderWay clearing_the_table() { return {"clear", "on", {thing("table1")}}; }
+
+TEST(NarrationConversation, StatusSaysTheTaskThePartAndWhatIsKnown) {
+  const World& w = kitchen30().world;
+  WhatIAmDoing doing;
+  EXPECT_EQ(what_i_am_doing(w, doing),
+            "I have not been given a task yet. So far I know 0 goals and 0 rules, after 0 instructions this session.");
+  doing.task = "tidy kitchen";
+  doing.subtask = clearing_the_table();
+  doing.working_on = thing("ketchup1");
+  doing.asking_about = thing("milk1");  // working on something comes first
+  doing.goals = 3;
+  doing.rules = 1;
+  doing.instructions = 1;
+  EXPECT_EQ(what_i_am_doing(w, doing),
+            "I am learning to tidy the kitchen; now I clear what is on the table, working on the ketchup. So far I "
+            "know 3 goals and 1 rule, after 1 instruction this session.");
+  doing.working_on.reset();
+  EXPECT_NE(what_i_am_doing(w, doing).find(", asking about the milk."), std::string::npos);
+}
+
+TEST(NarrationConversation, WhatIsLeftOfAPartCountsTheThingsThere) {
+  const World& w = kitchen30().world;
+  EXPECT_EQ(whats_left_of_subtask(w, clearing_the_table(), {}), "Nothing else is left on the table.");
+  const std::vector<ObjectId> left = {thing("ketchup1"), thing("milk1")};
+  EXPECT_EQ(whats_left_of_subtask(w, clearing_the_table(), left), "Still on the table: the ketchup and the milk.");
+}
+
+TEST(NarrationConversation, WhereThingsAreSaysEachOrWhyNot) {
+  const World& w = kitchen30().world;
+  EXPECT_EQ(where_things_are(w, "the unicorn", {}), std::vector<std::string>{"I don't see the unicorn here."});
+  const std::vector<ObjectId> ketchup = {thing("ketchup1")};
+  EXPECT_EQ(where_things_are(w, "the ketchup", ketchup), std::vector<std::string>{"The ketchup is on the table."});
+  // At most three things are said, however many the phrase named.
+  std::vector<ObjectId> many;
+  for (ObjectId o : w.universe->of_kind(ObjectKind::kItem)) many.push_back(o);
+  ASSERT_GT(many.size(), 3u);
+  EXPECT_EQ(where_things_are(w, "everything", many).size(), 3u);
+}
+
+TEST(NarrationConversation, ARefusedReplyEndsInOnePeriodAndOffersTwoExamples) {
+  EXPECT_EQ(reply_refused("I asked what to do next", {"open the fridge", "pick up the ketchup", "close it"}),
+            "I asked what to do next. You could say, for example, \"open the fridge\" or \"pick up the ketchup\".");
+  EXPECT_EQ(reply_refused("Which one?", {}), "Which one?");
+  // A quotation that ends with its own period gets none after it.
+  EXPECT_EQ(with_period("You said \"Clear the table.\""), "You said \"Clear the table.\"");
+  EXPECT_EQ(kinds_of_answer(Asked::kYesNo, {}), "Answer yes or no.");
+  EXPECT_EQ(kinds_of_answer(Asked::kAction, {"open the fridge"}), "Tell me one thing to do next, for example \"open the fridge\".");
+}
+
+TEST(NarrationConversation, GoalsForOtherThingsUseTheRightPronoun) {
+  const World& w = kitchen30().world;
+  const std::vector<ObjectId> fork = {thing("metal-fork1")}, two = {thing("metal-fork1"), thing("ketchup1")};
+  EXPECT_EQ(goals_for_others(w, fork, fork, {}),
+            std::vector<std::string>{"The same goes for the metal fork, when I come to it."});
+  EXPECT_EQ(goals_for_others(w, {}, two, {}), std::vector<std::string>{"I will do that when I come to them."});
+  EXPECT_EQ(goals_for_others(w, {}, {}, fork),
+            std::vector<std::string>{"I will ask about the metal fork when I come to it."});
+  EXPECT_TRUE(goals_for_others(w, {}, {}, {}).empty());
+}
+
+TEST(NarrationConversation, ForgettingNamesTheKind) {
+  EXPECT_EQ(forgot_where_kind_goes("glass-tumbler"), "I forgot where the glass tumbler goes; I will ask when I meet one.");
+  EXPECT_EQ(nothing_to_forget(std::nullopt, "  the unicorns "),
+            "I have not learned where to put the unicorns, so there is nothing to forget.");
+  EXPECT_EQ(which_kind_to_forget({"red-cup", "blue-cup"}),
+            "Which kind do you mean: the red cup and the blue cup? Say, for example, \"forget red cup\".");
+}
+
+}  // namespace
+}  // namespace apprentice::language
