@@ -10,6 +10,12 @@
 
 namespace apprentice {
 
+namespace {
+
+// An object's report when the teacher said to leave it.
+constexpr std::string_view kLeftAsTold = "left where it is, as the instructor said";
+
+}  // namespace
 
 GoalKey TaskLearningAgent::Session::goal_key(ObjectId object) const {
   return GoalKey{progress_.task.name, current().verb, world().universe->info(object).category,
@@ -205,9 +211,20 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
       report_.help_needed.push_back(std::move(help));
       return std::optional<Goal>();
     }
+    if (const auto* ended = std::get_if<language::Finished>(&*heard->reply); ended && ended->ending) {
+      auto left = ask_to_leave_the_rest(object);
+      if (!left) return tl::unexpected(left.error());
+      if (left->has_value() && !**left) continue;  // "no": the question again
+      if (left->has_value()) {
+        report.note = kLeftAsTold;
+        return std::optional<Goal>();
+      }
+      // Nothing else to come: the ending leaves this thing, below.
+    }
     begin_lesson(heard->text);
     if (std::holds_alternative<language::Finished>(*heard->reply)) {
-      report.note = "left where it is, as the instructor said";
+      report.note = kLeftAsTold;
+      progress_.thing_left(object);
       say("I will leave " + language::spoken_name_and_location(w, object) + " as it is.");
       return std::optional<Goal>();
     }
@@ -222,6 +239,36 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
     report.goal_source = GoalSource::kInstructor;
     return std::optional<Goal>(given.goal);
   }
+}
+
+TaskLearningAgent::Session::Flow<std::optional<bool>> TaskLearningAgent::Session::ask_to_leave_the_rest(
+    ObjectId object) {
+  const World& w = world();
+  std::vector<ObjectId> rest;
+  for (ObjectId o : w.universe->of_kind(ObjectKind::kItem))
+    if (o != object && still_to_come(o)) rest.push_back(o);
+  if (rest.empty()) return std::optional<bool>();
+  std::vector<ObjectId> things = {object};
+  things.insert(things.end(), rest.begin(), rest.end());
+  const Current part = current();
+  auto yes =
+      confirm(question(QuestionKind::kSubtaskStep, language::ask_leave_the_rest(w, things, part.places), object));
+  if (!yes) return tl::unexpected(yes.error());
+  if (!*yes) {
+    say(language::read_back_going_on(w, object));
+    return std::optional<bool>(false);
+  }
+  say(language::read_back_part_left(w, things, part.places));
+  std::vector<std::pair<ObjectId, ObjectReport>> left;
+  for (ObjectId o : rest) {
+    ObjectReport as_left;
+    as_left.object = w.universe->name(o);
+    as_left.subtask = part.verb;
+    as_left.note = kLeftAsTold;
+    left.emplace_back(o, std::move(as_left));
+  }
+  progress_.part_left(object, left);
+  return std::optional<bool>(true);
 }
 
 std::optional<language::Reply> TaskLearningAgent::Session::goal_for_another(ObjectId object,
