@@ -173,26 +173,7 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
     std::optional<ObjectId> ahead;
     auto heard = converse(
         asked, context(language::Asked::kGoal, object),
-        [&](const language::Reply& r) -> std::optional<std::string> {
-          ahead.reset();
-          if (std::holds_alternative<language::Finished>(r)) return std::nullopt;
-          const auto* given = std::get_if<language::GoalGiven>(&r);
-          if (given == nullptr) return "I asked where " + language::spoken_name(w, object) + " goes.";
-          std::vector<ObjectId> mentioned = given->goal.objects();
-          if (std::find(mentioned.begin(), mentioned.end(), object) != mentioned.end()) return std::nullopt;
-          std::vector<ObjectId> items;
-          for (ObjectId o : mentioned)
-            if (w.universe->info(o).kind == ObjectKind::kItem) items.push_back(o);
-          if (items.size() == 1 && still_to_come(items.front())) {
-            ahead = items.front();
-            return std::nullopt;
-          }
-          // A goal about something else is never stored as this one's.
-          std::vector<std::string> names;
-          for (ObjectId o : items) names.push_back(language::spoken_name(w, o));
-          return "That says what becomes of " + (names.empty() ? "other things" : language::list_phrase(names)) +
-                 ", but I asked about " + language::spoken_name_and_location(w, object) + ".";
-        },
+        [&](const language::Reply& r) { return why_not_a_goal_for(object, r, ahead); },
         [&](const std::string& text) { return goal_for_another(object, text); });
     if (!heard) return tl::unexpected(heard.error());
     if (heard->rule_heard) {
@@ -239,6 +220,29 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
     report.goal_source = GoalSource::kInstructor;
     return std::optional<Goal>(given.goal);
   }
+}
+
+std::optional<std::string> TaskLearningAgent::Session::why_not_a_goal_for(
+    ObjectId object, const language::Reply& reply, std::optional<ObjectId>& ahead) const {
+  const World& w = world();
+  ahead.reset();
+  if (std::holds_alternative<language::Finished>(reply)) return std::nullopt;
+  const auto* given = std::get_if<language::GoalGiven>(&reply);
+  if (given == nullptr) return "I asked where " + language::spoken_name(w, object) + " goes.";
+  std::vector<ObjectId> mentioned = given->goal.objects();
+  if (std::find(mentioned.begin(), mentioned.end(), object) != mentioned.end()) return std::nullopt;
+  std::vector<ObjectId> items;
+  for (ObjectId o : mentioned)
+    if (w.universe->info(o).kind == ObjectKind::kItem) items.push_back(o);
+  if (items.size() == 1 && still_to_come(items.front())) {
+    ahead = items.front();
+    return std::nullopt;
+  }
+  // A goal about something else is never stored as this one's.
+  std::vector<std::string> names;
+  for (ObjectId o : items) names.push_back(language::spoken_name(w, o));
+  return "That says what becomes of " + (names.empty() ? "other things" : language::list_phrase(names)) +
+         ", but I asked about " + language::spoken_name_and_location(w, object) + ".";
 }
 
 TaskLearningAgent::Session::Flow<std::optional<bool>> TaskLearningAgent::Session::ask_to_leave_the_rest(

@@ -136,6 +136,11 @@ class TaskLearningAgent::Session {
   Flow<std::optional<Goal>> acquire_goal(ObjectId object, ObjectReport& report);
   Flow<std::optional<Goal>> goal_from_llm(ObjectId object, ObjectReport& report);
   Flow<std::optional<Goal>> goal_from_instructor(ObjectId object, ObjectReport& report);
+  // Whether `reply` answers the goal question of `object`: nullopt when it
+  // does (an ending or "leave it", its goal, or a goal for one thing still
+  // to come, which is then `ahead`), else why not, in plain English.
+  std::optional<std::string> why_not_a_goal_for(ObjectId object, const language::Reply& reply,
+                                                std::optional<ObjectId>& ahead) const;
   // An ending said at the goal question of `object` ("I'm done"): with
   // other things of the part still to come, asked back by name ("There are
   // still 3 things on the table: ... Shall I leave them?"). nullopt when
