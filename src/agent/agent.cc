@@ -284,11 +284,18 @@ void TaskLearningAgent::Session::finish_subtask() {
   if (learning_) {
     // Objects the agent could not tidy are still there: saying "nothing
     // left" would be false (issue 25: 30 of 30 were still on the table).
-    const long long remaining = static_cast<long long>(items_at(world(), c.places));
-    if (remaining == 0)
+    // Things the teacher said to leave were read back then ("I will leave
+    // ...", "So I leave ..."), and are not failures.
+    const long long left = static_cast<long long>(std::count_if(
+        progress_.left_by_teacher.begin(), progress_.left_by_teacher.end(), [&](ObjectId o) {
+          std::optional<ObjectId> at = language::place_of(world(), o);
+          return at && std::find(c.places.begin(), c.places.end(), *at) != c.places.end();
+        }));
+    const long long remaining = static_cast<long long>(items_at(world(), c.places)) - left;
+    if (remaining == 0 && left == 0)
       say("There is nothing " + std::string(c.mode == Current::Mode::kFirstObject ? "" : "left ") + c.relation + " " +
           language::spoken_places(world(), c.places) + ".");
-    else
+    else if (remaining > 0)
       say("I could not " + c.verb + " " + (remaining == 1 ? "1 object" : std::to_string(remaining) + " objects") +
           " still " + c.relation + " " + language::spoken_places(world(), c.places) + ".");
   }

@@ -12,6 +12,12 @@
 
 namespace apprentice {
 
+namespace {
+
+// An object's report when the teacher said to leave it.
+constexpr std::string_view kLeftAsTold = "left where it is, as the instructor said";
+
+}  // namespace
 
 GoalKey TaskLearningAgent::Session::goal_key(ObjectId object) const {
   return GoalKey{progress_.task.name, current().verb, world().universe->info(object).category,
@@ -168,23 +174,7 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
     std::optional<ObjectId> ahead;
     auto heard = converse(
         asked, context(language::Asked::kGoal, object),
-        [&](const language::Reply& r) -> std::optional<std::string> {
-          ahead.reset();
-          if (std::holds_alternative<language::Finished>(r)) return std::nullopt;
-          const auto* given = std::get_if<language::GoalGiven>(&r);
-          if (given == nullptr) return language::asked_where_it_goes(w, object);
-          std::vector<ObjectId> mentioned = given->goal.objects();
-          if (std::find(mentioned.begin(), mentioned.end(), object) != mentioned.end()) return std::nullopt;
-          std::vector<ObjectId> items;
-          for (ObjectId o : mentioned)
-            if (w.universe->info(o).kind == ObjectKind::kItem) items.push_back(o);
-          if (items.size() == 1 && still_to_come(items.front())) {
-            ahead = items.front();
-            return std::nullopt;
-          }
-          // A goal about something else is never stored as this one's.
-          return language::says_what_becomes_of_others(w, items, object);
-        },
+        [&](const language::Reply& r) { return why_not_a_goal_for(object, r, ahead); },
         [&](const std::string& text) { return goal_for_another(object, text); });
     if (!heard) return tl::unexpected(heard.error());
     if (heard->rule_heard) {
@@ -201,9 +191,20 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
       report_.help_needed.push_back(language::help_needed_for_goal(w, object, current().verb, heard->refused));
       return std::optional<Goal>();
     }
+    if (const auto* ended = std::get_if<language::Finished>(&*heard->reply); ended && ended->ending) {
+      auto left = ask_to_leave_the_rest(object);
+      if (!left) return tl::unexpected(left.error());
+      if (left->has_value() && !**left) continue;  // "no": the question again
+      if (left->has_value()) {
+        report.note = kLeftAsTold;
+        return std::optional<Goal>();
+      }
+      // Nothing else to come: the ending leaves this thing, below.
+    }
     begin_lesson(heard->text);
     if (std::holds_alternative<language::Finished>(*heard->reply)) {
-      report.note = "left where it is, as the instructor said";
+      report.note = kLeftAsTold;
+      progress_.thing_left(object);
       say(language::will_leave_as_it_is(w, object, true));
       return std::optional<Goal>();
     }
@@ -219,6 +220,56 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
     report.goal_source = GoalSource::kInstructor;
     return std::optional<Goal>(given.goal);
   }
+}
+
+std::optional<std::string> TaskLearningAgent::Session::why_not_a_goal_for(
+    ObjectId object, const language::Reply& reply, std::optional<ObjectId>& ahead) const {
+  const World& w = world();
+  ahead.reset();
+  if (std::holds_alternative<language::Finished>(reply)) return std::nullopt;
+  const auto* given = std::get_if<language::GoalGiven>(&reply);
+  if (given == nullptr) return language::asked_where_it_goes(w, object);
+  std::vector<ObjectId> mentioned = given->goal.objects();
+  if (std::find(mentioned.begin(), mentioned.end(), object) != mentioned.end()) return std::nullopt;
+  std::vector<ObjectId> items;
+  for (ObjectId o : mentioned)
+    if (w.universe->info(o).kind == ObjectKind::kItem) items.push_back(o);
+  if (items.size() == 1 && still_to_come(items.front())) {
+    ahead = items.front();
+    return std::nullopt;
+  }
+  // A goal about something else is never stored as this one's.
+  return language::says_what_becomes_of_others(w, items, object);
+}
+
+TaskLearningAgent::Session::Flow<std::optional<bool>> TaskLearningAgent::Session::ask_to_leave_the_rest(
+    ObjectId object) {
+  const World& w = world();
+  std::vector<ObjectId> rest;
+  for (ObjectId o : w.universe->of_kind(ObjectKind::kItem))
+    if (o != object && still_to_come(o)) rest.push_back(o);
+  if (rest.empty()) return std::optional<bool>();
+  std::vector<ObjectId> things = {object};
+  things.insert(things.end(), rest.begin(), rest.end());
+  const Current part = current();
+  auto yes =
+      confirm(question(QuestionKind::kSubtaskStep, language::ask_leave_the_rest(w, things, part.places), object));
+  if (!yes) return tl::unexpected(yes.error());
+  if (!*yes) {
+    say(language::read_back_going_on(w, object));
+    return std::optional<bool>(false);
+  }
+  say(language::read_back_part_left(w, things, part.places));
+  std::vector<std::pair<ObjectId, ObjectReport>> left;
+  for (ObjectId o : rest) {
+    ObjectReport as_left;
+    as_left.object = w.universe->name(o);
+    as_left.subtask = part.verb;
+    as_left.note = kLeftAsTold;
+    left.emplace_back(o, std::move(as_left));
+  }
+  progress_.part_left(object, left);
+  return std::optional<bool>(true);
 }
 
 std::optional<language::Reply> TaskLearningAgent::Session::goal_for_another(ObjectId object,

@@ -44,6 +44,19 @@ void Curriculum::object_done() {
   if (current && current->mode == Current::Mode::kFirstObject) current->mode = Current::Mode::kEndQuestion;
 }
 
+void Curriculum::thing_left(ObjectId object) { left_by_teacher.push_back(object); }
+
+void Curriculum::part_left(ObjectId asked, const std::vector<std::pair<ObjectId, ObjectReport>>& left) {
+  thing_left(asked);
+  for (const auto& [object, report] : left) {
+    if (!evaluated.insert(object).second) continue;
+    evaluated_order.push_back(object);
+    objects.push_back(report);
+    left_by_teacher.push_back(object);
+  }
+  if (current) current->mode = Current::Mode::kLoop;
+}
+
 void Curriculum::subtask_done() {
   current = std::move(queued);
   queued.reset();

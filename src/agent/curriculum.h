@@ -9,8 +9,8 @@
 //   next()               what the state asks for           what moves it on
 //   kAchieve             an object whose goal is known     object_done()
 //   kAskTaskName         no task yet                       (the session names it)
-//   kNextObject          a subtask under way, looping or   object_done(), subtask_done()
-//                        at its first object
+//   kNextObject          a subtask under way, looping or   object_done(), subtask_done(),
+//                        at its first object               part_left()
 //   kAskSubtaskEnd       the paper's way, after the first  one_was_all(), loop(),
 //                        object: "is that all?"            subtask_named()
 //   kAskTaskStep         a loop that awaits "Repeat.", or  loop(), subtask_named(),
@@ -24,6 +24,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "agent/report.h"
@@ -76,6 +77,9 @@ struct Curriculum {
   std::set<ObjectId> evaluated;
   std::vector<ObjectId> evaluated_order;  // evaluated, in the order inserted
   std::optional<InProgress> in_progress;
+  // The things the teacher said to leave (part_left, thing_left): not
+  // things the agent failed to deal with.
+  std::vector<ObjectId> left_by_teacher;
   std::vector<ObjectReport> objects;
   int goals_learned = 0;
   int rules_learned = 0;
@@ -101,6 +105,17 @@ struct Curriculum {
   // The subtask under way has nothing left: the one named meanwhile, if any,
   // begins.
   void subtask_done();
+  // The teacher ended the part under way with things still in it (an
+  // ending at a goal question, then "yes" to "Shall I leave them?"): each
+  // of `left` is dealt with, left where it is (with its report, which
+  // says so), and the part loops no further, so that it ends once the
+  // object being asked about is done.
+  // `asked`, the object asked about, is left too; its report comes when
+  // it is done (object_done).
+  void part_left(ObjectId asked, const std::vector<std::pair<ObjectId, ObjectReport>>& left);
+  // The teacher said to leave `object` ("leave it"): its report comes when
+  // it is done; it is not a thing the agent failed to deal with.
+  void thing_left(ObjectId object);
 };
 
 }  // namespace apprentice::teaching

@@ -136,6 +136,18 @@ class TaskLearningAgent::Session {
   Flow<std::optional<Goal>> acquire_goal(ObjectId object, ObjectReport& report);
   Flow<std::optional<Goal>> goal_from_llm(ObjectId object, ObjectReport& report);
   Flow<std::optional<Goal>> goal_from_instructor(ObjectId object, ObjectReport& report);
+  // Whether `reply` answers the goal question of `object`: nullopt when it
+  // does (an ending or "leave it", its goal, or a goal for one thing still
+  // to come, which is then `ahead`), else why not, in plain English.
+  std::optional<std::string> why_not_a_goal_for(ObjectId object, const language::Reply& reply,
+                                                std::optional<ObjectId>& ahead) const;
+  // An ending said at the goal question of `object` ("I'm done"): with
+  // other things of the part still to come, asked back by name ("There are
+  // still 3 things on the table: ... Shall I leave them?"). nullopt when
+  // nothing else is to come (the ending leaves this thing, as "leave it"
+  // does); true when the teacher said to leave them (the part ends with
+  // them where they are); false to go on asking about `object`.
+  Flow<std::optional<bool>> ask_to_leave_the_rest(ObjectId object);
   Status learn_goal(ObjectId object, const Goal& goal, const std::string& source);
   // Asks the LLM, the first time a thing needs it this session, for the
   // summary of what was taught and where each thing to place goes; the

@@ -50,6 +50,12 @@ std::string task_name_as_read(const Lexicon& lexicon, std::string_view name);
 std::optional<VerbTaken> known_step_verb(const Lexicon& lexicon, std::string_view verb, std::string_view particle,
                                          ObjectKind place, std::span<const std::string> taught);
 
+// English's reversative prefixes ("de", "un", "dis"): a verb WordNet
+// lacks ("declutter") stands for the same stem with another of them that
+// WordNet has ("unclutter": clear, rid of obstructions), which is
+// returned; "" when WordNet has the verb itself or no such other.
+std::string reversative_lemma(const Lexicon& lexicon, std::string_view verb);
+
 // The step verb for taking everything from a place of this kind: a
 // surface is cleared, a receptacle emptied.
 std::string clearing_verb(ObjectKind place);

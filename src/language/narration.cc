@@ -429,6 +429,26 @@ std::string ask_subtask_end(std::string_view verb, const World& world, std::span
   return "Is there more to " + std::string(verb) + where + ", or is that all?";
 }
 
+std::string ask_leave_the_rest(const World& world, std::span<const ObjectId> things, std::span<const ObjectId> places) {
+  const bool one = things.size() == 1;
+  std::string where = places.empty() ? std::string() : " " + std::string(relation_word(world, places.front())) + " " +
+                                                          spoken_places(world, places);
+  return std::string(one ? "There is still 1 thing" : "There are still " + std::to_string(things.size()) + " things") +
+         where + ": " + spoken_things(world, things) + ". Shall I leave " +
+         (one ? object_pronoun(world, things.front()) : std::string("them")) + "?";
+}
+
+std::string read_back_part_left(const World& world, std::span<const ObjectId> things,
+                                std::span<const ObjectId> places) {
+  std::string where = places.empty() ? std::string() : " " + std::string(relation_word(world, places.front())) + " " +
+                                                          spoken_places(world, places);
+  return "So I leave " + spoken_things(world, things) + where + ", and this part of the task is done.";
+}
+
+std::string read_back_going_on(const World& world, ObjectId object) {
+  return "So I go on with " + spoken_name(world, object) + ".";
+}
+
 std::string ask_next_action(const World& world, const Goal& goal) {
   return "What should I do next so that " + goal_facts(world, goal) + "?";
 }

@@ -81,6 +81,19 @@ std::string ask_subtask_end(std::string_view verb, const World& world, std::span
 // fridge is closed?"
 std::string ask_next_action(const World& world, const Goal& goal);
 
+// --- An ending said in the middle of a part -------------------------------
+
+// "There are still 3 things on the table: the mug, the fork and the bowl.
+// Shall I leave them?": asked back when the teacher says an ending ("I'm
+// done", "that's it") at a goal question while `things` (the one asked
+// about among them) are still to come at `places`, the part's places.
+std::string ask_leave_the_rest(const World& world, std::span<const ObjectId> things, std::span<const ObjectId> places);
+// "So I leave them on the table, and this part of the task is done." (yes)
+std::string read_back_part_left(const World& world, std::span<const ObjectId> things,
+                                std::span<const ObjectId> places);
+// "So I go on with the metal fork." (no)
+std::string read_back_going_on(const World& world, ObjectId object);
+
 // --- Goals -----------------------------------------------------------------
 
 // "the ketchup is in the fridge and the fridge is closed": the goal as

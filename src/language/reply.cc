@@ -373,7 +373,7 @@ std::string format_reply(const World& world, const Reply& reply) {
     std::string operator()(const LoopNamed& r) const {
       return "loop " + std::string(to_string(r.relation)) + " " + list(r.places);
     }
-    std::string operator()(const Finished&) const { return "finished"; }
+    std::string operator()(const Finished& f) const { return f.ending ? "finished (an ending)" : "finished"; }
     std::string operator()(const Proceed&) const { return "proceed"; }
     std::string operator()(const GoalGiven& r) const {
       std::string out = "goal " + format_goal(*world.domain, u, r.goal);

@@ -120,8 +120,14 @@ struct LoopNamed {
 };
 
 // "You are done.", "That's all.", "Done.", "We're finished.": the end of
-// whatever is being taught (the subtask or the task).
-struct Finished {};
+// whatever is being taught (the subtask or the task). At a goal question,
+// "skip it", "leave it" or "done" leave the one thing asked about; an
+// ending said there ("I'm done", "that's it", "we're done here") is
+// `ending`: it may end the part under way, which the dialogue asks back
+// while things of the part are still to come, and never names a subtask.
+struct Finished {
+  bool ending = false;
+};
 
 // "Repeat.", "next", "keep going": go on.
 struct Proceed {};

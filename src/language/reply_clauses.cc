@@ -4,6 +4,7 @@
 #include <array>
 #include <utility>
 
+#include "language/known_verbs.h"
 #include "language/reference.h"
 #include "language/utterance.h"
 #include "util/text.h"
@@ -443,6 +444,8 @@ std::string ReplyVocabulary::any_verb(std::string_view word) const {
   if (lexicon_.has_verb(word)) return std::string(word);
   for (const std::string& base : lexicon_.verb_lemmas(word))
     if (lexicon_.has_verb(base)) return base;
+  // "declutter": a verb WordNet has with another reversative prefix.
+  if (!reversative_lemma(lexicon_, word).empty()) return std::string(word);
   return "";
 }
 

@@ -378,6 +378,9 @@ std::optional<Reply> read_goal_by_others(const Grounder& grounder, const World& 
                                          std::string_view text, const Reply& first) {
   Words words = reply_words(text);
   if (leaves_it_alone(words)) return Finished{};
+  // "I'm done", "that's it", "we're done here": an ending, which the
+  // question pending decides the meaning of (language/reply.h, Finished).
+  if (ReplyInput in(grounder, world, context, words); says_only_an_ending(words, in)) return Finished{true};
   if (auto again = read_same_again(text)) return goal_given_last(grounder, world, context, *again, text);
   SameAs same = read_same_as(text);
   if (!same.other.empty())

@@ -88,6 +88,11 @@ std::optional<std::pair<std::size_t, bool>> answer_prefix(const std::vector<std:
 // The finished / go-on expressions of task-structure questions.
 bool says_finished(const std::vector<std::string>& words, const ReplyInput& in);
 bool says_proceed(const std::vector<std::string>& words);
+// Whether the reply says only that something ends ("I'm done", "that's it
+// for the counter, leave the rest"): each of its clauses ends something,
+// leaves things, or is fillers. "put it in the fridge and then you're done
+// with the table" says more.
+bool says_only_an_ending(const std::vector<std::string>& words, const ReplyInput& in);
 
 // read_reply without the readings by reference to others below: the
 // commands, the script's grammar, then the question's own reader.

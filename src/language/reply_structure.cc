@@ -629,4 +629,25 @@ bool says_finished(const std::vector<std::string>& words, const ReplyInput& in) 
 
 bool says_proceed(const std::vector<std::string>& words) { return proceed_words(words); }
 
+bool says_only_an_ending(const std::vector<std::string>& words, const ReplyInput& in) {
+  // Clauses break at "," and at the words that join clauses; each must end
+  // something, or leave things ("leave the rest"), or be fillers.
+  std::vector<Words> clauses(1);
+  for (const std::string& w : words) {
+    if (is_one_of(w, {",", "and", "then", "but", "so"})) {
+      if (!clauses.back().empty()) clauses.emplace_back();
+    } else {
+      clauses.back().push_back(w);
+    }
+  }
+  bool ends = false;
+  for (const Words& clause : clauses) {
+    Words kept = without_fillers(clause, in.vocabulary);
+    if (kept.empty()) continue;
+    if (finished_words(kept)) ends = true;
+    else if (!is_one_of(kept.front(), {"leave", "skip"})) return false;
+  }
+  return ends;
+}
+
 }  // namespace apprentice::language

@@ -251,6 +251,65 @@ TEST_F(Conversation, SayingDoneAtAGoalQuestionLeavesTheObject) {
   EXPECT_EQ(s.knowledge.goals.size(), 1u);
 }
 
+// The index of the first question whose text starts with `start`, or the
+// number of questions.
+std::size_t first_question(const std::vector<Question>& questions, std::string_view start) {
+  auto at = std::find_if(questions.begin(), questions.end(),
+                         [&](const Question& q) { return q.text.starts_with(start); });
+  return static_cast<std::size_t>(at - questions.begin());
+}
+
+// An ending said at a goal question while other things of the part are
+// still to come is asked back, naming them; "no" goes on with the thing
+// asked about, and the task is taught whole.
+TEST_F(Conversation, AnEndingMidPartIsAskedBackAndNoGoesOn) {
+  CallbackInstructor instructor(
+      replies({"Tidy kitchen.", "clear the table", "I'm done", "no", kKetchupGoal, kPaperPlateGoal, "That's all."}),
+      true);
+  Session s = teach(two_, instructor);
+  ASSERT_TRUE(s.report.has_value()) << s.report.error().describe() << s.transcript;
+  const std::size_t asked_back = first_question(instructor.questions, "There are still ");
+  ASSERT_LT(asked_back + 1, instructor.questions.size()) << s.transcript;
+  EXPECT_EQ(instructor.questions[asked_back].text,
+            "There are still 2 things on the table: the ketchup and the paper plate. Shall I leave them?");
+  EXPECT_THAT(instructor.heard, Contains("So I go on with the ketchup."));
+  // The question asked again is where the ketchup goes.
+  const Question& again = instructor.questions[asked_back + 1];
+  EXPECT_EQ(again.text, instructor.questions[asked_back - 1].text);
+  EXPECT_TRUE(holds(two_, s.final_state)) << s.transcript;
+  EXPECT_EQ(s.knowledge.goals.size(), 2u);
+}
+
+// "yes" to the ask-back leaves the things of the part where they are: the
+// part ends, what was taught before is kept, and the agent asks for the
+// task's next step; the session then ends cleanly.
+TEST_F(Conversation, AnEndingMidPartAnsweredYesLeavesThePartAndKeepsWhatWasTaught) {
+  Scenario kitchen = load_or_die(source_path("data/scenarios/tidy-kitchen.yaml"));
+  CallbackInstructor instructor(replies({"tidy the kitchen", "clear the table",
+                                         "the plate goes in the dishwasher and close it", "we're done here", "yes",
+                                         "that's all"}),
+                                true);
+  Session s = teach(kitchen, instructor);
+  ASSERT_TRUE(s.report.has_value()) << s.report.error().describe() << s.transcript;
+  EXPECT_TRUE(s.report->task_finished);
+  const std::size_t asked_back = first_question(instructor.questions, "There are still ");
+  ASSERT_LT(asked_back + 1, instructor.questions.size()) << s.transcript;
+  EXPECT_THAT(instructor.questions[asked_back].text, HasSubstr(" things on the table: "));
+  EXPECT_THAT(instructor.questions[asked_back].text, HasSubstr("the metal fork"));
+  EXPECT_EQ(instructor.questions[asked_back + 1].kind, QuestionKind::kTaskStep);
+  EXPECT_THAT(s.transcript, HasSubstr("and this part of the task is done."));
+  EXPECT_THAT(s.transcript, Not(HasSubstr("I could not clear")));
+  // The plates' goal is kept; the fork is still on the table.
+  EXPECT_EQ(s.knowledge.goals.size(), 1u);
+  const Vocabulary& v = kitchen.world.vocabulary;
+  EXPECT_TRUE(s.final_state.holds(Fact(v.on, {*kitchen.world.universe->find("metal-fork1"),
+                                              *kitchen.world.universe->find("table1")})));
+  const auto left = std::count_if(s.report->objects.begin(), s.report->objects.end(), [](const ObjectReport& o) {
+    return o.note == "left where it is, as the instructor said";
+  });
+  EXPECT_GE(left, 2);
+}
+
 // "what's left?" between parts of the task says what is done and which
 // things have not been dealt with yet, where they are.
 TEST_F(Conversation, WhatsLeftBetweenPartsSaysThePartsDoneAndTheThingsNotDealtWith) {

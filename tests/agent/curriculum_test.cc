@@ -47,6 +47,27 @@ TEST(Curriculum, ThePapersWayFirstObjectThenIsThatAllThenRepeat) {
   EXPECT_EQ(c.objects.size(), 2u);
 }
 
+// An ending mid-part answered "yes, leave them", the paper's way: the
+// things left are dealt with (each reported), the part loops no further
+// and asks no "is that all?", and the asked thing is done as usual.
+TEST(Curriculum, APartLeftWithThingsInItEndsOnceTheAskedThingIsDone) {
+  Curriculum c;
+  c.task.name = "tidy kitchen";
+  c.announced_loop = std::vector<ObjectId>{3};
+  c.subtask_named(clear_table());
+  start_object(c, 7);
+  ObjectReport left;
+  left.note = "left where it is, as the instructor said";
+  c.part_left(7, {{8, left}, {9, left}});
+  EXPECT_EQ(c.current->mode, Current::Mode::kLoop);
+  EXPECT_EQ(c.left_by_teacher, (std::vector<ObjectId>{7, 8, 9}));
+  EXPECT_EQ(c.evaluated_order, (std::vector<ObjectId>{8, 9}));
+  c.object_done();
+  EXPECT_EQ(c.next(true), Next::kNextObject);  // none left: the session ends the part
+  EXPECT_EQ(c.evaluated_order, (std::vector<ObjectId>{8, 9, 7}));
+  EXPECT_EQ(c.objects.size(), 3u);
+}
+
 TEST(Curriculum, ASubtaskNamedWithItsPlaceLoopsAtOnceAndTheNextWaitsForIt) {
   Curriculum c;
   c.task.name = "tidy kitchen";

@@ -26,9 +26,11 @@ class EverydayTeacher {
  public:
   // `messy`: the teacher of issue 21's pty test, who also uses fillers,
   // gives one goal wrong and corrects it at the next question ("no wait,
-  // ..."), asks "what's left?" between parts and at a goal question, asks
-  // for a one-off closing with an answer ("..., oh and close the
-  // cupboard"), and ends the task with a one-off thanks.
+  // ..."), says an ending mid-part once ("hmm i'm done") and answers "no"
+  // when asked whether to leave the rest, asks "what's left?" between
+  // parts and at a goal question, asks for a one-off closing with an
+  // answer ("..., oh and close the cupboard"), and ends the task with a
+  // one-off thanks.
   explicit EverydayTeacher(const Scenario& scenario, bool messy = false) : scenario_(scenario), messy_(messy) {}
 
   // The reply to `question`, or "" (with a test failure) if the teacher
@@ -45,9 +47,18 @@ class EverydayTeacher {
       return next_step();
     }
     if (std::regex_match(question, m, kWhere)) return messy_ ? messy_goal_reply(m[1], m[3]) : goal_reply(m[1], m[3]);
+    // The ask-back of an ending said mid-part: the teacher goes on.
+    static const std::regex kLeaveThem("There (is|are) still .+\\. Shall I leave (it|them)\\?");
+    if (messy_ && said_ending_ && std::regex_match(question, kLeaveThem)) {
+      asked_to_leave_ = true;
+      return "no";
+    }
     ADD_FAILURE() << "the teacher does not know what the agent asks: " << question;
     return "";
   }
+
+  // Whether the ending said mid-part was asked back.
+  bool asked_to_leave() const { return asked_to_leave_; }
 
   // The fewest replies that can teach the task: the task, one per
   // subtask, the end, and one goal per (subtask, category).
@@ -83,6 +94,12 @@ class EverydayTeacher {
   // "what's left?", a one-off closing with the answer, fillers.
   std::string messy_goal_reply(const std::string& thing, const std::string& place_words) {
     const World& w = scenario_.world;
+    // Once, after the correction, an ending said mid-part ("I'm done"),
+    // which the agent asks back; the teacher answers "no" and goes on.
+    if (goal_questions_ == 2 && !said_ending_) {
+      said_ending_ = true;
+      return "hmm i'm done";
+    }
     ++goal_questions_;
     if (goal_questions_ == 1) {
       const IntentEntry* wanted = wanted_for(thing, place_words);
@@ -153,6 +170,8 @@ class EverydayTeacher {
   int next_form_ = 0;
   int goal_questions_ = 0;
   bool asked_left_between_ = false;
+  bool said_ending_ = false;     // an ending said mid-part
+  bool asked_to_leave_ = false;  // and asked back whether to leave the rest
   std::optional<std::pair<std::string, std::string>> wrong_;  // the thing answered wrongly, and where it was
 };
 
@@ -160,6 +179,7 @@ struct Taught {
   int exit_code = -1;
   int turns = 0;
   std::string screen;
+  bool asked_to_leave = false;  // the messy teacher's ending mid-part was asked back
 };
 
 Taught teach_at_terminal(const Scenario& scenario, const std::string& scenario_path, bool messy = false) {
@@ -181,6 +201,7 @@ Taught teach_at_terminal(const Scenario& scenario, const std::string& scenario_p
   terminal.type("\x04");
   taught.exit_code = terminal.wait();
   taught.screen = terminal.screen();
+  taught.asked_to_leave = teacher.asked_to_leave();
   return taught;
 }
 
@@ -199,9 +220,10 @@ void expect_taught_within_floor(const std::string& relative_path) {
 }
 
 // Issue 21's pty test: a teacher who uses fillers, corrects a wrong goal
-// at the next question, asks "what's left?" between parts and at a goal
-// question, asks for a one-off closing and ends with a thanks, in two
-// worlds: each is taught to 100% and the program exits 0.
+// at the next question, says an ending mid-part and answers "no" to the
+// ask-back, asks "what's left?" between parts and at a goal question,
+// asks for a one-off closing and ends with a thanks, in two worlds: each
+// is taught to 100% and the program exits 0.
 void expect_taught_by_a_messy_teacher(const std::string& relative_path) {
   std::string path = testing::source_path(relative_path).string();
   Scenario scenario = testing::load_or_die(path);
@@ -217,6 +239,9 @@ void expect_taught_by_a_messy_teacher(const std::string& relative_path) {
   EXPECT_THAT(taught.screen, ::testing::HasSubstr("Not dealt with yet: ")) << taught.screen;
   EXPECT_THAT(taught.screen, ::testing::ContainsRegex("Still (on|in) the ")) << taught.screen;
   EXPECT_THAT(taught.screen, ::testing::Not(::testing::HasSubstr("I do not know the word"))) << taught.screen;
+  // The ending said mid-part was asked back, and "no" went on.
+  EXPECT_TRUE(taught.asked_to_leave) << taught.screen;
+  EXPECT_THAT(taught.screen, ::testing::HasSubstr("Agent: So I go on with the ")) << taught.screen;
 }
 
 TEST(EverydayTeacher, AMessyTeacherTeachesTheKitchenAtTheTerminal) {

@@ -195,7 +195,14 @@ std::optional<Acts> reading_acts(const Grounder& grounder, const World& world, c
       return push(acts, {"subtask " + spaced(r.verb) + " " + canonical(world, r.places)}), true;
     }
     bool operator()(const LoopNamed& r) const { return push(acts, {"loop " + canonical(world, r.places)}), true; }
-    bool operator()(const Finished&) const {
+    bool operator()(const Finished& r) const {
+      // An ending at a goal question ends the part with this thing when
+      // nothing else is to come; else the dialogue asks it back ("There
+      // are still 3 things on the table: ... Shall I leave them?").
+      if (r.ending && line.asked == "goal") {
+        if (!context.still_to_come.empty()) return false;
+        return push(acts, {"part-done"}), true;
+      }
       const std::string word = line.asked == "task-step"     ? "task-done"
                                : line.asked == "subtask-end" ? "part-done"
                                : line.asked == "goal"        ? "leave"

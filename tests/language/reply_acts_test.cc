@@ -322,6 +322,54 @@ TEST_F(ReplyActsTest, AModifierNoOneHereIsToldApartByNarrowsNothing) {
   EXPECT_EQ(read.notes.front(), "I took \"obviously\" as telling nothing apart: nothing here is told apart by it.");
 }
 
+// An ending said at a goal question is an ending, which the dialogue asks
+// back while other things of the part are still to come; "skip it" and
+// "done" leave the one thing asked about. At the task's step the same
+// words end the task. An ending is never a subtask.
+TEST_F(ReplyActsTest, AnEndingAtAGoalQuestionIsAnEndingNotASubtask) {
+  ReplyContext c = goal_question("towel1");
+  for (std::string_view ending :
+       {"I'm done", "that's it", "that's all", "we're done here", "ok that's everything, thanks!"})
+    EXPECT_EQ(acts(c, ending), "finished (an ending)") << ending;
+  EXPECT_EQ(acts(c, "skip it"), "finished");
+  EXPECT_EQ(acts(c, "done"), "finished");
+  EXPECT_EQ(acts(c, "that's it for the floor, leave the rest"), "finished (an ending)");
+  // An ending said with a goal is not an ending alone: the goal would be lost.
+  EXPECT_NE(acts(c, "put it in the cabinet and then you're done with the floor"), "finished (an ending)");
+  // "when you're done" inside a goal is no ending.
+  EXPECT_EQ(acts(c, "put it in the cabinet and close it when you're done"),
+            "goal (and (in towel1 cabinet1) (closed cabinet1))");
+  ReplyContext step;
+  step.asked = Asked::kTaskStep;
+  for (std::string_view ending : {"I'm done", "that's it", "that's all", "we're done here"})
+    EXPECT_EQ(acts(step, ending), "finished") << ending;
+}
+
+// Verbs people name a task by: "sort out" and "organize" (WordNet defines
+// them by "order", which is above "tidy", or puts them beside it),
+// "straighten up" (the verb alone, after a particle that only marks the
+// act as done through) and "declutter" (WordNet's "unclutter") are taken
+// as the known verb, and the read-back says so.
+TEST_F(ReplyActsTest, VerbsPeopleTidyByAreTakenAsTidyingAndSaidSo) {
+  ReplyContext task;
+  task.asked = Asked::kTask;
+  for (auto [said, verb] : {std::pair<std::string_view, std::string_view>{"sort out the bathroom", "sort out"},
+                            {"organize the bathroom", "organize"},
+                            {"organise the bathroom", "organise"},
+                            {"straighten up the bathroom", "straighten up"}}) {
+    EXPECT_EQ(acts(task, said), "task tidy bathroom") << said;
+    std::vector<std::string> notes = read_acts(grounder(), world(), task, said).notes;
+    EXPECT_NE(std::find(notes.begin(), notes.end(), "I took \"" + std::string(verb) + "\" as tidying."), notes.end())
+        << said;
+  }
+  ReplyContext step;
+  step.asked = Asked::kTaskStep;
+  ReplyActs read = read_acts(grounder(), world(), step, "declutter the counter");
+  EXPECT_EQ(acts(step, "declutter the counter"), "subtask clear on counter1");
+  EXPECT_NE(std::find(read.notes.begin(), read.notes.end(), "I took \"declutter\" as clearing."), read.notes.end());
+  EXPECT_EQ(acts(step, "organize the stuff on the counter"), "subtask organize on counter1");
+}
+
 TEST_F(ReplyActsTest, WhatHaveWeDoneSoFarIsTheStatusNotAnEnding) {
   ReplyContext step;
   step.asked = Asked::kTaskStep;
