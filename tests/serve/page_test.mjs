@@ -149,11 +149,12 @@ test('two tabs on two worlds at once, each its own session; a "Which ...?" answe
 
 test('a yes/no question answered by its button, and a goal forgotten by its Forget button', async () => {
   // The kitchen store holds the first test's goals for tidying the kitchen
-  // ("clean up the kitchen" is read as tidying it); taught as another task,
-  // "sort the kitchen", the agent asks whether those goals apply.
+  // ("clean up the kitchen" and "sort the kitchen" are read as tidying
+  // it); taught as another task, "reset the kitchen", the agent asks
+  // whether those goals apply.
   const page = await context.newPage();
   await startSession(page, 'tidy-kitchen', 'kitchen');
-  await reply(page, 'sort the kitchen');
+  await reply(page, 'reset the kitchen');
   await reply(page, 'clear the table');
   assert.match(await lastQuestion(page), /^Does the ceramic plate on the table go like /);
   assert.deepEqual(await page.locator('#choices button').allTextContents(), ['Yes', 'No']);
