@@ -150,6 +150,12 @@ TaskLearningAgent::Session::Flow<TaskLearningAgent::Session::Heard> TaskLearning
       auto settled = settle(*ambiguous, asked, context, *text);
       if (!settled) return tl::unexpected(settled.error());
       reply = *settled;
+      // A one-off action the settled reply asked for: done, and the
+      // question asked again.
+      if (const auto* command = std::get_if<language::Command>(&reply); command && command->kind == language::Command::Kind::kDo) {
+        if (auto s = obey(*command, asked, context); !s) return tl::unexpected(s.error());
+        continue;
+      }
     }
     if (rescue && std::holds_alternative<language::Unusable>(reply))
       if (auto rescued = rescue(*text)) reply = std::move(*rescued);
@@ -221,7 +227,21 @@ TaskLearningAgent::Session::Flow<language::Reply> TaskLearningAgent::Session::se
     if (!heard->reply)
       return language::Reply(language::Unusable{language::could_not_tell_which(ambiguous.phrase), {}, {}});
     context.settled.push_back({ambiguous.phrase, std::get<language::Chosen>(*heard->reply).object});
-    language::Reply again = agent_.understanding_.reply(world(), context, text);
+    // Read again as a whole reply: its answer, or else the one-off action
+    // it asked for ("open the drawer", then "the top one"), for the caller
+    // to do.
+    language::ReplyActs acts = agent_.understanding_.acts(world(), context, text);
+    language::Reply again = acts.acts.front();
+    for (const language::Reply& act : acts.acts) {
+      const auto* command = std::get_if<language::Command>(&act);
+      if (command == nullptr) {
+        again = act;
+        break;
+      }
+      if (command->kind == language::Command::Kind::kDo && std::holds_alternative<language::Command>(again) &&
+          std::get<language::Command>(again).kind != language::Command::Kind::kDo)
+        again = act;
+    }
     const auto* still = std::get_if<language::Ambiguous>(&again);
     if (still == nullptr) return again;
     ambiguous = *still;

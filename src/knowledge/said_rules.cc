@@ -95,7 +95,9 @@ ClauseEvidence clause_evidence(const ClassRule& as_said, const KindProfile& thin
   for (const ConceptClass& c : thing.classes) {
     if (c.depth > kAncestorDepth) continue;
     const std::vector<float> name = concepts.vector_of(c.name);
-    if (!name.empty()) e.class_cosine = std::max(e.class_cosine, cosine(name, phrase) * c.weight);
+    if (name.empty()) continue;
+    e.class_cosine = std::max(e.class_cosine, cosine(name, phrase) * c.weight);
+    if (c.depth >= 1 && c.size <= kNearClassMostKinds) e.ancestor_cosine = std::max(e.ancestor_cosine, cosine(name, phrase) * c.weight);
   }
   return e;
 }
@@ -104,7 +106,7 @@ bool ClauseEvidence::sure() const { return wordnet || word_in_name; }
 
 bool ClauseEvidence::only_related() const {
   return said_a_class && wordnet_knows_both && !sure() && !wordnet_parent && !modifiers_in_name &&
-         class_cosine < kNearClassCosine;
+         ancestor_cosine < kNearClassCosine;
 }
 
 bool ClauseEvidence::fits() const {

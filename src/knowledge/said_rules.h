@@ -39,6 +39,10 @@ struct ClauseEvidence {
   double word_cosine = 0;
   double head_cosine = 0;
   double class_cosine = 0;
+  // The same over the classes above the thing's own senses (depth 1 and
+  // up) of at most kNearClassMostKinds kinds: how near WordNet's account
+  // of what the thing is lies to the class word, apart from its own name.
+  double ancestor_cosine = 0;
   // WordNet knows both the class word (a physical class) and the thing's
   // head: its silence on the thing is then a "no", and the vectors, which
   // measure relatedness and not membership ("brushes" and a paint pot),
@@ -47,9 +51,9 @@ struct ClauseEvidence {
   // WordNet or the name's own words put the thing in the class.
   bool sure() const;
   // Only the vectors put the thing in the class, against WordNet's silence
-  // where it knows both words, and none of the thing's own WordNet classes
-  // is named near the class word (kNearClassCosine): a guess the person is
-  // asked to confirm.
+  // where it knows both words, and none of the classes WordNet puts the
+  // thing in is named near the class word (ancestor_cosine below
+  // kNearClassCosine): a guess the person is asked to confirm.
   bool only_related() const;
   // Whether anything says the thing is in the clause's class at all: WordNet
   // (or the parent of a collective word), the class's word or every
@@ -69,10 +73,15 @@ struct ClauseEvidence {
 inline constexpr double kFitCosine = 0.3;
 
 // The least cosine of the class's words with the name of one of the
-// thing's own WordNet classes that counts as WordNet's near agreement
+// WordNet classes above the thing that counts as WordNet's near agreement
 // ("electronics" and a laptop's "computer"; not "brushes" and a paint
-// pot's "container").
+// pot's "container", nor "reference books" and printer paper's
+// "material").
 inline constexpr double kNearClassCosine = 0.5;
+// Only classes of at most this many kinds count there: the vectors of
+// general words ("material", 2,816 kinds; "device") lie near many class
+// words, and say nothing of this thing ("computer" holds 33).
+inline constexpr double kNearClassMostKinds = 200;
 
 // How many steps above a thing its WordNet classes' names count.
 inline constexpr int kAncestorDepth = 4;

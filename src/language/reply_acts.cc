@@ -222,21 +222,41 @@ ReplyActs read(const Grounder& grounder, const World& world, const ReplyContext&
     if (answer.size() > 1)
       answer_text += ", " + joined(std::vector<const Segment*>(answer.begin() + 1, answer.end()));
   }
+  const Words all = reply_words(answer_text);
+  auto names = [&](ObjectId thing) {
+    for (const std::string& part : name_parts(world.universe->info(thing).category))
+      if (std::find(all.begin(), all.end(), part) != all.end() || std::find(all.begin(), all.end(), part + "s") != all.end())
+        return true;
+    return false;
+  };
   if (weak && !correcting && context.last_goal && !answer.empty()) {
     // It names the last thing, or says "not" the last place.
-    Words all = reply_words(answer_text);
-    bool names_last = false;
-    for (const std::string& part : name_parts(world.universe->info(context.last_goal->object).category))
-      if (std::find(all.begin(), all.end(), part) != all.end() || std::find(all.begin(), all.end(), part + "s") != all.end())
-        names_last = true;
     bool not_there = std::find(all.begin(), all.end(), "not") != all.end();
-    correcting = names_last || not_there;
+    correcting = names(context.last_goal->object) || not_there;
+  }
+  // "hang on, the printer paper goes in the cupboard" (asked about the
+  // printer paper, the last goal the dictionary's): a marker before an
+  // answer that names the thing asked about, and says nothing of the last
+  // goal's thing or place and no undo, corrects nothing.
+  if (correcting && context.asked == Asked::kGoal && context.last_goal && before.empty() && !answer.empty()) {
+    const ObjectId last = context.last_goal->object;
+    const std::optional<ObjectId> last_place = destination(world, GoalGiven{context.last_goal->goal});
+    const bool names_asked =
+        context.object && world.universe->info(*context.object).category != world.universe->info(last).category &&
+        names(*context.object);
+    if (names_asked && !names(last) && !(last_place && names(*last_place))) {
+      correcting = false;
+      weak = true;
+    }
   }
   if (weak && !correcting && !marker_said.empty()) out.notes.push_back("I took " + quote(marker_said) + " as a filler.");
   // A marker before a question or a one-off action alone ("wait, where's
-  // the ketchup?") takes nothing back.
-  const bool answers = !trim(answer_text).empty();
-  if (correcting && before.empty() && !answers && !after.empty()) correcting = false;
+  // the ketchup?", "hang on, close the fridge first") takes nothing back.
+  // ("it's sticking out", said with the closing, is a remark, no answer.)
+  const bool answers = std::any_of(answer.begin(), answer.end(), [&](const Segment* a) {
+    return !is_remark(grounder, world, a->words);
+  });
+  if (correcting && before.empty() && !answers && (!after.empty() || !doors.empty())) correcting = false;
   if (correcting && context.last_goal && context.asked == Asked::kGoal && before.empty())
     before.push_back(Command{Command::Kind::kUndo, "", {}, {}});
   if (correcting && context.last_goal && context.asked == Asked::kGoal) {

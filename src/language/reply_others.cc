@@ -164,8 +164,14 @@ std::optional<Reply> goal_like_another(const Grounder& grounder, const World& wo
     Reply rest = read_reply_plain(grounder, world, c, placed);
     const auto* given = std::get_if<GoalGiven>(&rest);
     if (given == nullptr) return std::nullopt;
+    // What the rest says wins over what was copied ("same as the stapler
+    // but leave the drawer open": open, though the stapler's closes it),
+    // and is not said twice.
     std::vector<Literal> literals = goal->literals;
-    literals.insert(literals.end(), given->goal.literals.begin(), given->goal.literals.end());
+    for (const Literal& said : given->goal.literals) {
+      std::erase_if(literals, [&](const Literal& copied) { return copied.fact == said.fact; });
+      literals.push_back(said);
+    }
     goal = Goal(std::move(literals));
   }
   return GoalGiven{*goal};

@@ -21,7 +21,8 @@ bool is_interjection(std::string_view w) {
                        "lemme", "see", "thanks", "thank", "you", "cheers", "sorry", "mate", "buddy", "kk"});
 }
 
-// The words of a correction's marker: "no wait", "oops", "nah", "wait what".
+// The words of a correction's marker: "no wait", "oops", "nah", "wait what"
+// (and "hang on", "hold on": two words, read by marker()).
 bool is_marker(std::string_view w) {
   return is_one_of(w, {"no", "nah", "nope", "wait", "oops", "whoops", "actually", "sorry", "what", "oh", "ugh",
                        "hmm", "um"});
@@ -90,7 +91,15 @@ int undos(const Words& said) {
 Marker marker(const Words& words) {
   Marker m;
   int noes = 0;
-  while (m.length < words.size() && (is_marker(words[m.length]) || is_interjection(words[m.length]))) {
+  while (m.length < words.size()) {
+    // "hang on", "hold on", "hold up": as "wait".
+    if (m.length + 1 < words.size() && is_one_of(words[m.length], {"hang", "hold"}) &&
+        is_one_of(words[m.length + 1], {"on", "up"})) {
+      m.length += 2;
+      m.strong = true;
+      continue;
+    }
+    if (!is_marker(words[m.length]) && !is_interjection(words[m.length])) break;
     const std::string& w = words[m.length];
     if (is_one_of(w, {"wait", "oops", "whoops", "actually", "sorry"})) m.strong = true;
     if (is_one_of(w, {"no", "nah", "nope"})) ++noes;
@@ -243,6 +252,9 @@ std::optional<std::vector<Action>> door_action(const Grounder& grounder, const W
   Reply reply = read_reply_plain(grounder, world, as_action, std::string(open ? "open " : "close ") + join(object, " "));
   if (const auto* given = std::get_if<ActionGiven>(&reply); given && given->more.empty() && !every)
     return std::vector<Action>{given->action};
+  // "open the drawer" where there are two: not every drawer, but one to
+  // ask about; read as an answer, it is asked back ("Which drawer: ...?").
+  if (!every && std::holds_alternative<Ambiguous>(reply)) return std::nullopt;
   // Every place with a door the words name: "both drawers", "the lids".
   Words noun = object;
   std::erase_if(noun, [](const std::string& w) { return is_determiner(w); });

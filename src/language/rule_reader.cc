@@ -183,6 +183,14 @@ ClassWords strip_class(Words words) {
   return out;
 }
 
+// A word that cannot be (part of) a class's name: a negation, a
+// preposition or particle, a pronoun, a filler ("not", "on", "it", "um").
+bool names_no_class(const std::string& w) {
+  return is_negation(w) || is_particle(w) || is_object_pronoun(w) || is_filler(w) || is_determiner(w) ||
+         is_one_of(w, {"on", "in", "at", "to", "of", "with", "by", "for", "from", "into", "onto", "hang", "wait",
+                       "hold", "oh", "oops", "no", "yes", "nah", "actually", "sorry"});
+}
+
 // The head and modifiers of a class phrase: "heavy items" (item; heavy),
 // "things made of metal" (thing; metal), "items that are fragile" (item;
 // fragile), "bags of rice" (bag; rice).
@@ -345,6 +353,8 @@ class SentenceReader {
     for (const Words& part : parts) {
       ClassWords said = strip_class(part);
       if (said.words.empty() && !said.rest) continue;  // "the" alone
+      // "hang on, ...", "not on the shelf": words that name no class.
+      if (!said.rest && std::all_of(said.words.begin(), said.words.end(), names_no_class)) continue;
       const RuleClass* previous = clauses_classes_.empty() ? nullptr : &clauses_classes_.back();
       clause.classes.push_back(class_of(lexicon_, said, previous));
       clauses_classes_.push_back(clause.classes.back());

@@ -4,7 +4,9 @@
 //    names put in its class; a thing the word vectors only relate to it is
 //    asked about, with the class named, and a "no" is kept;
 //  - a door opened to put something away is closed after, unless the
-//    teacher says to leave it open, and the read-back says so.
+//    teacher says to leave it open, and the read-back says so;
+//  - "open the drawer" where two drawers look alike is asked which, never
+//    done to both.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -102,9 +104,39 @@ TEST_F(TeachNorms, ADoorOpenedToPutSomethingAwayIsClosedUnlessToldToLeaveItOpen)
                              "Agent: I opened the fridge and put the metal fork in it.\n"))
       << out;
   // Said once a session.
+  EXPECT_EQ(out.find(note), out.rfind(note)) << out;
   EXPECT_THAT(out, HasSubstr("Instructor: the pantry\n"
                              "Agent: So the glass tumbler goes in the pantry, and the pantry ends closed.\n"))
       << out;
+}
+
+// "same as X but leave the door open": what is said after "but" wins over
+// what X's goal says of the door (found by a newcomer: "..., the top drawer
+// ends open, and the top drawer ends closed", a goal no plan can reach).
+TEST_F(TeachNorms, SameAsAnotherButLeaveTheDoorOpenLeavesItOpen) {
+  Process teach({APPRENTICE_BINARY, "teach", "--scenario", testing::source_path("data/scenarios/tidy-kitchen.yaml").string()});
+  ASSERT_TRUE(teach.write(
+      lines({"tidy kitchen", "clear the table", "the dishwasher", "same as the plate but leave the door open", "quit"})));
+  teach.wait();
+  EXPECT_THAT(teach.out(), HasSubstr("Instructor: same as the plate but leave the door open\n"
+                                     "Agent: So the metal fork goes in the dishwasher, and the dishwasher ends open.\n"
+                                     "Agent: I opened the dishwasher and put the metal fork in it.\n"))
+      << teach.out();
+}
+
+// Found by a newcomer in an office of their own: "open the drawer" opened
+// the top and the bottom drawer.
+TEST_F(TeachNorms, OpeningOneOfTwoLookAlikesAsksWhichAndOpensThatOne) {
+  Process teach({APPRENTICE_BINARY, "teach", "--scenario", testing::source_path("data/scenarios/tidy-garage.yaml").string()});
+  ASSERT_TRUE(teach.write(lines({"tidy the garage", "clear the workbench", "open the drawer", "the top one", "quit"})));
+  teach.wait();
+  EXPECT_THAT(teach.out(), HasSubstr("Instructor: open the drawer\n"
+                                     "Agent: Which drawer: the top drawer or the bottom drawer?\n"
+                                     "Instructor: the top one\n"
+                                     "Agent: I opened the top drawer.\n"
+                                     "Agent: Where should the hammer on the workbench go?\n"))
+      << teach.out();
+  EXPECT_THAT(teach.out(), Not(HasSubstr("opened the bottom drawer"))) << teach.out();
 }
 
 }  // namespace

@@ -63,6 +63,22 @@ TEST_F(ReplyActsTest, ACorrectionIsAnUndoAndTheAnswerTheUndoneQuestionWanted) {
             "command undo | goal (in hairbrush1 cabinet1)");
 }
 
+// "hang on" and "hold on" are markers, as "wait" is; before an answer that
+// names the thing asked about (and not the last goal's thing or place)
+// they take nothing back, nor before a one-off action with a remark.
+// Found by a newcomer: "hang on, the printer paper goes in the cupboard"
+// undid the dictionary's goal.
+TEST_F(ReplyActsTest, HangOnBeforeAnAnswerAboutTheThingAskedTakesNothingBack) {
+  ReplyContext c = goal_question("comb1", "hairbrush1", "drawer1");
+  EXPECT_EQ(acts(c, "hang on, the comb goes in the cabinet"), "goal (in comb1 cabinet1)");
+  ReplyActs read = read_acts(grounder(), world(), c, "hang on, the comb goes in the cabinet");
+  EXPECT_THAT(read.notes, ::testing::Contains("I took \"hang on\" as a filler."));
+  // The last goal's thing named: a correction, as with "wait".
+  EXPECT_EQ(acts(c, "hold on, the hairbrush goes in the bottom drawer"), "command undo | goal (in hairbrush1 drawer2)");
+  EXPECT_EQ(acts(c, "hang on, close the hamper first, it's sticking out"),
+            "command do (close hamper1)");
+}
+
 TEST_F(ReplyActsTest, ANahBeforeAFirstAnswerIsAFillerAndSaidSo) {
   ReplyContext c = goal_question("comb1", "hairbrush1", "drawer1");
   ReplyActs read = read_acts(grounder(), world(), c, "nah, put it in the cabinet");

@@ -53,6 +53,23 @@ class RuleReader : public ::testing::Test {
   Lexicon lexicon_ = Lexicon::open_default();
 };
 
+// Words that name no class are no class: a newcomer's "hang on, the
+// printer paper goes in the cupboard, not on the shelf" was read back as
+// "So on and printer paper go in the cupboard and not goes in the
+// cupboard."
+TEST_F(RuleReader, NegationsAndParticlesNameNoClass) {
+  auto rule = read("hang on, sweaters go in the storage box, not on the sofa");
+  ASSERT_TRUE(rule);
+  for (const RuleClause& clause : rule->clauses)
+    for (const std::string& head : heads(clause)) {
+      EXPECT_NE(head, "on");
+      EXPECT_NE(head, "not");
+      EXPECT_NE(head, "hang on");
+    }
+  ASSERT_FALSE(rule->clauses.empty());
+  EXPECT_THAT(heads(rule->clauses.front()), ElementsAre("sweaters"));
+}
+
 TEST_F(RuleReader, TwoClassesTwoPlaces) {
   auto rule = read("Put toys in the storage box and fruits on the coffee table");
   ASSERT_TRUE(rule);
