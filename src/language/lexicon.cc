@@ -23,6 +23,10 @@ constexpr int kMaxContainerDepth = 4;
 // general to name one particular place: "receptacle" has 24 ("garbage" is
 // one), "refrigerator" has 2 (one is "fridge").
 constexpr std::size_t kMaxKindsOfASpecificWord = 3;
+// A place word one step above the place's own name names it when it has
+// at most this many kinds: "shelf" (4: bookshelf, hob, mantel, overmantel)
+// does; "container" and "receptacle" (dozens) never name one place.
+constexpr std::size_t kMaxKindsOfAPlaceWord = 6;
 
 std::string spaced(std::string_view phrase) {
   std::string out = to_lower(phrase);
@@ -269,8 +273,8 @@ std::vector<Synset> Lexicon::contents(std::string_view phrase, const std::vector
 // synset, the phrase above the category (any depth, if the phrase is
 // specific), the category directly above the phrase, or two artifacts each
 // defined by the other.
-std::string Lexicon::sense_relation(const std::string& text, const std::string& name,
-                                    const std::vector<Synset>& mine, const std::vector<Synset>& theirs) const {
+std::string Lexicon::sense_relation(const std::string& text, const std::string& name, const std::vector<Synset>& mine,
+                                    const std::vector<Synset>& theirs, bool as_container) const {
   for (const Synset& a : mine) {
     for (const Synset& c : theirs) {
       std::string path;
@@ -280,6 +284,11 @@ std::string Lexicon::sense_relation(const std::string& text, const std::string& 
         return "in WordNet a " + name + " is a kind of " + text + ": " + path;
       if (same_file && contains(a.hypernyms, c.offset))
         return "in WordNet " + describe(a) + " is a kind of " + describe(c);
+      // "the shelf" for the bookshelf: a place named by the category's own
+      // hypernym, one step up, a word of few kinds. (Not a thing: "toys" is
+      // a class of things, read as one.)
+      if (as_container && same_file && a.hyponyms.size() <= kMaxKindsOfAPlaceWord && contains(c.hypernyms, a.offset))
+        return "in WordNet a " + name + " is a kind of " + text + ", one step up";
       if (a.lexicographer_file == kLexArtifact && same_file && mentions(c.gloss, text) && mentions(a.gloss, name))
         return "WordNet defines each by the other: " + name + " is '" + c.gloss + "', " + text + " is '" + a.gloss +
                "'";
@@ -337,7 +346,7 @@ std::vector<CategoryRelation> Lexicon::related(std::string_view phrase, std::spa
   for (const std::string& category : categories) {
     std::string name = spaced(category);
     std::vector<Synset> theirs = synsets(name);
-    std::string reason = sense_relation(text, name, mine_physical, physical(theirs));
+    std::string reason = sense_relation(text, name, mine_physical, physical(theirs), as_container);
     if (reason.empty() && as_container && !my_contents.empty())
       reason = content_relation(text, name, my_contents, contents(name, theirs, true));
     if (!reason.empty()) out.push_back({category, reason});

@@ -60,7 +60,9 @@ class Lexicon {
   // Which of `categories` (world categories, hyphenated) WordNet relates
   // the phrase to, by any of the relations of docs/language.md: a shared
   // synset; the phrase names an ancestor of the category ("refrigerator" is
-  // above "fridge") or its direct hypernym; each one's definition names the
+  // above "fridge"), when `as_container` the category's own hypernym
+  // ("shelf" is one step above "bookshelf"), or the phrase's direct
+  // hypernym; each one's definition names the
   // other ("cupboard" and "cabinet"); and, when `as_container` (the phrase
   // names a place things go in), a container named for what it holds
   // ("trash", "garbage can", "wastebasket" all hold waste, as the category
@@ -98,7 +100,7 @@ class Lexicon {
   // Within `max_depth` steps up (a negative: the default, kMaxAncestorDepth).
   bool ancestor_of(SynsetOffset ancestor, const Synset& synset, std::string* path, int max_depth = -1) const;
   std::string sense_relation(const std::string& text, const std::string& name, const std::vector<Synset>& mine,
-                             const std::vector<Synset>& theirs) const;
+                             const std::vector<Synset>& theirs, bool as_container) const;
 
   std::optional<WordNet> wordnet_;
 };

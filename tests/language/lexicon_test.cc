@@ -91,6 +91,18 @@ TEST_F(WithWordNet, RelatesOtherWordsToTheKitchensPlaces) {
   EXPECT_EQ(related_places(lexicon(), "closet"), std::vector<std::string>{"cupboard"});
 }
 
+// A place named one step above its own name: "shelf" is WordNet's
+// hypernym of "bookshelf" (and of three other kinds), "bin" of "wastebin".
+TEST_F(WithWordNet, APlaceIsNamedByItsOwnHypernym) {
+  const std::vector<std::string> places = {"bookshelf", "table", "sink", "drawer"};
+  std::vector<std::string> out;
+  for (const CategoryRelation& r : lexicon().related("shelf", places, true)) out.push_back(r.category);
+  EXPECT_EQ(out, std::vector<std::string>{"bookshelf"});
+  // Not for a thing: "toys" is a class, read as one (kinds_under).
+  const std::vector<std::string> things = {"rattle", "sweater"};
+  EXPECT_TRUE(lexicon().related("toy", things, false).empty());
+}
+
 TEST_F(WithWordNet, GeneralWordsNameNoOnePlace) {
   // A container could be the drawer, the bins, ...; an appliance the fridge
   // or the dishwasher; WordNet has 24 kinds of receptacle, one of them the
