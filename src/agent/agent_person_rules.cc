@@ -108,7 +108,12 @@ std::optional<language::RuleReading> TaskLearningAgent::Session::rule_in_reply(
   // What the reply's own reading takes ("tools go in the top drawer": each
   // tool's goal) is left to it, unless the rule says more than one clause or
   // "other".
-  const bool understood = !std::holds_alternative<language::Unusable>(reply);
+  // An unusable reply that asks what to do with the things at a place
+  // ("start with the stuff on the floor": "What should I do with the things
+  // on the floor?") is understood as far as it goes: a step, not a rule.
+  const auto* unusable = std::get_if<language::Unusable>(&reply);
+  if (unusable != nullptr && !unusable->topic_places.empty()) return std::nullopt;
+  const bool understood = unusable == nullptr;
   if (understood && class_clauses < 2 && !rest) return std::nullopt;
   return rule;
 }

@@ -124,6 +124,20 @@ TEST_F(TeachNorms, SameAsAnotherButLeaveTheDoorOpenLeavesItOpen) {
       << teach.out();
 }
 
+// "start with the stuff on the floor" is a step said without its verb,
+// asked back, not a rule about "start with the stuff" (found by a
+// newcomer: "So start with the stuff go on the floor.").
+TEST_F(TeachNorms, AStepWithoutItsVerbIsAskedBackNotKeptAsARule) {
+  Process teach({APPRENTICE_BINARY, "teach", "--scenario", testing::source_path("data/scenarios/tidy-kitchen.yaml").string()});
+  ASSERT_TRUE(teach.write(lines({"tidy kitchen", "start with the stuff on the table", "clear it", "quit"})));
+  teach.wait();
+  EXPECT_THAT(teach.out(), HasSubstr("Instructor: start with the stuff on the table\n"
+                                     "Agent: What should I do with the things on the table?"))
+      << teach.out();
+  EXPECT_THAT(teach.out(), Not(HasSubstr("So start with"))) << teach.out();
+  EXPECT_THAT(teach.out(), HasSubstr("Agent: So I clear what is on the table, one thing at a time.\n")) << teach.out();
+}
+
 // Found by a newcomer in an office of their own: "open the drawer" opened
 // the top and the bottom drawer.
 TEST_F(TeachNorms, OpeningOneOfTwoLookAlikesAsksWhichAndOpensThatOne) {
