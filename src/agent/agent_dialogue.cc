@@ -230,18 +230,14 @@ TaskLearningAgent::Session::Flow<language::Reply> TaskLearningAgent::Session::se
     // Read again as a whole reply: its answer, or else the one-off action
     // it asked for ("open the drawer", then "the top one"), for the caller
     // to do.
-    language::ReplyActs acts = agent_.understanding_.acts(world(), context, text);
-    language::Reply again = acts.acts.front();
-    for (const language::Reply& act : acts.acts) {
-      const auto* command = std::get_if<language::Command>(&act);
-      if (command == nullptr) {
-        again = act;
-        break;
-      }
-      if (command->kind == language::Command::Kind::kDo && std::holds_alternative<language::Command>(again) &&
-          std::get<language::Command>(again).kind != language::Command::Kind::kDo)
-        again = act;
-    }
+    const std::vector<language::Reply> acts = agent_.understanding_.acts(world(), context, text).acts;
+    auto answer = std::find_if(acts.begin(), acts.end(),
+                               [](const language::Reply& r) { return !std::holds_alternative<language::Command>(r); });
+    auto one_off = std::find_if(acts.begin(), acts.end(), [](const language::Reply& r) {
+      const auto* command = std::get_if<language::Command>(&r);
+      return command != nullptr && command->kind == language::Command::Kind::kDo;
+    });
+    const language::Reply again = answer != acts.end() ? *answer : one_off != acts.end() ? *one_off : acts.front();
     const auto* still = std::get_if<language::Ambiguous>(&again);
     if (still == nullptr) return again;
     ambiguous = *still;

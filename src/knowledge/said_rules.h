@@ -148,10 +148,11 @@ struct SaidRuleWeights {
 // A person's clause the thing does not fit (ClauseEvidence::fits) proposes
 // nothing (its share is left to none of them): a class rule never goes to a
 // thing it does not fit. One the thing is only related to proposes at most
-// `only_related_at_most`: asked, never acted on alone. An LLM's summary's clauses are not held to it: on
-// the development half, the summary's "textbooks" no longer spoke for the
-// shelf for a soda can, which shifted the summary's belief enough that the
-// LLM's wrong placement of it was acted on (a-alone+llm 3.0% → 3.3% wrong).
+// `only_related_at_most`: asked, never acted on alone. An LLM's summary's
+// clauses are not held to it: on the development half, the summary's
+// "textbooks" no longer spoke for the shelf for a soda can, which shifted
+// the summary's belief enough that the LLM's wrong placement of it was
+// acted on (a-alone+llm 3.0% → 3.3% wrong).
 std::vector<DestinationProposal> said_rule_proposals(std::span<const ClassRule> rules, const KindProfile& thing,
                                                      RuleSource source, const ConceptSource& concepts,
                                                      const SaidRuleWeights& weights = {});

@@ -13,6 +13,7 @@
 #include "language/generation.h"
 #include "language/narration.h"
 #include "language/reference.h"
+#include "language/reply_acts_parts.h"
 #include "util/text.h"
 
 namespace apprentice::language {
@@ -184,11 +185,12 @@ ClassWords strip_class(Words words) {
 }
 
 // A word that cannot be (part of) a class's name: a negation, a
-// preposition or particle, a pronoun, a filler ("not", "on", "it", "um").
+// preposition or particle, a pronoun, a filler or a correction's marker
+// ("not", "on", "it", "um", "wait"; "hang" and "hold" of "hang on").
 bool names_no_class(const std::string& w) {
   return is_negation(w) || is_particle(w) || is_object_pronoun(w) || is_filler(w) || is_determiner(w) ||
-         is_one_of(w, {"on", "in", "at", "to", "of", "with", "by", "for", "from", "into", "onto", "hang", "wait",
-                       "hold", "oh", "oops", "no", "yes", "nah", "actually", "sorry"});
+         acts::is_marker(w) || acts::is_interjection(w) ||
+         is_one_of(w, {"on", "in", "at", "to", "of", "with", "by", "for", "from", "into", "onto", "hang", "hold", "yes"});
 }
 
 // The head and modifiers of a class phrase: "heavy items" (item; heavy),

@@ -48,6 +48,10 @@ class ReplyActsTest : public ::testing::Test {
     for (const Reply& r : read.acts) out += (out.empty() ? "" : " | ") + format_reply(world(), r);
     return out;
   }
+  // The notes of reading `text`: how words were taken ("I took ...").
+  std::vector<std::string> notes(const ReplyContext& c, std::string_view text) const {
+    return read_acts(grounder(), world(), c, text).notes;
+  }
   fresh::Worlds worlds_{source_path("tests/language/fresh/set1")};
   const Scenario* scenario_ = nullptr;
 };
@@ -71,8 +75,7 @@ TEST_F(ReplyActsTest, ACorrectionIsAnUndoAndTheAnswerTheUndoneQuestionWanted) {
 TEST_F(ReplyActsTest, HangOnBeforeAnAnswerAboutTheThingAskedTakesNothingBack) {
   ReplyContext c = goal_question("comb1", "hairbrush1", "drawer1");
   EXPECT_EQ(acts(c, "hang on, the comb goes in the cabinet"), "goal (in comb1 cabinet1)");
-  ReplyActs read = read_acts(grounder(), world(), c, "hang on, the comb goes in the cabinet");
-  EXPECT_THAT(read.notes, ::testing::Contains("I took \"hang on\" as a filler."));
+  EXPECT_THAT(notes(c, "hang on, the comb goes in the cabinet"), ::testing::Contains("I took \"hang on\" as a filler."));
   // The last goal's thing named: a correction, as with "wait".
   EXPECT_EQ(acts(c, "hold on, the hairbrush goes in the bottom drawer"), "command undo | goal (in hairbrush1 drawer2)");
   EXPECT_EQ(acts(c, "hang on, close the hamper first, it's sticking out"),
@@ -175,19 +178,17 @@ TEST_F(ReplyActsTest, TakingEverythingOffAPlaceClearsOrEmptiesIt) {
 TEST_F(ReplyActsTest, AnotherVerbIsTakenAsTheNearestKnownOneAndSaidSo) {
   ReplyContext task;
   task.asked = Asked::kTask;
-  ReplyActs read = read_acts(grounder(), world(), task, "clean up the bathroom please");
   EXPECT_EQ(acts(task, "clean up the bathroom please"), "task tidy bathroom");
-  EXPECT_NE(std::find(read.notes.begin(), read.notes.end(), "I took \"clean up\" as tidying."), read.notes.end());
+  EXPECT_THAT(notes(task, "clean up the bathroom please"), ::testing::Contains("I took \"clean up\" as tidying."));
   EXPECT_EQ(acts(task, "straighten the bathroom"), "task tidy bathroom");
   EXPECT_EQ(acts(task, "tidy the bathroom"), "task tidy bathroom");
-  EXPECT_TRUE(read_acts(grounder(), world(), task, "tidy the bathroom").notes.empty());
+  EXPECT_TRUE(notes(task, "tidy the bathroom").empty());
   EXPECT_EQ(acts(task, "wash the bathroom"), "task wash bathroom");
   EXPECT_EQ(acts(task, "clean the dishes"), "task clean dishes");
   ReplyContext step;
   step.asked = Asked::kTaskStep;
-  read = read_acts(grounder(), world(), step, "pick up everything off the floor");
   EXPECT_EQ(acts(step, "pick up everything off the floor"), "subtask clear on floor1");
-  EXPECT_NE(std::find(read.notes.begin(), read.notes.end(), "I took \"pick up\" as clearing."), read.notes.end());
+  EXPECT_THAT(notes(step, "pick up everything off the floor"), ::testing::Contains("I took \"pick up\" as clearing."));
   // "unpack" is beside both clearing and emptying in WordNet: the place's
   // kind decides.
   EXPECT_EQ(acts(step, "unpack the stuff on the counter"), "subtask clear on counter1");
@@ -374,15 +375,12 @@ TEST_F(ReplyActsTest, VerbsPeopleTidyByAreTakenAsTidyingAndSaidSo) {
                             {"organise the bathroom", "organise"},
                             {"straighten up the bathroom", "straighten up"}}) {
     EXPECT_EQ(acts(task, said), "task tidy bathroom") << said;
-    std::vector<std::string> notes = read_acts(grounder(), world(), task, said).notes;
-    EXPECT_NE(std::find(notes.begin(), notes.end(), "I took \"" + std::string(verb) + "\" as tidying."), notes.end())
-        << said;
+    EXPECT_THAT(notes(task, said), ::testing::Contains("I took \"" + std::string(verb) + "\" as tidying.")) << said;
   }
   ReplyContext step;
   step.asked = Asked::kTaskStep;
-  ReplyActs read = read_acts(grounder(), world(), step, "declutter the counter");
   EXPECT_EQ(acts(step, "declutter the counter"), "subtask clear on counter1");
-  EXPECT_NE(std::find(read.notes.begin(), read.notes.end(), "I took \"declutter\" as clearing."), read.notes.end());
+  EXPECT_THAT(notes(step, "declutter the counter"), ::testing::Contains("I took \"declutter\" as clearing."));
   EXPECT_EQ(acts(step, "organize the stuff on the counter"), "subtask organize on counter1");
 }
 
