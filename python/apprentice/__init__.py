@@ -59,7 +59,9 @@ class Question(str):
     kind: the same as the dialogue names it (and `apprentice serve`'s
         page): "task-name", "task-step", "subtask-step" (about `object`:
         its goal; without one: is the subtask done?), "next-action",
-        "confirm-goal" or "confirm-action" (yes/no questions), "which".
+        "confirm-goal", "confirm-action" or "confirm" (yes/no questions: a
+        goal or an action proposed, or another, such as "Shall I leave
+        them?"), "which".
     task, subtask: "tidy kitchen", "clear", once known ("" before).
     object, category, place: the object of interest ("ketchup1",
         "ketchup") and the id of the place it is on or in now, or None.
@@ -77,7 +79,7 @@ class Question(str):
 
     @property
     def is_yes_no(self):
-        return self.kind in ("confirm-goal", "confirm-action")
+        return self.kind in ("confirm-goal", "confirm-action", "confirm")
 
 
 def experiment(scenario_path, conditions=None, llm=None, generalization="full", knowledge_in=None, use_rules=True,

@@ -32,6 +32,8 @@ class KitchenTeacher:
         self.questions.append(question)
         if question.kind == "task-name":
             return "Tidy kitchen."
+        if question.is_yes_no:  # what another household taught is right here too
+            return "Yes."
         if question.kind == "subtask-step":
             if question.object is None:  # is there more to the subtask?
                 return "You are done."

@@ -345,7 +345,9 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::start_object(Object
     report.note = "no goal known";
     report_.help_needed.push_back("where " + language::spoken_name_and_location(world(), object) + " goes (" +
                                   current().verb + ")" + doubt);
-  } else if (!goal) {
+  } else if (!goal && !was_left_as_told(object)) {
+    // (Left where it is at the teacher's word, "I'm done" or "leave it"
+    // said at a proposed goal: nothing more to ask.)
     auto acquired = acquire_goal(object, report);
     if (!acquired) return tl::unexpected(acquired.error());
     goal = *acquired;

@@ -130,10 +130,16 @@ TaskLearningAgent::Session::answer_to_proposal(const Question& asked, ObjectId o
     std::vector<ObjectId> mentioned = given->goal.objects();
     return std::find(mentioned.begin(), mentioned.end(), object) != mentioned.end();
   };
+  // The goal proposed: a goal said in its place is a yes when it is the
+  // same, else a no with the goal as its rest (language::read_reply).
+  language::ReplyContext at = context(language::Asked::kYesNo, object);
+  at.proposal = asked.goal;
   auto heard = converse(
-      asked, context(language::Asked::kYesNo, object),
+      asked, at,
       [&](const language::Reply& r) -> std::optional<std::string> {
-        if (std::holds_alternative<language::YesNo>(r) || about_it(r)) return std::nullopt;
+        if (std::holds_alternative<language::YesNo>(r) || std::holds_alternative<language::Finished>(r) ||
+            about_it(r))
+          return std::nullopt;
         return "I asked a yes-or-no question.";
       },
       // Where the thing goes instead, said in place of "no".
@@ -146,6 +152,8 @@ TaskLearningAgent::Session::answer_to_proposal(const Question& asked, ObjectId o
   if (!heard->reply) return ProposalAnswer{};
   std::string text = heard->text;
   language::Reply reply = std::move(*heard->reply);
+  if (const auto* ended = std::get_if<language::Finished>(&reply))
+    return ProposalAnswer{false, std::nullopt, *ended, text};
   if (const auto* yes_no = std::get_if<language::YesNo>(&reply)) {
     if (yes_no->yes) begin_lesson(text);
     if (yes_no->yes || yes_no->rest.empty()) return ProposalAnswer{yes_no->yes, std::nullopt};
@@ -312,6 +320,12 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
       for (const auto& entry : together) q.together.push_back(entry.first);
       auto answer = answer_to_proposal(q, object);
       if (!answer) return tl::unexpected(answer.error());
+      if (answer->ended) {
+        auto left = leave_as_told(object, *answer->ended, answer->text, report);
+        if (!left) return tl::unexpected(left.error());
+        if (*left) return std::optional<Goal>();
+        continue;  // "no" to leaving the rest: asked again
+      }
       if (!answer->instead && !answer->yes && !together.empty()) {
         // A "no" to several things: at least one does not go there. Ask
         // about this one alone.
@@ -355,7 +369,9 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
       report_.analogies.push_back("decided that " + language::goal_outcome(w, object, *goal, thing) + as + " (" + how +
                                   ")");
     if (learning_) {
-      std::string source = by_analogy ? top.reason : "decision: " + top.reason;
+      // A class rule is kept in English ("dirty clothes go in the laundry
+      // hamper, as said: ..."): `knowledge` shows where a goal came from.
+      std::string source = by_analogy ? top.reason : "decision: " + (top.rule ? say_class_rule(*top.rule) : top.reason);
       if (decision.kind == Decision::Kind::kConfirm) source += " (confirmed)";
       if (auto s = learn_goal(object, *goal, source); !s) return stop(s.error());
     }

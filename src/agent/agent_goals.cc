@@ -182,7 +182,7 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
       // weighed with the other sources first (it may place the thing, or
       // make a yes/no of the question); else the question comes again.
       auto decided = goal_by_decision(object, report);
-      if (!decided || *decided) return decided;
+      if (!decided || *decided || was_left_as_told(object)) return decided;
       continue;
     }
     if (!heard->reply) {
@@ -191,23 +191,13 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
       report_.help_needed.push_back(language::help_needed_for_goal(w, object, current().verb, heard->refused));
       return std::optional<Goal>();
     }
-    if (const auto* ended = std::get_if<language::Finished>(&*heard->reply); ended && ended->ending) {
-      auto left = ask_to_leave_the_rest(object);
+    if (const auto* ended = std::get_if<language::Finished>(&*heard->reply)) {
+      auto left = leave_as_told(object, *ended, heard->text, report);
       if (!left) return tl::unexpected(left.error());
-      if (left->has_value() && !**left) continue;  // "no": the question again
-      if (left->has_value()) {
-        report.note = kLeftAsTold;
-        return std::optional<Goal>();
-      }
-      // Nothing else to come: the ending leaves this thing, below.
-    }
-    begin_lesson(heard->text);
-    if (std::holds_alternative<language::Finished>(*heard->reply)) {
-      report.note = kLeftAsTold;
-      progress_.thing_left(object);
-      say(language::will_leave_as_it_is(w, object, true));
+      if (!*left) continue;  // "no" to leaving the rest: the question again
       return std::optional<Goal>();
     }
+    begin_lesson(heard->text);
     const ObjectId about = ahead.value_or(object);
     bool say_norm = false;
     const language::GoalGiven given = with_doors_closed(about, std::get<language::GoalGiven>(*heard->reply), say_norm);
@@ -220,6 +210,32 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
     report.goal_source = GoalSource::kInstructor;
     return std::optional<Goal>(given.goal);
   }
+}
+
+bool TaskLearningAgent::Session::was_left_as_told(ObjectId object) const {
+  const std::vector<ObjectId>& left = progress_.left_by_teacher;
+  return std::find(left.begin(), left.end(), object) != left.end();
+}
+
+TaskLearningAgent::Session::Flow<bool> TaskLearningAgent::Session::leave_as_told(ObjectId object,
+                                                                                const language::Finished& ended,
+                                                                                const std::string& text,
+                                                                                ObjectReport& report) {
+  if (ended.ending && asked_to_leave_the_rest_.insert(object).second) {
+    auto left = ask_to_leave_the_rest(object);
+    if (!left) return tl::unexpected(left.error());
+    if (left->has_value() && !**left) return false;
+    if (left->has_value()) {
+      report.note = kLeftAsTold;
+      return true;
+    }
+    // Nothing else to come: the ending leaves this thing, as "leave it" does.
+  }
+  begin_lesson(text);
+  report.note = kLeftAsTold;
+  progress_.thing_left(object);
+  say(language::will_leave_as_it_is(world(), object, true));
+  return true;
 }
 
 std::optional<std::string> TaskLearningAgent::Session::why_not_a_goal_for(
@@ -253,7 +269,7 @@ TaskLearningAgent::Session::Flow<std::optional<bool>> TaskLearningAgent::Session
   things.insert(things.end(), rest.begin(), rest.end());
   const Current part = current();
   auto yes =
-      confirm(question(QuestionKind::kSubtaskStep, language::ask_leave_the_rest(w, things, part.places), object));
+      confirm(question(QuestionKind::kConfirm, language::ask_leave_the_rest(w, things, part.places), object));
   if (!yes) return tl::unexpected(yes.error());
   if (!*yes) {
     say(language::read_back_going_on(w, object));

@@ -148,6 +148,15 @@ class TaskLearningAgent::Session {
   // does); true when the teacher said to leave them (the part ends with
   // them where they are); false to go on asking about `object`.
   Flow<std::optional<bool>> ask_to_leave_the_rest(ObjectId object);
+  // An ending or "leave it" said at a question about `object` (where it
+  // goes, or a proposed goal): the thing is left where it is, and with an
+  // ending and other things to come the rest of the part too, if the
+  // teacher says so. false when the teacher said "no" to leaving the rest:
+  // the question comes again.
+  Flow<bool> leave_as_told(ObjectId object, const language::Finished& ended, const std::string& text,
+                           ObjectReport& report);
+  // Whether the teacher said to leave `object` where it is.
+  bool was_left_as_told(ObjectId object) const;
   Status learn_goal(ObjectId object, const Goal& goal, const std::string& source);
   // Asks the LLM, the first time a thing needs it this session, for the
   // summary of what was taught and where each thing to place goes; the
@@ -206,6 +215,9 @@ class TaskLearningAgent::Session {
   struct ProposalAnswer {
     bool yes = false;
     std::optional<Goal> instead;
+    // "I'm done", "leave it", said in place of yes or no, with its words.
+    std::optional<language::Finished> ended = std::nullopt;
+    std::string text = {};
   };
   Flow<ProposalAnswer> answer_to_proposal(const Question& asked, ObjectId object);
   const GoalProposer& proposer() const;
@@ -275,6 +287,10 @@ class TaskLearningAgent::Session {
   // Goals a teacher's "yes" settled for things still to come, asked with
   // another thing ("and the pear too?"), with what the teacher said.
   std::map<ObjectId, std::pair<Goal, std::string>> settled_;
+  // The things an ending was asked back about ("Shall I leave them?"): a
+  // second ending at the same thing, after a "no", leaves only that thing,
+  // so that a teacher who keeps ending is never asked the same forever.
+  std::set<ObjectId> asked_to_leave_the_rest_;
   // The person's rules said this session, as said; those rules, and the
   // LLM's summary's, as class rules (agent/person_rule.h); and what the LLM
   // says of the person's preferences (asked once, when a thing first needs

@@ -259,7 +259,8 @@ std::string question_kind(const Question& question) {
     case QuestionKind::kSubtaskStep: asked = question.object ? Asked::kGoal : Asked::kSubtaskEnd; break;
     case QuestionKind::kNextAction: asked = Asked::kAction; break;
     case QuestionKind::kConfirmGoal:
-    case QuestionKind::kConfirmAction: asked = Asked::kYesNo; break;
+    case QuestionKind::kConfirmAction:
+    case QuestionKind::kConfirm: asked = Asked::kYesNo; break;
     case QuestionKind::kWhich: asked = Asked::kWhich; break;
   }
   return std::string(language::to_string(asked));

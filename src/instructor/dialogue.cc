@@ -14,6 +14,7 @@ const char* to_string(QuestionKind kind) {
     case QuestionKind::kConfirmGoal: return "confirm-goal";
     case QuestionKind::kConfirmAction: return "confirm-action";
     case QuestionKind::kWhich: return "which";
+    case QuestionKind::kConfirm: return "confirm";
   }
   return "unknown";
 }

@@ -26,11 +26,12 @@ enum class QuestionKind {
   kConfirmGoal,    // "[LM] For a ceramic plate on the table, is the goal that ...?"
   kConfirmAction,  // "[LM] For the ceramic plate, should I 'Pick up ceramic plate'?"
   kWhich,          // "Which drawer: the top drawer or the bottom drawer?" (one of `choices`)
+  kConfirm,        // another yes/no, about `object`: "There are still 2 things on the table: ... Shall I leave them?"
 };
 
 const char* to_string(QuestionKind kind);
 inline bool is_yes_no(QuestionKind kind) {
-  return kind == QuestionKind::kConfirmGoal || kind == QuestionKind::kConfirmAction;
+  return kind == QuestionKind::kConfirmGoal || kind == QuestionKind::kConfirmAction || kind == QuestionKind::kConfirm;
 }
 
 // A question with what it is about, so that an instructor program can

@@ -45,6 +45,8 @@ Result<std::string> SimulatedInstructor::answer(const Question& question, const 
     case QuestionKind::kConfirmGoal: return std::string(accepts_goal(question, world) ? "yes." : "no.");
     case QuestionKind::kConfirmAction: return std::string(accepts_action(question, world) ? "yes." : "no.");
     case QuestionKind::kWhich: return which(question, world);
+    // The script says no ending mid-part, so it never leaves things.
+    case QuestionKind::kConfirm: return std::string("no.");
   }
   return std::string("You are done.");
 }

@@ -195,6 +195,10 @@ std::optional<VerbTaken> known_task_verb(const Lexicon& lexicon, std::string_vie
   return nearest(lexicon, verb, particle, kTaskVerbs, std::nullopt);
 }
 
+bool names_a_known_task(const Lexicon& lexicon, std::string_view verb, std::string_view particle) {
+  return is_known(verb, kTaskVerbs) || known_task_verb(lexicon, verb, particle).has_value();
+}
+
 std::string task_name_as_read(const Lexicon& lexicon, std::string_view name) {
   const std::vector<std::string> words = split_words(name);
   if (words.size() < 2) return std::string(name);
@@ -214,6 +218,8 @@ std::optional<VerbTaken> known_step_verb(const Lexicon& lexicon, std::string_vie
     return std::nullopt;
   return nearest(lexicon, verb, particle, kStepVerbs, place);
 }
+
+bool is_step_verb(std::string_view verb) { return is_known(verb, kStepVerbs); }
 
 std::string clearing_verb(ObjectKind place) { return place == ObjectKind::kSurface ? "clear" : "empty"; }
 

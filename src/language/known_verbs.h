@@ -37,6 +37,10 @@ struct VerbTaken {
 // `said`: the verb and its particle as said ("clean up", "clean").
 std::optional<VerbTaken> known_task_verb(const Lexicon& lexicon, std::string_view verb, std::string_view particle);
 
+// Whether a verb said for a task is a known task verb or close to one:
+// "tidy", "clean up", "sort out"; not "get", "have" or "end".
+bool names_a_known_task(const Lexicon& lexicon, std::string_view verb, std::string_view particle);
+
 // A task's name as the reader names that task when a teacher says it:
 // "clean living room" is "tidy living room", "clean up garage" is "tidy
 // garage"; a name whose verb is known, or has no known verb close, is
@@ -49,6 +53,10 @@ std::string task_name_as_read(const Lexicon& lexicon, std::string_view name);
 // `taught`, the verbs of the parts taught so far) or no known one is close.
 std::optional<VerbTaken> known_step_verb(const Lexicon& lexicon, std::string_view verb, std::string_view particle,
                                          ObjectKind place, std::span<const std::string> taught);
+
+// Whether a verb is one of the agent's own step verbs (clear, empty,
+// store, unload).
+bool is_step_verb(std::string_view verb);
 
 // English's reversative prefixes ("de", "un", "dis"): a verb WordNet
 // lacks ("declutter") stands for the same stem with another of them that

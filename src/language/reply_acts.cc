@@ -229,10 +229,27 @@ ReplyActs read(const Grounder& grounder, const World& world, const ReplyContext&
         return true;
     return false;
   };
+  // "no, TOP drawer", just after "So the pen goes in the bottom drawer":
+  // the answer names a look-alike of the last goal's place by a property
+  // that place has not.
+  auto names_a_look_alike_of = [&](ObjectId place) {
+    const ObjectInfo& info = world.universe->info(place);
+    if (!names(place)) return false;
+    for (ObjectId other : world.universe->with_category(info.category)) {
+      if (other == place) continue;
+      for (const std::string& property : world.universe->info(other).properties)
+        if (std::find(all.begin(), all.end(), property) != all.end() &&
+            std::find(info.properties.begin(), info.properties.end(), property) == info.properties.end())
+          return true;
+    }
+    return false;
+  };
   if (weak && !correcting && context.last_goal && !answer.empty()) {
-    // It names the last thing, or says "not" the last place.
+    // It names the last thing, says "not" the last place, or names a
+    // look-alike of the last place.
     bool not_there = std::find(all.begin(), all.end(), "not") != all.end();
-    correcting = names(context.last_goal->object) || not_there;
+    const std::optional<ObjectId> last_place = destination(world, GoalGiven{context.last_goal->goal});
+    correcting = names(context.last_goal->object) || not_there || (last_place && names_a_look_alike_of(*last_place));
   }
   // "hang on, the printer paper goes in the cupboard" (asked about the
   // printer paper, the last goal the dictionary's): a marker before an

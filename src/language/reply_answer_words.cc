@@ -130,7 +130,17 @@ Reply read_answer(const Grounder& grounder, const World& world, const ReplyConte
     text = quoted_words(words);
     reply = read_reply(grounder, world, context, text);
   }
-  if (!usable(reply)) return first;
+  if (!usable(reply)) {
+    // "in the cupbord": asked back with the name it may be a slip of.
+    const auto* u = std::get_if<Unusable>(&first);
+    if (u != nullptr && u->failure && u->failure->kind == FailureKind::kUnknownWord)
+      if (std::string name = slip_of(world, u->failure->detail); !name.empty()) {
+        Unusable asked = *u;
+        asked.reason = "I do not know the word " + quote(u->failure->detail) + ". Did you mean " + quote(name) + "?";
+        return asked;
+      }
+    return first;
+  }
   for (const std::string& word : skipped) notes.push_back("I took " + quote(word) + " as a filler.");
   for (const std::string& word : modifiers)
     notes.push_back("I took " + quote(word) + " as telling nothing apart: nothing here is told apart by it.");

@@ -15,7 +15,7 @@
 namespace apprentice::language::acts {
 // Words that only set the tone: "um", "ugh", "lol", "ok so", "oh and".
 bool is_interjection(std::string_view w) {
-  return is_one_of(w, {"um", "umm", "ummm", "uh", "uhh", "er", "erm", "ugh", "hmm", "hmmm", "hm", "ok", "so", "oh",
+  return is_one_of(w, {"um", "umm", "ummm", "uh", "uhh", "er", "erm", "ugh", "hmm", "hmmm", "hm", "mm", "mmm", "ok", "so", "oh",
                        "lol", "haha", "well", "hey", "hi", "hiya", "hello", "btw", "alright", "and", "also", "plus",
                        "please", "right", "anyway", "yeah", "ah", "aha", "ooh", "argh", "gosh", "jeez", "omg", "idk",
                        "lemme", "see", "thanks", "thank", "you", "cheers", "sorry", "mate", "buddy", "kk"});

@@ -6,6 +6,7 @@
 #include "language/generation.h"
 #include "language/narration.h"
 #include "language/parser.h"
+#include "language/known_verbs.h"
 #include "language/reply_acts_parts.h"
 #include "language/reply_reading.h"
 #include "language/utterance.h"
@@ -115,6 +116,16 @@ std::optional<std::pair<Reply, std::vector<std::string>>> several_steps(const Gr
     at.asked = Asked::kTaskStep;
   }
   if (!names_a_part) return std::nullopt;
+  // "the piano's covered in stuff. clear it off": a first part whose verb
+  // names no step is a description when the reply read whole names a
+  // part with a step verb.
+  if (const auto* named = std::get_if<SubtaskNamed>(&*first)) {
+    const std::vector<std::string>& taught = context.taught_subtasks;
+    const bool known = is_step_verb(named->verb) || std::find(taught.begin(), taught.end(), named->verb) != taught.end();
+    Reply whole = read_reply(grounder, world, context, text);
+    const auto* whole_part = std::get_if<SubtaskNamed>(&whole);
+    if (!known && whole_part != nullptr && is_step_verb(whole_part->verb)) return std::nullopt;
+  }
   return std::make_pair(*first, rest);
 }
 

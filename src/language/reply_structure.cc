@@ -1,6 +1,7 @@
 // The task and its structure in everyday English (language/reply_reading.h);
 // yes and no are in reply_yes_no.cc.
 #include <algorithm>
+#include <array>
 
 #include "language/generation.h"
 #include "language/known_verbs.h"
@@ -87,6 +88,15 @@ bool names_location(const std::string& word, const ReplyInput& in) {
   return std::find(room.begin(), room.end(), word) != room.end();
 }
 
+// "cleanup", "clean-up": a verb run together with its particle "up", as
+// its base form; "" for any other word.
+std::string run_together_verb(const std::string& word, const ReplyInput& in) {
+  if (word.size() <= 4 || !word.ends_with("up")) return "";
+  std::string stem = word.substr(0, word.size() - 2);
+  if (stem.ends_with("-")) stem.pop_back();
+  return in.vocabulary.any_verb(stem);
+}
+
 // A task said by its verb's form after what it is done to: the verb's base
 // form and the other words.
 struct GerundTask {
@@ -101,12 +111,7 @@ std::optional<GerundTask> gerund_task(const Words& words, const ReplyInput& in) 
     const std::string& w = words[i];
     std::string base;
     if (w.ends_with("ing") || w.ends_with("ed")) base = in.vocabulary.any_verb(w);
-    // "kitchen cleanup": a verb run together with its particle.
-    if (base.empty() && w.size() > 4 && w.ends_with("up")) {
-      std::string stem = w.substr(0, w.size() - 2);
-      if (stem.ends_with("-")) stem.pop_back();  // "clean-up"
-      base = in.vocabulary.any_verb(stem);
-    }
+    if (base.empty()) base = run_together_verb(w, in);
     if (base.empty() || base == w || names_location(w, in)) continue;
     GerundTask task{base, {}};
     for (std::size_t k = 0; k < words.size(); ++k) {
@@ -133,9 +138,15 @@ bool finished_words(const Words& words) {
            {"the", "end"}, {"are", "through"}, {"is", "clear"}, {"is", "empty"}, {"is", "clean"}, {"is", "tidy"},
            {"are", "clear"}, {"are", "empty"}, {"is", "cleared"}, {"is", "emptied"}, {"is", "tidied"},
            {"is", "cleaned"}, {"are", "cleared"}, {"is", "clear", "now"}, {"whole", "task"}, {"whole", "thing"}, {"whole", "job"},
-           {"entire", "task"}, {"nothing", "to", "do"}})
+           {"entire", "task"}, {"nothing", "to", "do"}, {"all", "clear"}, {"the", "lot"}})
     if (contains(words, phrase)) return true;
   return words.size() == 1 && is_one_of(words[0], {"nothing", "enough", "stop"});
+}
+
+// Asked whether there is more to a part: "there's loads more", "still the
+// twine", "there are still bandages on there", said without a "no".
+bool says_there_is_more(const Words& words) {
+  return has_word(words, {"more", "still"}) && !has_word(words, {"no", "not", "nothing", "any"});
 }
 
 bool proceed_words(const Words& words) {
@@ -211,8 +222,25 @@ class StructureReader {
       if (problem_) return outcome();
     }
     std::vector<Clause> clauses = read_clauses(in_.words, in_.vocabulary);
-    for (const Clause& clause : clauses) {
-      if (auto subtask = read_subtask(clause)) return *subtask;
+    // "the piano's covered in stuff. clear it off": "it" in a later clause
+    // is the place an earlier one named.
+    if (clauses.size() > 1) {
+      const auto problem = problem_;
+      const auto ambiguous = ambiguous_;
+      const bool item_named = item_named_;
+      if (auto named = first_places(clauses)) named_before_ = named->objects;
+      problem_ = problem;
+      ambiguous_ = ambiguous;
+      item_named_ = item_named;
+    }
+    for (std::size_t i = 0; i < clauses.size(); ++i) {
+      if (auto subtask = read_subtask(clauses[i])) {
+        if (names_a_step(*subtask)) return *subtask;
+        // "the piano's covered in stuff. clear it off": a verb that names
+        // no step ("cover") gives way to a later one that does.
+        if (auto later = later_step(clauses, i + 1)) return *later;
+        return *subtask;
+      }
       if (problem_ || ambiguous_) break;
     }
     if (!problem_ && !ambiguous_ && !item_named_)
@@ -221,7 +249,8 @@ class StructureReader {
     for (const Words& piece : pieces(in_.words)) {
       Words kept = without_fillers(piece, in_.vocabulary);
       if (finished_words(kept)) finished = true;
-      else if (proceed_words(piece)) proceed = true;
+      else if (proceed_words(piece) || (in_.context.asked == Asked::kSubtaskEnd && says_there_is_more(piece)))
+        proceed = true;
     }
     if (finished) return Finished{};
     // "the counter next", "same with the counter": the last subtask's verb
@@ -435,6 +464,29 @@ class StructureReader {
                               "move", "come", "think", "know", "want", "need", "let", "say", "mean", "see", "look"});
   }
 
+  // Whether a part of the task read is said with a step verb the agent
+  // knows, or one the teacher taught before.
+  bool names_a_step(const Reply& reply) const {
+    const auto* part = std::get_if<SubtaskNamed>(&reply);
+    if (part == nullptr) return true;
+    const std::vector<std::string>& taught = in_.context.taught_subtasks;
+    return is_step_verb(part->verb) || std::find(taught.begin(), taught.end(), part->verb) != taught.end();
+  }
+
+  // The first part said with a known step verb in clauses[from...]; what
+  // the reading of the others found wrong is forgotten.
+  std::optional<Reply> later_step(const std::vector<Clause>& clauses, std::size_t from) {
+    const auto problem = problem_;
+    const auto ambiguous = ambiguous_;
+    const bool item_named = item_named_;
+    for (std::size_t k = from; k < clauses.size(); ++k)
+      if (auto subtask = read_subtask(clauses[k]); subtask && names_a_step(*subtask)) return subtask;
+    problem_ = problem;
+    ambiguous_ = ambiguous;
+    item_named_ = item_named;
+    return std::nullopt;
+  }
+
   std::optional<Reply> read_subtask(const Clause& c) {
     if (names_no_subtask(c)) return std::nullopt;
     if (c.verb_class() == VerbClass::kOpen || c.verb_class() == VerbClass::kClose) return std::nullopt;
@@ -470,9 +522,18 @@ class StructureReader {
     }
     // "clear it", or "clear" alone, after "What should I do with the things
     // on the coffee table?".
+    // Or after a clause that named the place ("the piano's covered in
+    // stuff. clear it off").
     bool about_it = !c.object || c.object->pronoun || c.object->place_pronoun;
-    if (!found && !unresolved && about_it && c.phrases.empty() && !in_.context.topic_places.empty())
-      found = Places{in_.context.topic_places, "it"};
+    const bool pronoun = c.object && (c.object->pronoun || c.object->place_pronoun);
+    static const std::vector<ObjectId> kNone;
+    const std::vector<ObjectId>& topic = !in_.context.topic_places.empty() ? in_.context.topic_places
+                                         : pronoun                         ? named_before_
+                                                                           : kNone;
+    if (!found && (!unresolved || pronoun) && about_it && c.phrases.empty() && !topic.empty()) {
+      found = Places{topic, "it"};
+      unresolved.reset();
+    }
     if (!found && unresolved && !problem_) problem_ = unresolved;
     if (!found || problem_ || ambiguous_) return std::nullopt;
     std::vector<ObjectId> holding = holding_items(found->objects);
@@ -488,6 +549,8 @@ class StructureReader {
   std::optional<Problem> problem_;
   std::optional<Ambiguous> ambiguous_;
   bool item_named_ = false;
+  // The places of a part read from an earlier clause, for "it" in a later one.
+  std::vector<ObjectId> named_before_;
 };
 
 // The task named by its verb and what it is done to. The task's place is
@@ -500,6 +563,12 @@ class StructureReader {
 // room said with another verb than the agent's ("clean up", "straighten")
 // is the agent's task verb WordNet puts closest (known_verbs.h), with a
 // note for the read-back. `up_first`: "up" said right after the verb.
+// WordNet's classes of the places a task is done in, besides rooms:
+// "shed", "greenhouse" (buildings), "station", "gym" (facilities). Not
+// "structure" or "area": a cupboard is both; nor "workplace": "the
+// laundry" is the washing before it is a room.
+constexpr std::array<std::string_view, 2> kRoomlikeClasses{"building", "facility"};
+
 TaskNamed task_named(const ReplyInput& in, const std::string& verb, const std::string& particle, bool up, Words object,
                      bool up_first) {
   Words room = split_words(to_lower(in.world.location));
@@ -512,11 +581,27 @@ TaskNamed task_named(const ReplyInput& in, const std::string& verb, const std::s
     object.erase(time, object.end());
     auto at = std::search(object.begin(), object.end(), room.begin(), room.end());
     const Lexicon& lexicon = in.grounder.lexicon();
+    // A word for a room or a building that no thing of the world is
+    // called ("the potting shed" of a greenhouse, "the station" of the
+    // nurses' station) names the room the agent is in: the task is over
+    // the world's location, never over a room the agent cannot see.
+    auto names_a_thing_here = [&](const std::string& w) {
+      return std::any_of(in.world.universe->objects().begin(), in.world.universe->objects().end(),
+                         [&](const ObjectInfo& o) {
+                           const std::vector<std::string> parts = name_parts(o.category);
+                           return std::find(parts.begin(), parts.end(), w) != parts.end();
+                         });
+    };
     auto roomlike = [&](const std::string& w) {
       if (is_one_of(w, {"in", "here", "this", "room", "place", "it", "ugh", "um", "lol", "hmm", "oh", "so"})) return true;
       if (lexicon.has_wordnet() && !lexicon.knows(w)) return true;
       std::vector<std::string> one{w};
-      return !lexicon.kinds_under("room", one).empty();
+      if (!lexicon.kinds_under("room", one).empty()) return true;
+      // "the laundry" in a laundry room is the washing; "the workshop" of
+      // a bike workshop stays as said.
+      if (names_a_thing_here(w) || names_location(w, in)) return false;
+      return std::any_of(kRoomlikeClasses.begin(), kRoomlikeClasses.end(),
+                         [&](std::string_view c) { return !lexicon.kinds_under(c, one).empty(); });
     };
     bool pointed = object.empty() || std::any_of(object.begin(), object.end(), roomlike);
     if (at != object.end() || pointed || when) object = room;
@@ -535,6 +620,44 @@ TaskNamed task_named(const ReplyInput& in, const std::string& verb, const std::s
     }
   for (const std::string& w : object) name += " " + w;
   return TaskNamed{name, note};
+}
+
+// A verb said somewhere in the reply that names a known task (tidying, or
+// a verb WordNet puts close to it), with its particle and the words after
+// it: what a request means when the verb it was read with names none. "it's
+// end of shift ..., can you help me tidy it up" is tidying, not "end"; "get
+// the playroom sorted" sorting, not "get"; "we had people over, the living
+// room needs cleaning" cleaning, not "have over". A word after a
+// determiner is a noun ("a mess"), and a word of the room's name no verb.
+struct TaskVerbSaid {
+  std::string verb;
+  std::string particle;
+  Words object;
+};
+
+std::optional<TaskVerbSaid> known_task_verb_said(const std::vector<Words>& said, const ReplyInput& in) {
+  const Lexicon& lexicon = in.grounder.lexicon();
+  for (const Words& piece : said)
+    for (std::size_t i = 0; i < piece.size(); ++i) {
+      const std::string& w = piece[i];
+      if ((i > 0 && is_determiner(piece[i - 1])) || names_location(w, in) || is_particle(w) || is_determiner(w))
+        continue;
+      std::string base = in.vocabulary.any_verb(w);
+      std::string particle = i + 1 < piece.size() && is_particle(piece[i + 1]) ? piece[i + 1] : "";
+      if (base.empty() && !(base = run_together_verb(w, in)).empty()) particle = "up";
+      if (base.empty()) continue;
+      if (!names_a_known_task(lexicon, base, particle)) continue;
+      TaskVerbSaid out{base, particle, {}};
+      for (std::size_t k = i + 1; k < piece.size(); ++k)
+        if (!is_particle(piece[k]) && !is_determiner(piece[k])) out.object.push_back(piece[k]);
+      // "the kitchen needs cleaning": what it is done to comes first.
+      if (out.object.empty())
+        for (std::size_t k = 0; k < i; ++k)
+          if (!is_determiner(piece[k]) && !is_copula(piece[k]) && !is_auxiliary(piece[k]) && !is_frame_word(piece[k]))
+            out.object.push_back(piece[k]);
+      return out;
+    }
+  return std::nullopt;
 }
 
 }  // namespace
@@ -593,6 +716,16 @@ Reply read_task(const ReplyInput& in) {
       object.push_back(w);
     }
   }
+  bool up = std::find(words->begin() + 1, words->end(), "up") != words->end();
+  bool up_first = words->size() > 1 && (*words)[1] == "up";
+  if (!names_a_known_task(in.grounder.lexicon(), verb, particle.empty() && up ? "up" : particle))
+    if (auto other = known_task_verb_said(said, in)) {
+      verb = other->verb;
+      up = other->particle == "up";
+      up_first = up;
+      particle = up ? "" : other->particle;
+      object = std::move(other->object);
+    }
   // "a bit", "for me", "right now" say nothing about the task.
   while (!object.empty() && is_one_of(object.back(), {"bit", "little", "quickly", "now", "today", "please", "me"}))
     object.pop_back();
@@ -611,8 +744,7 @@ Reply read_task(const ReplyInput& in) {
       }
     }
   }
-  const bool up = std::find(words->begin() + 1, words->end(), "up") != words->end();
-  return task_named(in, verb, particle, up, std::move(object), words->size() > 1 && (*words)[1] == "up");
+  return task_named(in, verb, particle, up, std::move(object), up_first);
 }
 
 Reply read_structure(const ReplyInput& in) {

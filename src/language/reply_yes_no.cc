@@ -2,6 +2,7 @@
 // "that's right", "no, the other one" (the rest is kept for the agent).
 #include <algorithm>
 
+#include "language/reply_acts_parts.h"
 #include "language/reply_reading.h"
 #include "language/utterance.h"
 #include "util/text.h"
@@ -23,7 +24,7 @@ const std::vector<std::vector<std::string_view>>& yes_phrases() {
       {"sure", "thing"}, {"yes", "please"}, {"please"}, {"why", "not"}, {"that", "one"}, {"correct", "answer"},
       {"that", "is", "fine"}, {"that", "is", "good"}, {"very", "good"}, {"spot", "on"}, {"go", "for", "it"},
       {"do", "that"}, {"that", "will", "do"}, {"i", "agree"}, {"makes", "sense"}, {"that", "makes", "sense"},
-      {"bingo"}, {"you", "are", "right"}, {"right", "on"}, {"please", "go", "ahead"}, {"that", "is", "what", "i", "want"}};
+      {"bingo"}, {"obviously"}, {"of", "course"}, {"you", "are", "right"}, {"right", "on"}, {"please", "go", "ahead"}, {"that", "is", "what", "i", "want"}};
   return kYes;
 }
 
@@ -80,20 +81,89 @@ Words without_lead(Words words) {
   return words;
 }
 
-}  // namespace
+// The words from the first yes or no on, after words that carry nothing
+// before it: interjections and words no dictionary knows ("lol no", "mm
+// not really", "ugh, yes"). At most three are passed over; a known word
+// ("not sure", "I don't know") is never, so no answer is made up.
+Words from_the_answer(const Words& said, const Lexicon& lexicon) {
+  constexpr std::size_t kMostPassedOver = 3;
+  std::size_t passed = 0;
+  for (std::size_t i = 0; i < said.size() && passed <= kMostPassedOver; ++i) {
+    Words rest(said.begin() + static_cast<std::ptrdiff_t>(i), said.end());
+    if (answer_prefix(rest)) return rest;
+    const std::string& w = said[i];
+    if (w == ",") continue;
+    if (!acts::is_interjection(w) && !(lexicon.has_wordnet() && !lexicon.knows(w))) break;
+    ++passed;
+  }
+  return said;
+}
 
-std::optional<bool> yes_or_no(std::string_view text) {
-  auto answer = answer_prefix(without_lead(reply_words(text)));
+// A reply to a proposed goal that says, in place of yes or no, where the
+// thing goes ("hang on, the jumper goes in the wardrobe") or that the part
+// is over ("I'm done"): read as at the question where the thing goes,
+// after any marker or filler before it. A goal the proposal holds is a
+// yes; another is a no with the goal as the rest, read as "no, the jumper
+// goes in the wardrobe" is. nullopt when it says neither.
+std::optional<Reply> said_instead_of_yes_or_no(const ReplyInput& in, Words words) {
+  if (!in.context.object || !in.context.proposal) return std::nullopt;
+  const acts::Marker lead = acts::marker(words);
+  if (lead.length < words.size()) words.erase(words.begin(), words.begin() + static_cast<std::ptrdiff_t>(lead.length));
+  while (!words.empty() && (words.front() == "," || acts::is_interjection(words.front()))) words.erase(words.begin());
+  if (words.empty()) return std::nullopt;
+  ReplyContext at = in.context;
+  at.asked = Asked::kGoal;
+  const std::string text = join(words, " ");
+  Reply said = read_reply(in.grounder, in.world, at, text);
+  if (std::holds_alternative<Finished>(said)) return said;
+  const auto* given = std::get_if<GoalGiven>(&said);
+  if (given == nullptr) return std::nullopt;
+  const std::vector<ObjectId> mentioned = given->goal.objects();
+  if (std::find(mentioned.begin(), mentioned.end(), *in.context.object) == mentioned.end()) return std::nullopt;
+  const std::vector<Literal>& proposed = in.context.proposal->literals;
+  const bool as_proposed = given->others.empty() &&
+                           std::all_of(given->goal.literals.begin(), given->goal.literals.end(), [&](const Literal& l) {
+                             return std::find(proposed.begin(), proposed.end(), l) != proposed.end();
+                           });
+  if (as_proposed) return YesNo{true, ""};
+  return YesNo{false, text};
+}
+
+std::optional<bool> yes_or_no_of(const Words& words) {
+  auto answer = answer_prefix(words);
+  if (!answer) answer = answer_prefix(without_lead(words));
   if (!answer) return std::nullopt;
   return answer->second;
 }
 
+}  // namespace
+
+std::optional<bool> yes_or_no(std::string_view text) { return yes_or_no_of(reply_words(text)); }
+
 Reply read_yes_no(const ReplyInput& in) {
-  Words words = without_lead(in.words);
+  // "uh huh" is an answer before "uh" is a filler.
+  Words words = answer_prefix(in.words) ? in.words : without_lead(in.words);
   auto answer = answer_prefix(words);
-  if (!answer)
+  if (!answer) {
+    words = from_the_answer(in.words, in.grounder.lexicon());
+    answer = answer_prefix(words);
+  }
+  if (!answer) {
+    if (auto instead = said_instead_of_yes_or_no(in, in.words)) return *instead;
     return unusable(in, Problem{"Please answer yes or no.", std::nullopt});
+  }
   Words rest(words.begin() + static_cast<std::ptrdiff_t>(answer->first), words.end());
+  // "ok I'm done", "right, the ketchup goes in the pantry": a yes said
+  // with a word that is also a filler is that filler when what follows
+  // ends the part or says another goal.
+  const bool filler_yes =
+      answer->second && std::all_of(words.begin(), words.begin() + static_cast<std::ptrdiff_t>(answer->first),
+                                    [](const std::string& w) { return acts::is_interjection(w); });
+  if (filler_yes && !rest.empty()) {
+    std::optional<Reply> instead = said_instead_of_yes_or_no(in, rest);
+    const auto* yes_no = instead ? std::get_if<YesNo>(&*instead) : nullptr;
+    if (instead && (yes_no == nullptr || !yes_no->yes)) return *instead;
+  }
   YesNo reply{answer->second, ""};
   if (!only_confirms(rest)) {
     while (!rest.empty() && is_one_of(rest.front(), {",", "but", "and", "so", "then", "just", "though"}))

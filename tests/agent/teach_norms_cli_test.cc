@@ -153,5 +153,62 @@ TEST_F(TeachNorms, OpeningOneOfTwoLookAlikesAsksWhichAndOpensThatOne) {
   EXPECT_THAT(teach.out(), Not(HasSubstr("opened the bottom drawer"))) << teach.out();
 }
 
+// Said at a proposed goal in place of yes or no (found by a newcomer):
+// where the thing goes, after a marker, is a "no" with that goal; an
+// ending asks back about the rest of the part and leaves it, as at a
+// where-question. Neither is "Please answer yes or no."
+TEST_F(TeachNorms, AGoalOrAnEndingSaidAtAProposalIsTakenNotRefused) {
+  const std::string world = write("art-room.yaml", kArtRoom).string();
+  Process instead({APPRENTICE_BINARY, "teach", "--scenario", world});
+  ASSERT_TRUE(instead.write(lines({"tidy the classroom", "clear the table", "the sink", "the brushes go in the sink",
+                                   "hang on, the paint pot goes in the cupboard", "yes", "that is all"})));
+  EXPECT_EQ(instead.wait(), 0) << instead.out() << instead.err();
+  EXPECT_THAT(instead.out(), HasSubstr("Instructor: hang on, the paint pot goes in the cupboard\n"
+                                       "Agent: So the paint pot goes in the cupboard"))
+      << instead.out();
+  EXPECT_THAT(instead.out(), Not(HasSubstr("Please answer yes or no."))) << instead.out();
+
+  Process ending({APPRENTICE_BINARY, "teach", "--scenario", world});
+  ASSERT_TRUE(ending.write(lines({"tidy the classroom", "clear the table", "the sink", "the brushes go in the sink",
+                                  "ok I'm done", "yes", "that is all"})));
+  EXPECT_EQ(ending.wait(), 0) << ending.out() << ending.err();
+  const std::string& out = ending.out();
+  EXPECT_THAT(out, HasSubstr("Instructor: ok I'm done\n"
+                             "Agent: There are still 2 things on the table: the paint pot and the sponge. Shall I "
+                             "leave them?\n"
+                             "Instructor: yes\n"
+                             "Agent: So I leave the paint pot and the sponge on the table, and this part of the task "
+                             "is done.\n"
+                             "Agent: What should I do next to tidy the classroom?\n"))
+      << out;
+  EXPECT_THAT(out, HasSubstr("The task is learned")) << out;
+}
+
+// Where a goal decided by a person's class rule came from is kept in
+// English, as `knowledge` shows it: never the log's "clothes -> in the
+// laundry-hamper (person; 0.95)".
+TEST_F(TeachNorms, AGoalFromAPersonsClassRuleSaysWhereItCameFromInEnglish) {
+  constexpr const char* kBedroom = R"(name: bedroom
+domain: kitchen
+location: bedroom
+places:
+  - {category: bed, kind: surface}
+  - {category: laundry-hamper, kind: receptacle}
+objects:
+  - {category: sock, at: bed1}
+  - {category: t-shirt, at: bed1}
+)";
+  const std::string store = (dir_ / "bedroom.sqlite").string();
+  Process teach({APPRENTICE_BINARY, "teach", "--scenario", write("bedroom.yaml", kBedroom).string(), "--knowledge",
+                 store});
+  ASSERT_TRUE(teach.write(lines({"tidy the bedroom", "clear the bed", "clothes go in the hamper", "that is all"})));
+  ASSERT_EQ(teach.wait(), 0) << teach.out() << teach.err();
+  Process knowledge({APPRENTICE_BINARY, "knowledge", "--knowledge", store});
+  ASSERT_EQ(knowledge.wait(), 0) << knowledge.err();
+  EXPECT_THAT(knowledge.out(), HasSubstr("clothes go in the laundry hamper, as said: \"clothes go in the hamper\""))
+      << knowledge.out();
+  EXPECT_THAT(knowledge.out(), Not(HasSubstr("->"))) << knowledge.out();
+}
+
 }  // namespace
 }  // namespace apprentice

@@ -44,7 +44,7 @@ Instructor: Repeat the following tasks while an object is on the table.
 Agent: So I repeat the next steps while something is on the table.
 Agent: What should I do next to tidy the kitchen?
 Instructor: Clear an object that is on the tabel.
-Agent: I do not know the word 'tabel'. You could say, for example, "clear the table" or "that's all".
+Agent: I do not know the word "tabel". Did you mean "table"? You could say, for example, "clear the table" or "that's all".
 Agent: What should I do next to tidy the kitchen?
 Instructor: help
 Agent: I asked: What should I do next to tidy the kitchen?

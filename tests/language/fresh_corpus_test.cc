@@ -1,4 +1,4 @@
-// The fresh reply corpora (tests/language/fresh/set1 to set6): every labelled
+// The fresh reply corpora (tests/language/fresh/set1 to set7): every labelled
 // reply read with read_reply in the context its line describes, and scored
 // against its meaning (fresh_corpus.h). The figures are a measurement and
 // are printed, not asserted; what is asserted is that the scorer works:
@@ -123,6 +123,13 @@ TEST(FreshCorpus, Set5IsReadAndScored) {
 // that day's reader work, by writers who saw no code): scored as it came.
 TEST(FreshCorpus, Set6IsReadAndScored) {
   expect_read_with_every_act("set6", 347u);
+}
+
+// Set 7, the third held-out set of issue 21 (written 2026-12-06 23:05
+// UTC, before that night's reader work, by writers who saw no code):
+// scored as it came.
+TEST(FreshCorpus, Set7IsReadAndScored) {
+  expect_read_with_every_act("set7", 324u);
 }
 
 // The scorer itself, on lines written here, in set 1's bathroom.

@@ -82,6 +82,17 @@ TEST_F(ReplyActsTest, HangOnBeforeAnAnswerAboutTheThingAskedTakesNothingBack) {
             "command do (close hamper1)");
 }
 
+// "no, TOP drawer", just after the hairbrush was put in the top drawer... of
+// its look-alike: a "no" before a look-alike of the last goal's place,
+// named by a property that place has not, corrects the last goal; before
+// the same place, or another place, it is a filler.
+TEST_F(ReplyActsTest, ANoBeforeALookAlikeOfTheLastPlaceCorrectsTheLastGoal) {
+  ReplyContext c = goal_question("comb1", "hairbrush1", "drawer1");
+  EXPECT_EQ(acts(c, "no, BOTTOM drawer"), "command undo | goal (in hairbrush1 drawer2)");
+  EXPECT_EQ(acts(c, "no, the top drawer"), "goal (in comb1 drawer1)");
+  EXPECT_EQ(acts(c, "nah, the cabinet"), "goal (in comb1 cabinet1)");
+}
+
 TEST_F(ReplyActsTest, ANahBeforeAFirstAnswerIsAFillerAndSaidSo) {
   ReplyContext c = goal_question("comb1", "hairbrush1", "drawer1");
   ReplyActs read = read_acts(grounder(), world(), c, "nah, put it in the cabinet");
@@ -117,8 +128,13 @@ TEST_F(ReplyActsTest, WordsThatCarryNothingAreSkippedWhenTheRestIsWhole) {
   EXPECT_EQ(acts(c, "in the hamper lol"), "goal (in towel1 hamper1)");
   ReplyActs read = read_acts(grounder(), world(), c, "ugh, it's soaking, in the hamper");
   EXPECT_EQ(acts(c, "ugh, it's soaking, in the hamper"), "goal (in towel1 hamper1)");
-  // A slip of a name the meaning hangs on is asked back, not guessed.
+  // A slip of a name the meaning hangs on is asked back, not guessed, with
+  // the name it may be a slip of.
   EXPECT_EQ(acts(c, "in the hampr"), "unusable unknown-word hampr");
+  const Reply slip = read_acts(grounder(), world(), c, "in the hampr").acts.front();
+  ASSERT_TRUE(std::holds_alternative<Unusable>(slip));
+  EXPECT_EQ(std::get<Unusable>(slip).reason,
+            "I do not know the word \"hampr\". Did you mean \"hamper\"?");
 }
 
 TEST_F(ReplyActsTest, TheRestAndClassesReachTheThingsStillToCome) {

@@ -347,6 +347,96 @@ TEST(ReplyTask, ATaskSaidWithATimeIsNamedByTheLocation) {
   EXPECT_EQ(task_phrase("clean after the party"), "clean after the party");
 }
 
+// A request whose verb names no task ("get", "have", "end") is named by
+// the verb elsewhere in it that does, over the world's location; a word
+// for a building or a facility no thing here is called names the room.
+TEST(ReplyTask, TheVerbThatNamesATaskWinsOverOneThatNamesNone) {
+  const World& kitchen = kitchen30().world;
+  ReplyContext task = asking(Asked::kTask);
+  EXPECT_EQ(read(kitchen, task, "could you get the kitchen sorted before dinner"), "task tidy kitchen");
+  EXPECT_EQ(read(kitchen, task, "we had friends round, the kitchen needs cleaning"), "task tidy kitchen");
+  EXPECT_EQ(read(kitchen, task, "it's the end of the week, can you help me straighten up in here"),
+            "task tidy kitchen");
+  EXPECT_EQ(read(kitchen, task, "make the kitchen clean again please"), "task tidy kitchen");
+  // A verb that names a task of its own stays as said.
+  EXPECT_EQ(read(kitchen, task, "we had a party, put the groceries away"), "task put away groceries");
+  EXPECT_EQ(read(kitchen, task, "tidy up the canteen"), "task tidy kitchen");
+  // A place or a thing of the world is not the room: "the fridge" is not
+  // taken for the kitchen.
+  EXPECT_EQ(read(kitchen, task, "tidy the fridge"), "task tidy fridge");
+}
+
+// A part of the task said with a verb that names no step ("covered") gives
+// way to a later clause's step verb, whose "it" is the place named before.
+TEST(ReplyStructure, AStepVerbWinsOverADescriptionsVerb) {
+  const World& kitchen = kitchen30().world;
+  ReplyContext step = asking(Asked::kTaskStep);
+  EXPECT_EQ(read(kitchen, step, "ugh the table's covered in junk. clear it off"), read(kitchen, step, "clear the table"));
+  EXPECT_EQ(read(kitchen, step, "the counter is covered in stuff, please clear it"),
+            read(kitchen, step, "clear the counter"));
+}
+
+// Asked whether there is more to a part: "more" or "still" without a "no"
+// is more, "all clear" and "that's the lot" the end; at the task's next
+// step "still" says nothing of the kind.
+TEST(ReplyStructure, MoreStillAndTheLotAtTheEndOfAPart) {
+  const World& kitchen = kitchen30().world;
+  ReplyContext end = asking(Asked::kSubtaskEnd);
+  for (std::string_view more : {"yep there's heaps more", "there's still a mug on it", "still a couple of things"})
+    EXPECT_TRUE(std::holds_alternative<Proceed>(read_reply(grounder(), kitchen, end, more))) << more;
+  for (std::string_view done : {"all clear", "nah that's the lot", "no more"})
+    EXPECT_TRUE(std::holds_alternative<Finished>(read_reply(grounder(), kitchen, end, done))) << done;
+  EXPECT_FALSE(std::holds_alternative<Proceed>(
+      read_reply(grounder(), kitchen, asking(Asked::kTaskStep), "the fridge is still open")));
+}
+
+// At a proposed goal, an answer after words that carry nothing is still
+// yes or no; a goal said in its place is a yes when it is the one proposed
+// and a no with it as the rest otherwise; an ending is an ending. What
+// says neither is asked back, and no answer is made up.
+TEST(ReplyYesNo, FillersGoalsAndEndingsSaidInPlaceOfYesOrNo) {
+  const World& kitchen = kitchen30().world;
+  const ObjectId ketchup = in(kitchen, "ketchup1");
+  ReplyContext proposed = asking(Asked::kYesNo, ketchup);
+  proposed.proposal = Goal{{Literal{Fact{kitchen.vocabulary.in, {ketchup, in(kitchen, "fridge1")}}, true}}};
+  auto yes_no = [&](std::string_view text) -> std::optional<YesNo> {
+    Reply r = read_reply(grounder(), kitchen, proposed, text);
+    if (const auto* y = std::get_if<YesNo>(&r)) return *y;
+    return std::nullopt;
+  };
+  for (std::string_view yes : {"lol yes", "mmm yeah", "uh huh", "ugh, yes, go on"}) {
+    auto answer = yes_no(yes);
+    ASSERT_TRUE(answer) << yes;
+    EXPECT_TRUE(answer->yes) << yes;
+  }
+  auto no = yes_no("hmm nope. the pantry");
+  ASSERT_TRUE(no);
+  EXPECT_FALSE(no->yes);
+  EXPECT_EQ(no->rest, "the pantry");
+  auto instead = yes_no("hold on, the ketchup goes in the pantry");
+  ASSERT_TRUE(instead);
+  EXPECT_FALSE(instead->yes);
+  EXPECT_EQ(instead->rest, "the ketchup goes in the pantry");
+  auto same = yes_no("wait, the ketchup goes in the fridge");
+  ASSERT_TRUE(same);
+  EXPECT_TRUE(same->yes);
+  EXPECT_TRUE(std::holds_alternative<Finished>(read_reply(grounder(), kitchen, proposed, "I'm done")));
+  // "ok" and "right" are fillers as well as yeses: not a yes before an
+  // ending or another goal.
+  EXPECT_TRUE(std::holds_alternative<Finished>(read_reply(grounder(), kitchen, proposed, "ok I'm done")));
+  auto right = yes_no("right, the ketchup goes in the pantry");
+  ASSERT_TRUE(right);
+  EXPECT_FALSE(right->yes);
+  auto ok = yes_no("ok, it goes in the fridge");
+  ASSERT_TRUE(ok);
+  EXPECT_TRUE(ok->yes);
+  for (std::string_view unsure : {"not sure", "I don't know", "the mustard goes in the pantry"})
+    EXPECT_TRUE(std::holds_alternative<Unusable>(read_reply(grounder(), kitchen, proposed, unsure))) << unsure;
+  // Without a proposal (a yes/no about something else) a goal is no answer.
+  EXPECT_TRUE(std::holds_alternative<Unusable>(
+      read_reply(grounder(), kitchen, asking(Asked::kYesNo, ketchup), "the ketchup goes in the pantry")));
+}
+
 // --- References and reasons (issue 9) --------------------------------------------------
 
 TEST(ReplyReferences, PronounsPartialNamesAndDoors) {

@@ -322,6 +322,20 @@ test('an "Is there more?" question offers "There is more" and "That\'s all", eac
   });
 });
 
+test('an ending in the middle of a part is asked back as a yes/no, with Yes and No, and "yes" leaves the rest', async () => {
+  await withServer([], async (server, client) => {
+    const session = await client.start('tidy-kitchen');
+    const question = await session.teach(['tidy the kitchen', 'clear the table', "I'm done"]);
+    assert.equal(question.kind, 'confirm');
+    assert.match(question.text, /^There are still \d+ things on the table: .* Shall I leave them\?$/);
+    assert.deepEqual(question.choices, [{ label: 'Yes', reply: 'yes' }, { label: 'No', reply: 'no' }]);
+    assert.equal((await session.reply('yes', question.seq)).status, 200);
+    const next = await session.question(question.seq);
+    assert.equal(next.text, 'What should I do next to tidy the kitchen?');
+    session.close();
+  });
+});
+
 test('--condition and --llm as for teach: the LLM\'s goal is offered as a yes/no, and the log names the condition', async () => {
   // Two recorded statements that agree, for the first plate on the table.
   const corpus = path.join(scratch, 'plate-goals.jsonl');
