@@ -137,7 +137,12 @@ TaskLearningAgent::Session::Flow<TaskLearningAgent::Session::Heard> TaskLearning
     for (const language::Reply& act : read.acts)
       if (const auto* command = std::get_if<language::Command>(&act); command && command->kind != language::Command::Kind::kUndo)
         if (auto s = obey(*command, asked, context); !s) return tl::unexpected(s.error());
-    if (!answer) continue;
+    if (!answer) {
+      // "shut the cupboard, then do the piano": the parts said after a
+      // one-off action answer the question that comes again.
+      queued_steps_.insert(queued_steps_.end(), read.then.begin(), read.then.end());
+      continue;
+    }
     language::Reply reply = std::move(*answer);
     if (!queued_step) dialogue_->count_reply(asked, *text);
     // A reply the question's own reading takes whole ("same as the hammer,

@@ -226,7 +226,7 @@ bool is_subordinator(std::string_view w) {
 std::optional<std::vector<Action>> door_action(const Grounder& grounder, const World& world,
                                                const ReplyContext& context, const Words& said) {
   Words words = without_interjections(said);
-  while (!words.empty() && is_one_of(words.front(), {"can", "could", "would", "you", "also", "just", "then"}))
+  while (!words.empty() && is_one_of(words.front(), {"can", "could", "would", "you", "also", "just", "then", "now", "and"}))
     words.erase(words.begin());
   if (words.empty() || !is_one_of(words.front(), {"close", "shut", "open"})) return std::nullopt;
   const bool open = words.front() == "open";

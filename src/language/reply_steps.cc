@@ -38,6 +38,21 @@ std::vector<Words> step_parts(std::string_view text) {
   return parts;
 }
 
+// One part cut where "and" comes before a determiner: "clear the counter
+// and the trolley" is two parts, "clear the counter" and "the trolley"
+// (which takes the first part's verb); "empty the red and yellow buckets"
+// is not cut. Each part must then read as a step, or the reply is read
+// whole.
+std::vector<Words> parts_at_and(const std::vector<Words>& parts) {
+  if (parts.size() != 1) return parts;
+  const Words& part = parts.front();
+  for (std::size_t i = 1; i + 1 < part.size(); ++i)
+    if (part[i] == "and" && is_determiner(part[i + 1]))
+      return {Words(part.begin(), part.begin() + static_cast<std::ptrdiff_t>(i)),
+              Words(part.begin() + static_cast<std::ptrdiff_t>(i + 1), part.end())};
+  return parts;
+}
+
 // "counter next", "the folding table": a place of the world said with no
 // verb and nothing said of it ("the table's clear", "the bag still has
 // stuff in it" say something).
@@ -66,7 +81,7 @@ std::optional<std::pair<Reply, std::vector<std::string>>> several_steps(const Gr
                                                                       const ReplyContext& context,
                                                                       std::string_view text) {
   if (context.asked != Asked::kTaskStep && context.asked != Asked::kSubtaskEnd) return std::nullopt;
-  std::vector<Words> parts = step_parts(text);
+  std::vector<Words> parts = parts_at_and(step_parts(text));
   if (parts.size() < 2 || parts.size() > 4) return std::nullopt;
   std::optional<Reply> first;
   std::vector<std::string> rest;
@@ -75,7 +90,17 @@ std::optional<std::pair<Reply, std::vector<std::string>>> several_steps(const Gr
   ReplyContext at = context;
   for (std::size_t i = 0; i < parts.size(); ++i) {
     Words part = without_interjections(parts[i]);
+    // "ok now shut the cupboard": "now" was not first until "ok" went.
+    while (!part.empty() && is_one_of(part.front(), {"and", "then", "now"})) part.erase(part.begin());
     if (part.empty()) return std::nullopt;
+    // "ok now shut the cupboard, then do the piano": a one-off door action
+    // first, done now, and the parts after it read in turn.
+    if (i == 0)
+      if (auto actions = door_action(grounder, world, at, part)) {
+        first = Command{Command::Kind::kDo, "", {}, *actions};
+        at.asked = Asked::kTaskStep;
+        continue;
+      }
     Reply reply = read_reply(grounder, world, at, quoted_words(part));
     if (!usable(reply) && !verb.empty() && !starts_with_verb(part, verb)) {
       Words with = split_words(verb);
@@ -115,7 +140,10 @@ std::optional<std::pair<Reply, std::vector<std::string>>> several_steps(const Gr
     // next step.
     at.asked = Asked::kTaskStep;
   }
-  if (!names_a_part) return std::nullopt;
+  // "close both bins and then we're finished": a one-off action first
+  // stands with an ending after it too.
+  const bool action_first = first && std::holds_alternative<Command>(*first);
+  if (!names_a_part && !action_first) return std::nullopt;
   // "the piano's covered in stuff. clear it off": a first part whose verb
   // names no step is a description when the reply read whole names a
   // part with a step verb.

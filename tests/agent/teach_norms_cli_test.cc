@@ -210,5 +210,22 @@ objects:
   EXPECT_THAT(knowledge.out(), Not(HasSubstr("->"))) << knowledge.out();
 }
 
+// A one-off action said before the next part ("open the cupboard, then
+// clear the table") is done, and the part after it taken as the answer:
+// the question is not asked again.
+TEST_F(TeachNorms, AOneOffActionBeforeAPartIsDoneAndThePartTaken) {
+  Process teach({APPRENTICE_BINARY, "teach", "--scenario", write("art-room.yaml", kArtRoom).string()});
+  ASSERT_TRUE(teach.write(lines({"tidy the classroom", "ok now open the cupboard, then clear the table", "the sink",
+                                 "the cupboard", "the sink", "that is all"})));
+  EXPECT_EQ(teach.wait(), 0) << teach.out() << teach.err();
+  const std::string& out = teach.out();
+  EXPECT_THAT(out, HasSubstr("Instructor: ok now open the cupboard, then clear the table\n")) << out;
+  EXPECT_THAT(out, HasSubstr("I opened the cupboard.")) << out;
+  EXPECT_THAT(out, HasSubstr("Agent: So I clear what is on the table, one thing at a time.\n")) << out;
+  EXPECT_EQ(out.find("What should I do first to tidy the classroom?", out.find("then clear the table")),
+            std::string::npos)
+      << out;
+}
+
 }  // namespace
 }  // namespace apprentice

@@ -270,6 +270,12 @@ TEST_F(ReplyActsTest, SeveralStepsInOneReplyAreReadInTurn) {
   // "that's it, we're done" is one ending; one step is one part.
   EXPECT_TRUE(read_acts(grounder(), world(), step, "that's it, we're done").then.empty());
   EXPECT_TRUE(read_acts(grounder(), world(), step, "clear the counter").then.empty());
+  // Two places joined by "and" under one verb are two parts; "and" before
+  // a thing of a place is no cut.
+  read = read_acts(grounder(), world(), step, "clear the counter and the floor");
+  EXPECT_EQ(format_reply(world(), read.acts.front()), "subtask clear on counter1");
+  EXPECT_EQ(read.then, std::vector<std::string>{"clear the floor"});
+  EXPECT_TRUE(read_acts(grounder(), world(), step, "put the towel and the socks away").then.empty());
   ReplyContext end;
   end.asked = Asked::kSubtaskEnd;
   read = read_acts(grounder(), world(), end, "that's it for the counter, now clear the floor");
