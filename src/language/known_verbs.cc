@@ -219,7 +219,9 @@ std::optional<VerbTaken> known_step_verb(const Lexicon& lexicon, std::string_vie
   return nearest(lexicon, verb, particle, kStepVerbs, place);
 }
 
-bool is_step_verb(std::string_view verb) { return is_known(verb, kStepVerbs); }
+bool is_step_verb(std::string_view verb, std::span<const std::string> taught) {
+  return is_known(verb, kStepVerbs) || std::find(taught.begin(), taught.end(), verb) != taught.end();
+}
 
 std::string clearing_verb(ObjectKind place) { return place == ObjectKind::kSurface ? "clear" : "empty"; }
 

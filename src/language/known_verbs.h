@@ -55,8 +55,8 @@ std::optional<VerbTaken> known_step_verb(const Lexicon& lexicon, std::string_vie
                                          ObjectKind place, std::span<const std::string> taught);
 
 // Whether a verb is one of the agent's own step verbs (clear, empty,
-// store, unload).
-bool is_step_verb(std::string_view verb);
+// store, unload) or one of `taught`, the verbs of the parts taught so far.
+bool is_step_verb(std::string_view verb, std::span<const std::string> taught = {});
 
 // English's reversative prefixes ("de", "un", "dis"): a verb WordNet
 // lacks ("declutter") stands for the same stem with another of them that

@@ -113,7 +113,7 @@ ReplyActs read(const Grounder& grounder, const World& world, const ReplyContext&
     out.acts.push_back(std::move(whole));
     return out;
   }
-  if (auto steps = several_steps(grounder, world, context, text)) {
+  if (auto steps = several_steps(grounder, world, context, text, whole)) {
     out.acts.push_back(std::move(steps->first));
     out.then = std::move(steps->second);
     return out;

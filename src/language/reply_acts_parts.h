@@ -81,10 +81,10 @@ std::string joined(const std::vector<const Segment*>& parts);
 
 // "clear the counter, then the table": the first step's reading and the
 // further steps as said; nullopt when the reply is one step, or a part does
-// not read.
+// not read. `whole`: the reply read whole at the question (read_reply).
 std::optional<std::pair<Reply, std::vector<std::string>>> several_steps(const Grounder& grounder, const World& world,
                                                                       const ReplyContext& context,
-                                                                      std::string_view text);
+                                                                      std::string_view text, const Reply& whole);
 
 // --- read_acts (reply_acts.cc) -------------------------------------------
 

@@ -79,7 +79,7 @@ bool starts_with_verb(const Words& part, const std::string& verb) {
 // one step, or a part does not read.
 std::optional<std::pair<Reply, std::vector<std::string>>> several_steps(const Grounder& grounder, const World& world,
                                                                       const ReplyContext& context,
-                                                                      std::string_view text) {
+                                                                      std::string_view text, const Reply& whole) {
   if (context.asked != Asked::kTaskStep && context.asked != Asked::kSubtaskEnd) return std::nullopt;
   std::vector<Words> parts = parts_at_and(step_parts(text));
   if (parts.size() < 2 || parts.size() > 4) return std::nullopt;
@@ -148,11 +148,9 @@ std::optional<std::pair<Reply, std::vector<std::string>>> several_steps(const Gr
   // names no step is a description when the reply read whole names a
   // part with a step verb.
   if (const auto* named = std::get_if<SubtaskNamed>(&*first)) {
-    const std::vector<std::string>& taught = context.taught_subtasks;
-    const bool known = is_step_verb(named->verb) || std::find(taught.begin(), taught.end(), named->verb) != taught.end();
-    Reply whole = read_reply(grounder, world, context, text);
     const auto* whole_part = std::get_if<SubtaskNamed>(&whole);
-    if (!known && whole_part != nullptr && is_step_verb(whole_part->verb)) return std::nullopt;
+    if (!is_step_verb(named->verb, context.taught_subtasks) && whole_part != nullptr && is_step_verb(whole_part->verb))
+      return std::nullopt;
   }
   return std::make_pair(*first, rest);
 }

@@ -225,13 +225,9 @@ class StructureReader {
     // "the piano's covered in stuff. clear it off": "it" in a later clause
     // is the place an earlier one named.
     if (clauses.size() > 1) {
-      const auto problem = problem_;
-      const auto ambiguous = ambiguous_;
-      const bool item_named = item_named_;
+      const Findings before = findings();
       if (auto named = first_places(clauses)) named_before_ = named->objects;
-      problem_ = problem;
-      ambiguous_ = ambiguous;
-      item_named_ = item_named;
+      restore(before);
     }
     for (std::size_t i = 0; i < clauses.size(); ++i) {
       if (auto subtask = read_subtask(clauses[i])) {
@@ -469,22 +465,31 @@ class StructureReader {
   bool names_a_step(const Reply& reply) const {
     const auto* part = std::get_if<SubtaskNamed>(&reply);
     if (part == nullptr) return true;
-    const std::vector<std::string>& taught = in_.context.taught_subtasks;
-    return is_step_verb(part->verb) || std::find(taught.begin(), taught.end(), part->verb) != taught.end();
+    return is_step_verb(part->verb, in_.context.taught_subtasks);
   }
 
   // The first part said with a known step verb in clauses[from...]; what
   // the reading of the others found wrong is forgotten.
   std::optional<Reply> later_step(const std::vector<Clause>& clauses, std::size_t from) {
-    const auto problem = problem_;
-    const auto ambiguous = ambiguous_;
-    const bool item_named = item_named_;
+    const Findings before = findings();
     for (std::size_t k = from; k < clauses.size(); ++k)
       if (auto subtask = read_subtask(clauses[k]); subtask && names_a_step(*subtask)) return subtask;
-    problem_ = problem;
-    ambiguous_ = ambiguous;
-    item_named_ = item_named;
+    restore(before);
     return std::nullopt;
+  }
+
+  // What reading clauses found wrong so far, to look ahead and forget what
+  // the look found.
+  struct Findings {
+    std::optional<Problem> problem;
+    std::optional<Ambiguous> ambiguous;
+    bool item_named = false;
+  };
+  Findings findings() const { return {problem_, ambiguous_, item_named_}; }
+  void restore(const Findings& before) {
+    problem_ = before.problem;
+    ambiguous_ = before.ambiguous;
+    item_named_ = before.item_named;
   }
 
   std::optional<Reply> read_subtask(const Clause& c) {

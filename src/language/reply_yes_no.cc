@@ -99,6 +99,15 @@ Words from_the_answer(const Words& said, const Lexicon& lexicon) {
   return said;
 }
 
+// Whether a goal said holds only what was proposed ("sure, same place",
+// "the ketchup goes in the fridge" to the fridge proposed).
+bool holds_only_the_proposal(const GoalGiven& given, const Goal& proposal) {
+  const std::vector<Literal>& proposed = proposal.literals;
+  return given.others.empty() && std::all_of(given.goal.literals.begin(), given.goal.literals.end(), [&](const Literal& l) {
+           return std::find(proposed.begin(), proposed.end(), l) != proposed.end();
+         });
+}
+
 // A reply to a proposed goal that says, in place of yes or no, where the
 // thing goes ("hang on, the jumper goes in the wardrobe") or that the part
 // is over ("I'm done"): read as at the question where the thing goes,
@@ -120,12 +129,7 @@ std::optional<Reply> said_instead_of_yes_or_no(const ReplyInput& in, Words words
   if (given == nullptr) return std::nullopt;
   const std::vector<ObjectId> mentioned = given->goal.objects();
   if (std::find(mentioned.begin(), mentioned.end(), *in.context.object) == mentioned.end()) return std::nullopt;
-  const std::vector<Literal>& proposed = in.context.proposal->literals;
-  const bool as_proposed = given->others.empty() &&
-                           std::all_of(given->goal.literals.begin(), given->goal.literals.end(), [&](const Literal& l) {
-                             return std::find(proposed.begin(), proposed.end(), l) != proposed.end();
-                           });
-  if (as_proposed) return YesNo{true, ""};
+  if (holds_only_the_proposal(*given, *in.context.proposal)) return YesNo{true, ""};
   return YesNo{false, text};
 }
 
@@ -176,13 +180,8 @@ Reply read_yes_no(const ReplyInput& in) {
     ReplyContext at = in.context;
     at.asked = Asked::kGoal;
     Reply said = read_reply(in.grounder, in.world, at, reply.rest);
-    if (const auto* given = std::get_if<GoalGiven>(&said); given && given->others.empty()) {
-      const std::vector<Literal>& proposed = in.context.proposal->literals;
-      bool within = std::all_of(given->goal.literals.begin(), given->goal.literals.end(), [&](const Literal& l) {
-        return std::find(proposed.begin(), proposed.end(), l) != proposed.end();
-      });
-      if (within) reply.rest.clear();
-    }
+    if (const auto* given = std::get_if<GoalGiven>(&said); given && holds_only_the_proposal(*given, *in.context.proposal))
+      reply.rest.clear();
   }
   return reply;
 }
