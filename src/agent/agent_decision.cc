@@ -155,17 +155,21 @@ TaskLearningAgent::Session::answer_to_proposal(const Question& asked, ObjectId o
   if (const auto* ended = std::get_if<language::Finished>(&reply))
     return ProposalAnswer{false, std::nullopt, *ended, text};
   if (const auto* yes_no = std::get_if<language::YesNo>(&reply)) {
-    if (yes_no->yes) begin_lesson(text);
-    if (yes_no->yes || yes_no->rest.empty()) return ProposalAnswer{yes_no->yes, std::nullopt};
-    // "no, it goes in the bottom drawer": the rest is where it goes instead,
-    // read as the answer to where it goes. What does not say where it goes
-    // is heard at the next question.
-    language::Reply where = agent_.understanding_.reply(w, context(language::Asked::kGoal, object), yes_no->rest);
-    if (!about_it(where)) {
-      queued_replies_.push_back(yes_no->rest);
+    // "no, it goes in the bottom drawer", "yes, and close it", "yes but
+    // leave the door open": the rest is where it goes, read as the answer
+    // to where it goes. What does not say where it goes is heard at the
+    // next question after a no.
+    std::optional<language::GoalGiven> where = agent_.understanding_.goal_in_rest(w, at, *yes_no);
+    if (where && !about_it(language::Reply(*where))) where.reset();
+    if (!where) {
+      if (yes_no->yes) {
+        begin_lesson(text);
+        return ProposalAnswer{true, std::nullopt};
+      }
+      if (!yes_no->rest.empty()) queued_replies_.push_back(yes_no->rest);
       return ProposalAnswer{false, std::nullopt};
     }
-    reply = std::move(where);
+    reply = std::move(*where);
   }
   bool say_norm = false;
   const language::GoalGiven given = with_doors_closed(object, std::get<language::GoalGiven>(reply), say_norm);

@@ -39,6 +39,9 @@ language::ReplyContext TaskLearningAgent::Session::context(language::Asked asked
   c.asked = asked;
   c.object = object;
   c.recent_place = recent_place_;
+  // What "the floor next" and "same with the bucket" do: the verbs of the
+  // parts taught so far.
+  for (const LearnedSubtask& part : progress_.task.subtasks) c.taught_subtasks.push_back(part.verb);
   // What "same again", "same as the hammer", "the rest" and a class word
   // refer to (language/reply.h).
   const World& w = world();

@@ -80,9 +80,14 @@ std::optional<language::RuleReading> TaskLearningAgent::Session::rule_in_reply(
   if (other_name_of_thing(text, reply, context)) return std::nullopt;
   auto rule = language::read_rule(world(), agent_.understanding_.lexicon(), text, context.object);
   if (!rule || !rule->has_class_clause()) return std::nullopt;
+  const auto* unusable = std::get_if<language::Unusable>(&reply);
+  const bool understood = unusable == nullptr;
   // A class that is only the world's kinds named in the plural ("plates and
-  // forks go in the dishwasher") is the reply's ordinary reading; so is "an
-  // object" ("Repeat the following tasks while an object is on the table").
+  // forks go in the dishwasher") is the reply's ordinary reading, where it
+  // has one; where it has none ("pots go on the right shelf", said when
+  // asked for a part of the task), it says where every such thing goes. So
+  // is "an object" ("Repeat the following tasks while an object is on the
+  // table").
   // A word that the reference resolves to one kind only through WordNet
   // ("clothes" to the dress: not a word of its name) is a class all the
   // same; "plates" for the plate is that kind.
@@ -91,7 +96,7 @@ std::optional<language::RuleReading> TaskLearningAgent::Session::rule_in_reply(
     if (c.phrase.empty() || (is_general_head(c.head) && c.modifiers.empty())) return false;
     if (is_general_head(c.head)) return true;
     const std::optional<std::string> kind = agent_.understanding_.category(world(), c.phrase);
-    if (!kind) return true;
+    if (!kind || (!understood && c.phrase != c.head)) return true;
     std::string name = *kind;
     std::replace(name.begin(), name.end(), '-', ' ');
     const std::vector<std::string> words = split_words(name);
@@ -111,9 +116,7 @@ std::optional<language::RuleReading> TaskLearningAgent::Session::rule_in_reply(
   // An unusable reply that asks what to do with the things at a place
   // ("start with the stuff on the floor": "What should I do with the things
   // on the floor?") is understood as far as it goes: a step, not a rule.
-  const auto* unusable = std::get_if<language::Unusable>(&reply);
   if (unusable != nullptr && !unusable->topic_places.empty()) return std::nullopt;
-  const bool understood = unusable == nullptr;
   if (understood && class_clauses < 2 && !rest) return std::nullopt;
   return rule;
 }

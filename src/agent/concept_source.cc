@@ -96,10 +96,17 @@ std::vector<std::pair<language::SynsetOffset, double>> LexicalConcepts::senses(c
   const language::WordNet* wordnet = lexicon_->wordnet();
   if (wordnet == nullptr) return out;
   std::vector<language::SynsetOffset> offsets = wordnet->noun_senses(lemma);
+  auto names_a_physical_thing = [&](language::SynsetOffset o) {
+    auto s = wordnet->synset(o);
+    return s && physical_rank(s->lexicographer_file) > 0;
+  };
   // Else by the base form of its last word ("potato chips" -> "potato
   // chip"): WordNet's morphology of a whole collocation tries every word
-  // and is slow.
-  if (offsets.empty()) {
+  // and is slow. A plural WordNet knows only as something else also gets
+  // its singular's senses: "shoes" is a situation ("in her shoes") as a
+  // word of its own, and footwear as a shoe; "clothes", apparel, keeps
+  // its own.
+  if (offsets.empty() || std::none_of(offsets.begin(), offsets.end(), names_a_physical_thing)) {
     const std::size_t space = lemma.rfind(' ');
     const std::string before = space == std::string::npos ? "" : lemma.substr(0, space + 1);
     for (const std::string& base : wordnet->noun_base_forms(space == std::string::npos ? lemma : lemma.substr(space + 1)))
@@ -215,13 +222,20 @@ std::vector<ConceptClass> LexicalConcepts::classes_named(std::string_view words)
   std::vector<ConceptClass> out;
   std::vector<std::string> said = name_words(words, [this](std::string_view w) { return known_word(w); });
   const language::WordNet* wordnet = lexicon_->wordnet();
-  for (const auto& [sense, weight] : senses(join(said, " "))) {
+  const std::string phrase = join(said, " ");
+  // The senses of the words as said, not of a singular they are the plural
+  // of: "clothes" is a word of its own, "pots" the plural of "pot".
+  const std::vector<language::SynsetOffset> as_said =
+      wordnet != nullptr ? wordnet->noun_senses(phrase) : std::vector<language::SynsetOffset>{};
+  for (const auto& [sense, weight] : senses(phrase)) {
     out.push_back(ConceptClass{concept_id(sense), class_name(sense), weight, class_size(sense), 0});
     // A word for a class that holds almost no kinds of its own names its
     // parent's things ("clothes" is WordNet's apparel, beside the clothing
     // that garments are; "dinnerware" beside tableware): the parent, one
-    // step up.
+    // step up. Only a collective word does ("clothes", "dinnerware"), not
+    // the plural of a count noun with few kinds: "pots" are no containers.
     if (class_size(sense) > kCollectiveSize || wordnet == nullptr) continue;
+    if (std::find(as_said.begin(), as_said.end(), sense) == as_said.end()) continue;
     if (auto s = wordnet->synset(sense))
       for (language::SynsetOffset parent : s->hypernyms)
         out.push_back(ConceptClass{concept_id(parent), class_name(parent), weight, class_size(parent), 1});

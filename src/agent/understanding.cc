@@ -117,6 +117,11 @@ language::ReplyActs Understanding::acts(const World& world, const language::Repl
   return language::read_acts(impl_->grounder, world, context, text);
 }
 
+std::optional<language::GoalGiven> Understanding::goal_in_rest(const World& world, const language::ReplyContext& context,
+                                                             const language::YesNo& answer) const {
+  return language::goal_in_rest(impl_->grounder, world, context, answer);
+}
+
 std::vector<std::string> Understanding::example_replies(const World& world,
                                                         const language::ReplyContext& context) const {
   return language::example_replies(world, context);

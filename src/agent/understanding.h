@@ -67,6 +67,10 @@ class Understanding {
   // The same reply as the acts it holds, in order (language::read_acts):
   // an undo and the answer after it, one-off actions, the teacher's questions.
   language::ReplyActs acts(const World& world, const language::ReplyContext& context, std::string_view text) const;
+  // What the rest of a yes or no at a proposed goal says of the thing's
+  // goal (language::goal_in_rest).
+  std::optional<language::GoalGiven> goal_in_rest(const World& world, const language::ReplyContext& context,
+                                                  const language::YesNo& answer) const;
   // Replies that would work at that question, for help and after a reply
   // that could not be used.
   std::vector<std::string> example_replies(const World& world, const language::ReplyContext& context) const;

@@ -24,7 +24,12 @@ std::vector<std::string> name_words(std::string_view name) {
     if (c == '\'') continue;  // "Rubik's" -> "rubiks"
     cleaned += std::isalnum(u) || u >= 0x80 ? static_cast<char>(std::tolower(u)) : ' ';
   }
-  return split_words(cleaned);
+  std::vector<std::string> words = split_words(cleaned);
+  // "The Los Angeles Times newspaper": the agent says "the" before a
+  // thing's name itself.
+  if (words.size() > 1 && (words.front() == "the" || words.front() == "a" || words.front() == "an"))
+    words.erase(words.begin());
+  return words;
 }
 
 bool is_number(std::string_view word) {

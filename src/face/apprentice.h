@@ -295,11 +295,16 @@ struct AskedQuestion {
 // How a reply reads at a question.
 struct ReplyReading {
   std::string reply, asked;
-  std::string meaning;   // "goal (and (in ketchup1 fridge1) (closed fridge1))", "unusable", ...
-  bool usable = false;   // neither unusable nor ambiguous
+  // The reply's acts as the agent reads them, in order, joined by " ; ":
+  // "goal (and (in ketchup1 fridge1) (closed fridge1))", "undo ; goal ...",
+  // "unusable", ...
+  std::string meaning;
+  bool usable = false;   // no act is unusable or ambiguous
   std::string reason;    // unusable: why, in English
   std::string question;  // ambiguous: what the agent would ask
   std::vector<std::string> examples;  // unusable: replies that would work
+  std::vector<std::string> notes;     // how words were taken: "I took "nah" as a no."
+  std::vector<std::string> then;      // parts said for after this one: "the bucket"
   std::string text;      // what `interpret --asked` prints
   std::string json;      // what `interpret --asked --json` prints
 };

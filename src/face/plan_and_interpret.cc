@@ -201,11 +201,15 @@ void render(ReplyReading& reading) {
   if (!reading.reason.empty()) j["reason"] = reading.reason;
   if (!reading.question.empty()) j["question"] = reading.question;
   if (!reading.examples.empty()) j["examples"] = reading.examples;
+  if (!reading.notes.empty()) j["notes"] = reading.notes;
+  if (!reading.then.empty()) j["then"] = reading.then;
   reading.json = dump_json(j) + "\n";
   std::string text = "reply: " + reading.reply + "\nasked: " + reading.asked + "\nmeaning: " + reading.meaning + "\n";
   if (!reading.reason.empty()) text += "reason: " + reading.reason + "\n";
   if (!reading.question.empty()) text += "question: " + reading.question + "\n";
   for (const std::string& e : reading.examples) text += "example: " + e + "\n";
+  for (const std::string& n : reading.notes) text += "note: " + n + "\n";
+  for (const std::string& t : reading.then) text += "then: " + t + "\n";
   reading.text = std::move(text);
 }
 
@@ -291,17 +295,28 @@ Result<ReplyReading> interpret_reply(const Scenario& scenario, std::string_view 
     context.choices.push_back(*choice);
   }
   language::Grounder grounder(language::Lexicon::open_default());
-  language::Reply read = language::read_reply(grounder, world, context, reply);
+  // The agent's own reading: the reply's dialogue acts (an undo, the
+  // answer, a one-off action, ...), not the question's reader alone.
+  const language::ReplyActs read = language::read_acts(grounder, world, context, reply);
   ReplyReading reading;
   reading.reply = std::string(reply);
   reading.asked = asked.kind;
-  reading.meaning = language::format_reply(world, read);
-  if (const auto* unusable = std::get_if<language::Unusable>(&read)) {
-    reading.reason = unusable->reason;
-    reading.examples = unusable->examples;
+  reading.usable = true;
+  std::vector<std::string> meanings;
+  for (const language::Reply& act : read.acts) {
+    meanings.push_back(language::format_reply(world, act));
+    if (const auto* unusable = std::get_if<language::Unusable>(&act); unusable && reading.reason.empty()) {
+      reading.reason = unusable->reason;
+      reading.examples = unusable->examples;
+    }
+    if (const auto* ambiguous = std::get_if<language::Ambiguous>(&act); ambiguous && reading.question.empty())
+      reading.question = ambiguous->question;
+    reading.usable = reading.usable && !std::holds_alternative<language::Unusable>(act) &&
+                     !std::holds_alternative<language::Ambiguous>(act);
   }
-  if (const auto* ambiguous = std::get_if<language::Ambiguous>(&read)) reading.question = ambiguous->question;
-  reading.usable = !std::holds_alternative<language::Unusable>(read) && !std::holds_alternative<language::Ambiguous>(read);
+  reading.meaning = join(meanings, " ; ");
+  reading.notes = read.notes;
+  reading.then = read.then;
   render(reading);
   return reading;
 }

@@ -106,7 +106,7 @@ bool ClauseEvidence::sure() const { return wordnet || word_in_name; }
 
 bool ClauseEvidence::only_related() const {
   return said_a_class && wordnet_knows_both && !sure() && !wordnet_parent && !modifiers_in_name &&
-         ancestor_cosine < kNearClassCosine;
+         (ancestor_cosine < kNearClassCosine || word_cosine < kFitCosine);
 }
 
 bool ClauseEvidence::fits() const {

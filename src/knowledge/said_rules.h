@@ -53,7 +53,9 @@ struct ClauseEvidence {
   // Only the vectors put the thing in the class, against WordNet's silence
   // where it knows both words, and none of the classes WordNet puts the
   // thing in is named near the class word (ancestor_cosine below
-  // kNearClassCosine): a guess the person is asked to confirm.
+  // kNearClassCosine), or one is but the thing's own name is not
+  // (word_cosine below kFitCosine: "tools" and a glove's "sports
+  // equipment"): a guess the person is asked to confirm.
   bool only_related() const;
   // Whether anything says the thing is in the clause's class at all: WordNet
   // (or the parent of a collective word), the class's word or every

@@ -225,6 +225,15 @@ ReplyActs read_acts(const Grounder& grounder, const World& world, const ReplyCon
 // yeses of Table 3 with it too.
 std::optional<bool> yes_or_no(std::string_view text);
 
+// What the rest of a yes or no at a proposed goal says of the thing's goal,
+// read as the answer to where it goes: "no, it goes in the pantry" -> the
+// pantry; "yes, and close it" -> the place proposed, closed; "yes but leave
+// the door open" -> the place proposed, open. nullopt when the rest says
+// no goal, or only the one proposed ("yes, same place"). `context` is the
+// yes/no question's, with `object` and `proposal`.
+std::optional<GoalGiven> goal_in_rest(const Grounder& grounder, const World& world, const ReplyContext& context,
+                                      const YesNo& answer);
+
 // Two or more replies that would work at this question, for help and after
 // an unusable reply: "the ketchup goes in the fridge".
 std::vector<std::string> example_replies(const World& world, const ReplyContext& context);

@@ -57,6 +57,29 @@ bool says_what_was_wrong(const Words& said) {
   return has(words, {"not", "where"});
 }
 
+// The places a reply says a thing does not go: "the bin, not the
+// recycling", "in the cabinet and not in the drawer". Each segment that
+// begins with "not" names them by the reference's own tiers, partial names
+// and properties included ("not the top one" among drawers is not taken).
+std::vector<ObjectId> places_said_not(const Grounder& grounder, const World& world, std::string_view text) {
+  std::vector<ObjectId> out;
+  ReferenceContext context{world, grounder.lexicon(), std::nullopt};
+  context.partial_names = true;
+  for (const Segment& s : segments(text)) {
+    Words words = without_interjections(s.words);
+    if (!words.empty() && words.front() == "and") words.erase(words.begin());
+    if (words.empty() || words.front() != "not") continue;
+    Words phrase;
+    for (std::size_t i = 1; i < words.size(); ++i)
+      if (!is_determiner(words[i]) && !is_one_of(words[i], {"in", "on", "into", "onto", "inside"})) phrase.push_back(words[i]);
+    if (phrase.empty()) continue;
+    const auto candidates = candidates_for(NounPhrase{"", phrase}, Role::kPlace, context);
+    if (const auto* found = std::get_if<CandidateSet>(&candidates))
+      out.insert(out.end(), found->objects.begin(), found->objects.end());
+  }
+  return out;
+}
+
 // A close action for `place`, grounded; nullopt when it cannot be closed.
 std::optional<Action> closing(const Grounder& grounder, const World& world, ObjectId place) {
   ActionCommand command;
@@ -287,6 +310,7 @@ ReplyActs read(const Grounder& grounder, const World& world, const ReplyContext&
     answer_text = join(kept, ", ");
     out.after_undo = answer_text;
   }
+  const std::vector<ObjectId> not_there = places_said_not(grounder, world, answer_text);
   // Remarks ("it's soaking", "kids") are dropped when the rest is whole.
   Reply reply = Unusable{};
   bool answered = !trim(answer_text).empty();
@@ -308,6 +332,13 @@ ReplyActs read(const Grounder& grounder, const World& world, const ReplyContext&
       }
     }
   }
+  // "it goes in the bin, not in the recycling bin", where the recycling
+  // bin is the only bin: the place the answer was read as is the one the
+  // person ruled out; asked back, never acted on.
+  if (const std::optional<ObjectId> to = destination(world, reply);
+      to && std::find(not_there.begin(), not_there.end(), *to) != not_there.end())
+    reply = Unusable{"You said not " + spoken_name(world, *to) + ", but that is where I took it to go. Which place do you mean?",
+                     example_replies(world, at), std::nullopt, {}};
   // A door action about the goal's own place is part of the goal.
   std::optional<ObjectId> goes_to = destination(world, reply);
   for (std::size_t i = 0; i < doors.size(); ++i) {

@@ -19,7 +19,7 @@ struct HouseholdVerb {
 };
 
 // The verbs people use for moving things around a house, by what they do.
-constexpr std::array<HouseholdVerb, 72> kHouseholdVerbs{{
+constexpr std::array<HouseholdVerb, 73> kHouseholdVerbs{{
     {"put", VerbClass::kPlace},      {"place", VerbClass::kPlace},    {"set", VerbClass::kPlace},
     {"store", VerbClass::kPlace},    {"keep", VerbClass::kPlace},     {"leave", VerbClass::kPlace},
     {"move", VerbClass::kPlace},     {"bring", VerbClass::kPlace},    {"carry", VerbClass::kPlace},
@@ -36,7 +36,7 @@ constexpr std::array<HouseholdVerb, 72> kHouseholdVerbs{{
     {"get", VerbClass::kPick},       {"lift", VerbClass::kPick},      {"fetch", VerbClass::kPick},
     {"remove", VerbClass::kPick},    {"collect", VerbClass::kPick},   {"hold", VerbClass::kPick},
     {"retrieve", VerbClass::kPick},  {"open", VerbClass::kOpen},      {"close", VerbClass::kClose},
-    {"shut", VerbClass::kClose},     {"throw", VerbClass::kDiscard},  {"toss", VerbClass::kDiscard},
+    {"shut", VerbClass::kClose},     {"lock", VerbClass::kClose},     {"throw", VerbClass::kDiscard},  {"toss", VerbClass::kDiscard},
     {"chuck", VerbClass::kDiscard},  {"trash", VerbClass::kDiscard},  {"bin", VerbClass::kDiscard},
     {"discard", VerbClass::kDiscard}, {"dump", VerbClass::kDiscard},  {"junk", VerbClass::kDiscard},
     {"ditch", VerbClass::kDiscard},  {"rid", VerbClass::kDiscard},    {"recycle", VerbClass::kRecycle},
@@ -198,8 +198,11 @@ class ClauseReader {
       return;
     }
     // "throw it out", "put the book away": a particle, unless a place follows.
+    // Right after the verb, "out" before its object is one ("tip out the
+    // bucket", "clean out the van"), not "out of".
+    const bool out_before_object = t == "out" && !c_.object && at(1) != "of";
     if (is_particle(t) && !c_.verb.empty() && c_.particle.empty() &&
-        !(preposition_of(t) && (starts_noun(1) || at(1) == "of"))) {
+        (out_before_object || !(preposition_of(t) && (starts_noun(1) || at(1) == "of")))) {
       c_.particle = std::string(t);
       ++i_;
       return;

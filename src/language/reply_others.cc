@@ -209,11 +209,20 @@ std::optional<std::pair<std::size_t, std::size_t>> span_of(const Words& words, c
 
 // The words a reply names the rest by: "the rest", "everything else",
 // "the others", "everything", "all of it", "all of them".
+// "left shelf with the others", "next to the rest": said after a word of
+// place, the phrase says where the thing goes (by the others already
+// there), not which things go.
 std::optional<Words> rest_phrase(const Words& words) {
   for (const Words& phrase : {Words{"everything", "else"}, Words{"anything", "else"}, Words{"all", "the", "rest"},
                               Words{"the", "rest"}, Words{"rest"}, Words{"the", "others"}, Words{"everything"},
-                              Words{"all", "of", "it"}, Words{"all", "of", "them"}})
-    if (span_of(words, phrase)) return phrase;
+                              Words{"all", "of", "it"}, Words{"all", "of", "them"}}) {
+    const auto at = span_of(words, phrase);
+    if (!at) continue;
+    const std::size_t start = at->first;
+    if (start > 0 && is_one_of(words[start - 1], {"with", "w", "beside", "by", "near", "alongside", "among", "to"}))
+      continue;
+    return phrase;
+  }
   return std::nullopt;
 }
 

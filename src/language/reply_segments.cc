@@ -228,7 +228,13 @@ std::optional<std::vector<Action>> door_action(const Grounder& grounder, const W
   Words words = without_interjections(said);
   while (!words.empty() && is_one_of(words.front(), {"can", "could", "would", "you", "also", "just", "then", "now", "and"}))
     words.erase(words.begin());
-  if (words.empty() || !is_one_of(words.front(), {"close", "shut", "open"})) return std::nullopt;
+  // "lock it": the domain has no locks; a locked door is a closed one.
+  // ("lock it in the cabinet" puts it there: no door action.)
+  if (words.empty() || !is_one_of(words.front(), {"close", "shut", "lock", "open"})) return std::nullopt;
+  if (words.front() == "lock" && std::any_of(words.begin(), words.end(), [](const std::string& w) {
+        return is_one_of(w, {"in", "into", "inside", "away"});
+      }))
+    return std::nullopt;
   const bool open = words.front() == "open";
   // "shut the top drawer if it's still open", "close it so the kids can't
   // get in": a clause of condition or reason says when or why, not what.

@@ -106,6 +106,16 @@ std::optional<std::pair<Reply, std::vector<std::string>>> several_steps(const Gr
       Words with = split_words(verb);
       with.insert(with.end(), part.begin(), part.end());
       Reply again = read_reply(grounder, world, at, quoted_words(with));
+      // "floor next, then the bucket": a surface's general verb carried to
+      // a receptacle is the receptacle's ("empty"), and the other way round.
+      if (auto* named = std::get_if<SubtaskNamed>(&again); named && !named->places.empty()) {
+        const std::string own = clearing_verb(world.universe->info(named->places.front()).kind);
+        if (named->verb != own && is_one_of(named->verb, {clearing_verb(ObjectKind::kSurface), clearing_verb(ObjectKind::kReceptacle)})) {
+          with = split_words(own);
+          with.insert(with.end(), part.begin(), part.end());
+          again = read_reply(grounder, world, at, quoted_words(with));
+        }
+      }
       if (usable(again)) {
         reply = again;
         part = with;
@@ -131,6 +141,16 @@ std::optional<std::pair<Reply, std::vector<std::string>>> several_steps(const Gr
         Reply other = read_reply(grounder, world, at, quoted_words(without_interjections(parts[j])));
         if (std::holds_alternative<Finished>(other)) return std::make_pair(reply, std::vector<std::string>{});
       }
+    // "clear the floor, then the top of the piano": a later part about a
+    // place here that does not read is kept for the next question, where
+    // it is asked back; read whole, the reply would lose it silently.
+    if (!step && i > 0 && first && std::holds_alternative<SubtaskNamed>(*first) && !usable(reply) &&
+        names_a_place_alone(grounder, world, part) && !door_action(grounder, world, at, part)) {
+      Words with = split_words(verb);
+      with.insert(with.end(), part.begin(), part.end());
+      rest.push_back(quoted_words(starts_with_verb(part, verb) ? part : with));
+      continue;
+    }
     if (!step) return std::nullopt;
     if (const auto* named = std::get_if<SubtaskNamed>(&reply)) verb = named->verb;
     names_a_part = names_a_part || std::holds_alternative<SubtaskNamed>(reply) || std::holds_alternative<LoopNamed>(reply);
@@ -139,6 +159,14 @@ std::optional<std::pair<Reply, std::vector<std::string>>> several_steps(const Gr
     // What follows the first part is read at the question about the task's
     // next step.
     at.asked = Asked::kTaskStep;
+  }
+  // "ok bench is done. floor next, then the bucket", asked for the task's
+  // next step: the ending is the last part's, said in passing, not the
+  // task's, since parts follow it; the next part comes first.
+  if (context.asked == Asked::kTaskStep && first && std::holds_alternative<Finished>(*first) && names_a_part &&
+      !rest.empty()) {
+    first = read_reply(grounder, world, at, rest.front());
+    rest.erase(rest.begin());
   }
   // "close both bins and then we're finished": a one-off action first
   // stands with an ending after it too.

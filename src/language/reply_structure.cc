@@ -250,13 +250,17 @@ class StructureReader {
     }
     if (finished) return Finished{};
     // "the counter next", "same with the counter": the last subtask's verb
-    // at a place named without one.
+    // at a place named without one, when it is the verb for places of this
+    // kind ("clear" a surface, "empty" a receptacle). "Sort the baskets",
+    // then "now the folding table", is asked back: sorting a table, or
+    // clearing a bucket, may not be what was meant.
     std::optional<Places> named;
     if (!problem_ && !ambiguous_ && !item_named_) named = first_places(clauses);
     if (named && !in_.context.taught_subtasks.empty()) {
       std::vector<ObjectId> holding = holding_items(named->objects);
-      if (!holding.empty())
-        return SubtaskNamed{in_.context.taught_subtasks.back(), relation(holding.front()), holding};
+      const std::string& last = in_.context.taught_subtasks.back();
+      if (!holding.empty() && last == clearing_verb(in_.world.universe->info(holding.front()).kind))
+        return SubtaskNamed{last, relation(holding.front()), holding};
     }
     if (proceed && !named) return Proceed{};
     if (problem_ || ambiguous_) return outcome();
@@ -338,10 +342,16 @@ class StructureReader {
   // emptied. Another verb than the agent's step verbs ("unpack the bags")
   // is the one WordNet puts closest, with a note for the read-back
   // (known_verbs.h); else it is kept as said.
-  SubtaskNamed subtask(const Clause& c, const std::vector<ObjectId>& holding) const {
+  SubtaskNamed subtask(const Clause& said, const std::vector<ObjectId>& holding) const {
     const ObjectKind kind = in_.world.universe->info(holding.front()).kind;
+    // "sort out the bookshelf": "out" at a surface adds nothing to the verb.
+    Clause c = said;
+    if (c.particle == "out" && kind != ObjectKind::kReceptacle) c.particle.clear();
     SubtaskNamed named{subtask_verb(c), relation(holding.front()), holding};
-    const bool takes = c.verb_class() == VerbClass::kPick;
+    // "tip out the bucket", "turn out the bag", "dump out the box": a verb
+    // with "out" at a receptacle takes what is in it out.
+    const bool takes = c.verb_class() == VerbClass::kPick ||
+                       (c.particle == "out" && kind == ObjectKind::kReceptacle && c.verb != "do");
     if (takes || is_one_of(named.verb, {"do", "get out", "take out", "get off", "take off"})) {
       std::string said = verb_name(c.verb, c.particle);
       if (c.verb != "do" && !is_one_of(said, {"get", "take", "grab", "get out", "take out", "get off", "take off"}))

@@ -2,6 +2,7 @@
 // "that's right", "no, the other one" (the rest is kept for the agent).
 #include <algorithm>
 
+#include "language/narration.h"
 #include "language/reply_acts_parts.h"
 #include "language/reply_reading.h"
 #include "language/utterance.h"
@@ -184,6 +185,44 @@ Reply read_yes_no(const ReplyInput& in) {
       reply.rest.clear();
   }
   return reply;
+}
+
+std::optional<GoalGiven> goal_in_rest(const Grounder& grounder, const World& world, const ReplyContext& context,
+                                      const YesNo& answer) {
+  if (answer.rest.empty() || !context.object) return std::nullopt;
+  ReplyContext at = context;
+  at.asked = Asked::kGoal;
+  auto only_proposed = [&](const GoalGiven& given) {
+    return context.proposal && holds_only_the_proposal(given, *context.proposal);
+  };
+  const Reply said = read_reply(grounder, world, at, answer.rest);
+  if (const auto* given = std::get_if<GoalGiven>(&said)) {
+    if (only_proposed(*given)) return std::nullopt;
+    return *given;
+  }
+  // "yes but leave the door open", "sure, and shut it": the place proposed,
+  // with what the rest says of its door.
+  if (!answer.yes || !context.proposal) return std::nullopt;
+  const std::optional<ObjectId> place = acts::destination(world, GoalGiven{*context.proposal, {}});
+  if (!place) return std::nullopt;
+  const std::string there = std::string(relation_word(world, *place)) + " " + spoken_name(world, *place);
+  const Reply with_door = read_reply(grounder, world, at, there + ", " + answer.rest);
+  // Only a goal that says more of the place than was proposed (its door):
+  // the proposal with that.
+  const auto* given = std::get_if<GoalGiven>(&with_door);
+  if (given == nullptr || acts::destination(world, with_door) != place) return std::nullopt;
+  auto of_the_place = [&](const Literal& l) { return l.fact.arity == 1 && l.fact.args[0] == *place; };
+  std::vector<Literal> literals = context.proposal->literals;
+  bool more = false;
+  for (const Literal& l : given->goal.literals) {
+    if (!of_the_place(l) || std::find(literals.begin(), literals.end(), l) != literals.end()) continue;
+    // "leave it open" over a proposal that closes it: the person's word.
+    std::erase_if(literals, [&](const Literal& p) { return of_the_place(p) && p.fact.predicate == l.fact.predicate; });
+    literals.push_back(l);
+    more = true;
+  }
+  if (!more) return std::nullopt;
+  return GoalGiven{Goal(std::move(literals)), {}};
 }
 
 }  // namespace apprentice::language

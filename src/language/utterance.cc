@@ -81,13 +81,14 @@ bool starts_a_predicate(std::string_view next) {
 }
 
 void expand(const std::string& word, const std::string& next, std::vector<std::string>& out) {
-  static const std::array<std::pair<std::string_view, std::string_view>, 22> kWhole{{
+  static const std::array<std::pair<std::string_view, std::string_view>, 28> kWhole{{
       {"can't", "can not"},     {"cannot", "can not"},   {"won't", "will not"},   {"ain't", "is not"},
       {"let's", "let us"},      {"gonna", "going to"},   {"wanna", "want to"},    {"gotta", "got to"},
       {"lemme", "let me"},      {"pls", "please"},       {"plz", "please"},       {"thx", "thanks"},
       {"okay", "ok"},           {"k", "ok"},             {"u", "you"},            {"ya", "you"},
       {"dont", "do not"},       {"doesnt", "does not"},  {"isnt", "is not"},      {"thats", "that is"},
-      {"whats", "what is"},     {"lets", "let us"},
+      {"whats", "what is"},     {"lets", "let us"},      {"w", "with"},           {"w/", "with"},
+      {"rn", "right now"},      {"cuz", "because"},      {"bc", "because"},       {"tmrw", "tomorrow"},
   }};
   for (const auto& [from, to] : kWhole) {
     if (word == from) {
@@ -140,6 +141,17 @@ std::vector<std::string> reply_words(std::string_view text) {
   for (std::size_t i = 0; i < raw.size() && out.size() < kMaxSentenceWords; ++i)
     expand(raw[i], i + 1 < raw.size() ? raw[i + 1] : "", out);
   if (out.size() > kMaxSentenceWords) out.resize(kMaxSentenceWords);
+  // "the top of the piano", "the edge of the tub": a part of a thing named
+  // as places are named here, "the piano top", "the tub edge".
+  for (std::size_t i = 0; i + 2 < out.size(); ++i) {
+    if (!is_one_of(out[i], {"top", "side", "edge", "inside", "surface", "corner"}) || out[i + 1] != "of") continue;
+    const std::size_t noun = i + 2 + (is_one_of(out[i + 2], {"the", "a", "my", "that", "this"}) ? 1 : 0);
+    if (noun >= out.size() || !std::isalpha(static_cast<unsigned char>(out[noun].front()))) continue;
+    std::string part = out[i];
+    out[i] = out[noun];
+    out[i + 1] = part;
+    out.erase(out.begin() + static_cast<std::ptrdiff_t>(i + 2), out.begin() + static_cast<std::ptrdiff_t>(noun + 1));
+  }
   return out;
 }
 

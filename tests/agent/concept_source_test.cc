@@ -1,6 +1,8 @@
 // The agent's ConceptSource over the real WordNet (and the word vectors when
 // the build has them): how names are read, what classes they get, and the
 // preference model's induction on them ("fruit", not "food").
+#include <algorithm>
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -73,6 +75,31 @@ TEST_F(ConceptSourceTest, ClassesAreNearestFirstAndLargerHigherUp) {
   EXPECT_LT(fruit->depth, food->depth);
   EXPECT_LT(fruit->size, food->size);
   EXPECT_GT(fruit->size, 50);
+}
+
+// A plural WordNet knows as a word of its own, but as nothing physical
+// ("shoes": a situation, "in her shoes"), names its singular's class too,
+// so that sneakers fall under a person's "shoes"; a plural that names a
+// physical class of its own ("clothes": apparel) keeps it alone.
+TEST_F(ConceptSourceTest, APluralIsReadAsItsSingularUnlessItIsAWordOfItsOwn) {
+  auto names = [&](std::string_view words) {
+    std::vector<std::string> out;
+    for (const ConceptClass& c : concepts_.classes_named(words)) out.push_back(c.name);
+    return out;
+  };
+  EXPECT_THAT(names("shoes"), ::testing::Contains("shoe"));
+  const std::string shoe_id = concepts_.classes_named("shoes").front().id;
+  const KindProfile sneakers = concepts_.profile("sneakers");
+  EXPECT_TRUE(std::any_of(sneakers.classes.begin(), sneakers.classes.end(),
+                          [&](const ConceptClass& c) { return c.id == shoe_id; }));
+  EXPECT_THAT(names("clothes"), ::testing::Contains("apparel"));
+  EXPECT_THAT(names("clothes"), ::testing::Not(::testing::Contains("fabric")));
+  // A collective word names its parent's things too ("clothes": clothing);
+  // the plural of a count noun with few kinds does not ("pots": no
+  // container, or a seed packet would be one).
+  EXPECT_THAT(names("clothes"), ::testing::Contains("clothing"));
+  EXPECT_THAT(names("pots"), ::testing::Contains("pot"));
+  EXPECT_THAT(names("pots"), ::testing::Not(::testing::Contains("container")));
 }
 
 TEST_F(ConceptSourceTest, TheBananaAndTheAppleGiveFruitNotFood) {

@@ -184,6 +184,21 @@ TEST_F(TeachNorms, AGoalOrAnEndingSaidAtAProposalIsTakenNotRefused) {
   EXPECT_THAT(out, HasSubstr("The task is learned")) << out;
 }
 
+// Found in set 7: "yes but leave the door open", said to a proposed goal,
+// was taken as a bare yes and the door closed. A yes with more said of the
+// place is the place proposed with that.
+TEST_F(TeachNorms, AYesThatSaysMoreOfTheDoorKeepsIt) {
+  Process teach({APPRENTICE_BINARY, "teach", "--scenario", write("art-room.yaml", kArtRoom).string()});
+  ASSERT_TRUE(teach.write(lines({"tidy the classroom", "clear the table", "the cupboard",
+                                 "the brushes go in the cupboard", "yes but leave the door open", "the sink",
+                                 "that is all"})));
+  EXPECT_EQ(teach.wait(), 0) << teach.out() << teach.err();
+  EXPECT_THAT(teach.out(), HasSubstr("Instructor: yes but leave the door open\n"
+                                     "Agent: So the paint pot goes in the cupboard, and the cupboard ends open.\n"
+                                     "Agent: I opened the cupboard and put the paint pot in it.\n"))
+      << teach.out();
+}
+
 // Where a goal decided by a person's class rule came from is kept in
 // English, as `knowledge` shows it: never the log's "clothes -> in the
 // laundry-hamper (person; 0.95)".
@@ -225,6 +240,69 @@ TEST_F(TeachNorms, AOneOffActionBeforeAPartIsDoneAndThePartTaken) {
   EXPECT_EQ(out.find("What should I do first to tidy the classroom?", out.find("then clear the table")),
             std::string::npos)
       << out;
+}
+
+// Found in a greenhouse: "pots go on the right shelf", said when asked for
+// the first part of the task, was refused ("There is nothing on the right
+// shelf now"), where "tools go in the top bin" was kept. Said of the
+// world's own kind, with no part of the task in it, it is where every pot
+// goes. And "pots" are pots, not every container: the seed packet (a
+// packet, a container) is asked about, not put with them.
+TEST_F(TeachNorms, WhereAKindGoesSaidForAPartOfTheTaskIsKeptForEveryThingOfIt) {
+  constexpr const char* kPottingRoom = R"(name: potting-room
+domain: kitchen
+location: greenhouse
+places:
+  - {category: table, kind: surface}
+  - {category: shelf, kind: surface, properties: [left]}
+  - {category: shelf, kind: surface, properties: [right]}
+  - {category: bin, kind: receptacle}
+objects:
+  - {category: pot, at: table1, count: 2}
+  - {category: seed-packet, at: table1}
+)";
+  Process teach({APPRENTICE_BINARY, "teach", "--scenario", write("potting-room.yaml", kPottingRoom).string()});
+  ASSERT_TRUE(teach.write(lines({"tidy the greenhouse", "pots go on the right shelf", "clear the table", "no",
+                                 "in the bin", "that is all"})));
+  EXPECT_EQ(teach.wait(), 0) << teach.out() << teach.err();
+  const std::string& out = teach.out();
+  EXPECT_THAT(out, HasSubstr("Instructor: pots go on the right shelf\nAgent: So pots go on the right shelf.\n")) << out;
+  EXPECT_THAT(out, HasSubstr("The pot on the table goes on the right shelf, with pots, as you said.")) << out;
+  EXPECT_THAT(out, Not(HasSubstr("I put the seed packet on the right shelf"))) << out;
+  EXPECT_THAT(out, HasSubstr("I put the seed packet in the bin.")) << out;
+}
+
+// Found in a greenhouse: "now the floor, and the bucket after that", said
+// after the potting bench was cleared, got "What should I do with the
+// things on the floor?": the reader knew to take the last part's verb, but
+// the agent never told it the parts taught.
+TEST_F(TeachNorms, APlaceNamedForTheNextPartTakesTheLastPartsVerb) {
+  constexpr const char* kTwoSurfaces = R"(name: two-surfaces
+domain: kitchen
+location: classroom
+places:
+  - {category: table, kind: surface}
+  - {category: floor, kind: surface}
+  - {category: sink, kind: receptacle}
+  - {category: cupboard, kind: receptacle}
+  - {category: bucket, kind: receptacle}
+objects:
+  - {category: paintbrush, at: table1}
+  - {category: sponge, at: floor1}
+  - {category: rag, at: bucket1}
+)";
+  Process teach({APPRENTICE_BINARY, "teach", "--scenario", write("two-surfaces.yaml", kTwoSurfaces).string()});
+  ASSERT_TRUE(teach.write(lines({"tidy the classroom", "clear the table", "the sink",
+                                 "now the floor, and the bucket after that", "the cupboard", "the sink",
+                                 "that is all"})));
+  EXPECT_EQ(teach.wait(), 0) << teach.out() << teach.err();
+  const std::string& out = teach.out();
+  EXPECT_THAT(out, HasSubstr("Instructor: now the floor, and the bucket after that\n"
+                             "Agent: So I clear what is on the floor, one thing at a time.\n"))
+      << out;
+  EXPECT_THAT(out, HasSubstr("I put the sponge in the cupboard.")) << out;
+  EXPECT_THAT(out, HasSubstr("So I empty what is in the bucket, one thing at a time.")) << out;
+  EXPECT_THAT(out, HasSubstr("I took the rag out of the bucket and put it in the sink.")) << out;
 }
 
 }  // namespace

@@ -21,6 +21,10 @@ TEST(TidyBotNames, ObjectsBecomeHyphenatedCategories) {
   EXPECT_EQ(item_category("T-shirt"), "t-shirt");
   EXPECT_EQ(item_category("  Uncle Ben's white rice "), "uncle-bens-white-rice");
   EXPECT_EQ(item_category("V8 juice"), "v8-juice");
+  // The agent says "the" before a name itself: not "the the los angeles
+  // times newspaper".
+  EXPECT_EQ(item_category("The Los Angeles Times newspaper"), "los-angeles-times-newspaper");
+  EXPECT_EQ(item_category("The"), "the");
 }
 
 TEST(TidyBotNames, LeadingPositionAndSizeWordsAreProperties) {

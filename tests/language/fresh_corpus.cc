@@ -232,7 +232,10 @@ std::optional<Acts> reading_acts(const Grounder& grounder, const World& world, c
       if (!r.rest.empty() && context.object) {
         ReplyContext next = context;
         next.asked = Asked::kGoal;
-        Reply rest = read_reply(grounder, world, next, r.rest);
+        // As the agent reads it (language::goal_in_rest), else the rest's
+        // other acts ("no, leave it").
+        const std::optional<GoalGiven> goal = goal_in_rest(grounder, world, context, r);
+        Reply rest = goal ? Reply(*goal) : read_reply(grounder, world, next, r.rest);
         if (!std::holds_alternative<Unusable>(rest) && !std::holds_alternative<Ambiguous>(rest) &&
             !std::holds_alternative<YesNo>(rest)) {
           Line as_goal = line;

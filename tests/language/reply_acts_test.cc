@@ -101,6 +101,22 @@ TEST_F(ReplyActsTest, ANahBeforeAFirstAnswerIsAFillerAndSaidSo) {
   EXPECT_EQ(read.notes.front(), "I took \"nah\" as a filler.");
 }
 
+// Found in set 4's study: "Receipts go in the bin, not the recycling." put
+// the receipt in the recycling bin, the only place called a bin. A place
+// the reply rules out is never the one taken: asked back instead.
+TEST_F(ReplyActsTest, APlaceSaidNotIsNeverTheOneTaken) {
+  ReplyContext c = goal_question("comb1");
+  EXPECT_EQ(acts(c, "put it on the edge, not on the bathtub edge"), "unusable");
+  ReplyActs read = read_acts(grounder(), world(), c, "put it on the edge, not on the bathtub edge");
+  ASSERT_EQ(read.acts.size(), 1u);
+  EXPECT_THAT(std::get<Unusable>(read.acts.front()).reason, ::testing::HasSubstr("You said not the bathtub edge"));
+  // A place ruled out beside another named: the one named.
+  EXPECT_EQ(acts(c, "in the top drawer, not the bottom one"), "goal (in comb1 drawer1)");
+  EXPECT_EQ(acts(c, "in the cabinet and not the drawer"), "goal (in comb1 cabinet1)");
+  // Said first, as many do: the place after it.
+  EXPECT_EQ(acts(c, "not the counter, the shelf"), "goal (on comb1 shelf1)");
+}
+
 TEST_F(ReplyActsTest, UndoesCountAsSaid) {
   ReplyContext c = goal_question("comb1", "hairbrush1", "drawer1");
   EXPECT_EQ(acts(c, "undo undo"), "command undo | command undo");
@@ -114,6 +130,11 @@ TEST_F(ReplyActsTest, AOneOffClosingIsNotPartOfTheGoal) {
   EXPECT_EQ(acts(c, "close both drawers"), "command do (close drawer1) (close drawer2)");
   // Closing the goal's own place is part of the goal.
   EXPECT_EQ(acts(c, "in the cabinet, and shut it"), "goal (and (in toothpaste1 cabinet1) (closed cabinet1))");
+  // The domain has no locks: a locked door is a closed one (set 7: "right
+  // locker and lock it" left the locker as it was). "Lock it in the
+  // cabinet" puts it there, and is no one-off closing.
+  EXPECT_EQ(acts(c, "cabinet, and lock it"), "goal (and (in toothpaste1 cabinet1) (closed cabinet1))");
+  EXPECT_THAT(acts(c, "lock it in the cabinet"), ::testing::Not(::testing::HasSubstr("command do (close cabinet1)")));
 }
 
 TEST_F(ReplyActsTest, TheTeachersQuestionsAreAnsweredNotTaught) {
@@ -144,6 +165,13 @@ TEST_F(ReplyActsTest, TheRestAndClassesReachTheThingsStillToCome) {
             "goal (in t-shirt1 hamper1); also (in jeans1 hamper1); also (in socks1 hamper1)");
   // "same again" with nothing given yet is asked back, not guessed.
   EXPECT_EQ(acts(c, "same again"), "unusable");
+  // "with the others" (or "w the others", as typed) says where, by the
+  // things there, not which things go (set 7: the syringes and the
+  // vaccine were put on the shelf with the bandage).
+  EXPECT_EQ(acts(c, "hamper with the others"), "goal (in t-shirt1 hamper1)");
+  EXPECT_EQ(acts(c, "hamper w the others"), "goal (in t-shirt1 hamper1)");
+  EXPECT_EQ(acts(c, "the others go in the hamper too"),
+            "goal (in t-shirt1 hamper1); also (in jeans1 hamper1); also (in socks1 hamper1); also (in hair-dryer1 hamper1)");
 }
 
 }  // namespace
@@ -282,6 +310,26 @@ TEST_F(ReplyActsTest, SeveralStepsInOneReplyAreReadInTurn) {
   ASSERT_EQ(read.acts.size(), 1u);
   EXPECT_EQ(format_reply(world(), read.acts.front()), "finished");
   EXPECT_EQ(read.then, std::vector<std::string>{"clear the floor"});
+  // Asked for the task's next step, an ending before more parts is the
+  // last part's, said in passing: the next part comes first (found in set
+  // 7: "ok bench is done. floor next, then the bucket" ended the task).
+  // (A surface's verb carried to a receptacle is the receptacle's: nothing
+  // here is in a receptacle; TeachNorms.APlaceNamedForTheNextPart... shows
+  // it.)
+  read = read_acts(grounder(), world(), step, "ok the counter is done. clear the floor next, then the bathtub edge");
+  ASSERT_EQ(read.acts.size(), 1u);
+  EXPECT_EQ(format_reply(world(), read.acts.front()), "subtask clear on floor1");
+  EXPECT_EQ(read.then, std::vector<std::string>{"clear the bathtub edge"});
+  // A later part about a place here that does not read as a step is kept
+  // for the next question, to be asked back there: read whole, the reply
+  // lost it (set 7: "clear the floor, then the top of the piano"). "The
+  // top of the counter" is the counter top.
+  read = read_acts(grounder(), world(), step, "clear the floor, then the bits by the counter");
+  EXPECT_EQ(format_reply(world(), read.acts.front()), "subtask clear on floor1");
+  EXPECT_EQ(read.then, std::vector<std::string>{"clear the bits by the counter"});
+  read = read_acts(grounder(), world(), step, "clear the floor, then the top of the counter");
+  EXPECT_EQ(read.then, std::vector<std::string>{"clear the counter top"});
+  EXPECT_EQ(format_reply(world(), read_reply(grounder(), world(), step, read.then.front())), "subtask clear on counter1");
 }
 
 TEST_F(ReplyActsTest, AGoalSaidLikeTheLastKeepsItsDoor) {

@@ -263,6 +263,24 @@ TEST(ReplyStructure, APlaceWithoutAVerbTakesTheLastSubtasksVerb) {
   EXPECT_EQ(read(kitchen, step, "then do the dish rack"), "subtask clear in dish-rack1");
   EXPECT_EQ(read(kitchen, step, "now unload the dish rack"), "subtask unload in dish-rack1");
   EXPECT_EQ(read(kitchen, step, "that's all for the table"), "finished");
+  // The last verb is for places of another kind, or no general one: asked
+  // back (sorting a table, clearing a rack, may not be what was meant).
+  EXPECT_EQ(read(kitchen, step, "the dish rack next"), "unusable");
+  step.taught_subtasks = {"sort"};
+  EXPECT_EQ(read(kitchen, step, "the counter next"), "unusable");
+  step.taught_subtasks = {"clear", "empty"};
+  EXPECT_EQ(read(kitchen, step, "the dish rack next"), "subtask empty in dish-rack1");
+}
+
+// Found in set 7: "tip out the bucket" was a part named "tip". A verb with
+// "out" before a receptacle takes what is in it out; at a surface, "out"
+// adds nothing ("sort out the counter" sorts it).
+TEST(ReplyStructure, AVerbWithOutAtAReceptacleEmptiesIt) {
+  const World& kitchen = kitchen30().world;
+  ReplyContext step = asking(Asked::kTaskStep);
+  EXPECT_EQ(read(kitchen, step, "tip out the dish rack"), "subtask empty in dish-rack1");
+  EXPECT_EQ(read(kitchen, step, "tip the dish rack out"), "subtask empty in dish-rack1");
+  EXPECT_EQ(read(kitchen, step, "sort out the counter"), read(kitchen, step, "sort the counter"));
 }
 
 // After "What should I do with the things on the counter?" (the reason
@@ -435,6 +453,38 @@ TEST(ReplyYesNo, FillersGoalsAndEndingsSaidInPlaceOfYesOrNo) {
   // Without a proposal (a yes/no about something else) a goal is no answer.
   EXPECT_TRUE(std::holds_alternative<Unusable>(
       read_reply(grounder(), kitchen, asking(Asked::kYesNo, ketchup), "the ketchup goes in the pantry")));
+}
+
+// Found in set 7: "yes but leave the door open" at a proposed goal was a
+// bare yes; the door was lost. The rest of a yes says more of the place
+// proposed; the rest of a no says where instead; a rest that repeats the
+// proposal adds nothing.
+TEST(ReplyYesNo, TheRestOfAYesSaysMoreOfThePlaceProposed) {
+  const World& kitchen = kitchen30().world;
+  const ObjectId ketchup = in(kitchen, "ketchup1");
+  const ObjectId fridge = in(kitchen, "fridge1");
+  ReplyContext proposed = asking(Asked::kYesNo, ketchup);
+  const Literal in_fridge{Fact{kitchen.vocabulary.in, {ketchup, fridge}}, true};
+  const Literal closed{Fact{kitchen.vocabulary.closed, {fridge}}, true};
+  proposed.proposal = Goal{{in_fridge}};
+  auto rest_of = [&](std::string_view text) -> std::optional<GoalGiven> {
+    Reply r = read_reply(grounder(), kitchen, proposed, text);
+    const auto* y = std::get_if<YesNo>(&r);
+    if (y == nullptr) return std::nullopt;
+    return goal_in_rest(grounder(), kitchen, proposed, *y);
+  };
+  auto shut = rest_of("yep, and close it");
+  ASSERT_TRUE(shut);
+  EXPECT_EQ(shut->goal, Goal({in_fridge, closed}));
+  proposed.proposal = Goal{{in_fridge, closed}};
+  auto open = rest_of("yes but leave the door open");
+  ASSERT_TRUE(open);
+  EXPECT_EQ(open->goal, Goal({in_fridge, Literal{closed.fact, false}}));
+  EXPECT_FALSE(rest_of("yes, same place"));
+  EXPECT_FALSE(rest_of("yes please"));
+  auto instead = rest_of("no, it goes in the pantry");
+  ASSERT_TRUE(instead);
+  EXPECT_EQ(instead->goal.literals.front().fact.args[1], in(kitchen, "pantry1"));
 }
 
 // --- References and reasons (issue 9) --------------------------------------------------
