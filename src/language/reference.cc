@@ -231,6 +231,47 @@ std::optional<Candidates> by_last_words(const std::string& phrase, Role role, co
   return std::nullopt;
 }
 
+// "the mic": a word WordNet does not know and no name here has, of at
+// least three letters, that begins exactly one longer word of the names
+// here ("microphone") is that word, clipped as people type.
+std::optional<Candidates> by_clipped_word(const std::string& phrase, Role role, const ReferenceContext& context) {
+  std::vector<std::string> words = split_words(phrase);
+  bool clipped = false;
+  std::vector<std::string> taken;
+  // Words of the closed classes WordNet leaves out are never clipped
+  // names ("she'll want it": not the shelf).
+  auto closed_class = [](std::string_view w) {
+    return is_object_pronoun(w) ||
+           is_one_of(w, {"she", "her", "hers", "him", "his", "you", "your", "yours", "our", "ours", "its", "their",
+                         "theirs", "who", "whom", "whose", "what", "which", "the", "and", "but", "with", "from",
+                         "into", "onto", "for", "are", "was", "were", "has", "had", "did", "does", "can", "could",
+                         "would", "should", "will", "shall", "may", "might", "must", "been", "being", "than"});
+  };
+  for (std::string& word : words) {
+    if (word.size() < 3 || context.lexicon.knows(word) || closed_class(word)) continue;
+    std::string found;
+    bool several = false, named = false;
+    for (const ObjectInfo& info : context.world.universe->objects())
+      for (const std::string& part : name_parts(info.category)) {
+        named = named || part == word;
+        if (part.size() >= word.size() + 2 && part.starts_with(word)) {
+          several = several || (!found.empty() && found != part);
+          found = part;
+        }
+      }
+    if (named || found.empty() || several) continue;
+    taken.push_back("'" + word + "' taken as '" + found + "'");
+    word = found;
+    clipped = true;
+  }
+  if (!clipped) return std::nullopt;
+  const std::string whole = join(words, " ");
+  std::optional<Candidates> out = by_name(whole, role, context.world, ReferenceMethod::kPartialName, "");
+  if (!out) out = by_parts(whole, role, context);
+  if (out) out->reason = join(taken, ", ") + "; " + out->reason;
+  return out;
+}
+
 // All candidates for a phrase, by the first tier that finds any.
 std::variant<Candidates, GroundingFailure> candidates(const NounPhrase& np, Role role, const ReferenceContext& context);
 std::variant<Candidates, GroundingFailure> candidates(const NounPhrase& np, Role role,
@@ -287,6 +328,8 @@ std::variant<Candidates, GroundingFailure> candidates(const NounPhrase& np, Role
   if (auto related = by_wordnet(phrase, role, context)) return *related;
   if (context.partial_names)
     if (auto named = by_last_words(phrase, role, context)) return *named;
+  if (context.partial_names)
+    if (auto named = by_clipped_word(phrase, role, context)) return *named;
   // A phrase naming only things of the other role ("Pick up the bin", "the
   // trash is in the kitchen") should fail on that thing's affordances, not
   // on its name.

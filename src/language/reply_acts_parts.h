@@ -32,6 +32,10 @@ struct Segment {
 // The reply cut at , ; : . ! ? and free-standing dashes.
 std::vector<Segment> segments(std::string_view text);
 Words without_interjections(Words words);
+// "and", "then", "now" before a part or an action ("and then the table",
+// "now shut the cupboard"): they join it to what came before.
+bool is_connective(std::string_view w);
+Words without_leading_connectives(Words words);
 bool has(const Words& words, std::initializer_list<std::string_view> phrase);
 // "undo", "scratch that", "go back one", "that was wrong": how many undos
 // (0: not an undo).

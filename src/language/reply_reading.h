@@ -85,9 +85,14 @@ Reply read_which(const ReplyInput& in);
 // answer ("yes, please" -> {2, true}); nullopt if they start with none.
 std::optional<std::pair<std::size_t, bool>> answer_prefix(const std::vector<std::string>& words);
 
-// The finished / go-on expressions of task-structure questions.
+// The words cut at "," only: "the kitchen is a mess, please tidy it" is two.
+std::vector<std::vector<std::string>> comma_pieces(const std::vector<std::string>& words);
+// A word of the world's location ("living" of "living room"): never the
+// task's verb.
+bool names_location(const std::string& word, const ReplyInput& in);
+
+// The finished expressions of task-structure questions.
 bool says_finished(const std::vector<std::string>& words, const ReplyInput& in);
-bool says_proceed(const std::vector<std::string>& words);
 // Whether the reply says only that something ends ("I'm done", "that's it
 // for the counter, leave the rest"): each of its clauses ends something,
 // leaves things, or is fillers. "put it in the fridge and then you're done

@@ -66,6 +66,15 @@ Words without_interjections(Words words) {
   return words;
 }
 
+bool is_connective(std::string_view w) { return is_one_of(w, {"and", "then", "now"}); }
+
+Words without_leading_connectives(Words words) {
+  std::size_t first = 0;
+  while (first < words.size() && is_connective(words[first])) ++first;
+  words.erase(words.begin(), words.begin() + static_cast<std::ptrdiff_t>(first));
+  return words;
+}
+
 bool has(const Words& words, std::initializer_list<std::string_view> phrase) {
   return std::search(words.begin(), words.end(), phrase.begin(), phrase.end()) != words.end();
 }
@@ -226,7 +235,7 @@ bool is_subordinator(std::string_view w) {
 std::optional<std::vector<Action>> door_action(const Grounder& grounder, const World& world,
                                                const ReplyContext& context, const Words& said) {
   Words words = without_interjections(said);
-  while (!words.empty() && is_one_of(words.front(), {"can", "could", "would", "you", "also", "just", "then", "now", "and"}))
+  while (!words.empty() && (is_connective(words.front()) || is_one_of(words.front(), {"can", "could", "would", "you", "also", "just"})))
     words.erase(words.begin());
   // "lock it": the domain has no locks; a locked door is a closed one.
   // ("lock it in the cabinet" puts it there: no door action.)

@@ -23,7 +23,7 @@ std::vector<Words> step_parts(std::string_view text) {
     auto flush = [&] {
       while (!current.empty() && is_one_of(current.back(), {"and", "then"})) current.pop_back();
       if (current.size() > 1 && current[0] == "after" && current[1] == "that") current.erase(current.begin(), current.begin() + 2);
-      while (!current.empty() && is_one_of(current.front(), {"and", "then", "now"})) current.erase(current.begin());
+      current = without_leading_connectives(std::move(current));
       if (!current.empty()) parts.push_back(current);
       current.clear();
     };
@@ -89,9 +89,8 @@ std::optional<std::pair<Reply, std::vector<std::string>>> several_steps(const Gr
   bool names_a_part = false;  // "that's it, we're done" is one ending
   ReplyContext at = context;
   for (std::size_t i = 0; i < parts.size(); ++i) {
-    Words part = without_interjections(parts[i]);
     // "ok now shut the cupboard": "now" was not first until "ok" went.
-    while (!part.empty() && is_one_of(part.front(), {"and", "then", "now"})) part.erase(part.begin());
+    Words part = without_leading_connectives(without_interjections(parts[i]));
     if (part.empty()) return std::nullopt;
     // "ok now shut the cupboard, then do the piano": a one-off door action
     // first, done now, and the parts after it read in turn.

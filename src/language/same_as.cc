@@ -49,6 +49,11 @@ bool names_no_kind(std::string_view phrase) {
 SameAs read_same_as(std::string_view reply) {
   std::string said = plain_reply(reply);
   std::string other;
+  // "with the stapler", "in with the pens", "put it with the mugs": where
+  // that thing went, said by the thing.
+  for (std::string_view lead : {"with ", "in with ", "on with ", "put it with ", "put it in with ", "put them with ",
+                                "put them in with ", "in there with "})
+    if (said.starts_with(lead)) said = "same place as " + said.substr(lead.size());
   for (std::string_view marker : {"same place as ", "same way as ", "same as ", "just like ", "like ", "where ",
                                   "goes with ", "go with "}) {
     std::size_t at = said.find(marker);

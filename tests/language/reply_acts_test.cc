@@ -8,6 +8,7 @@
 
 #include "fresh_corpus.h"
 #include "language/known_verbs.h"
+#include "language/reference.h"
 #include "language/reply.h"
 #include "language_fixtures.h"
 
@@ -458,6 +459,45 @@ TEST_F(ReplyActsTest, WhatHaveWeDoneSoFarIsTheStatusNotAnEnding) {
   ReplyContext step;
   step.asked = Asked::kTaskStep;
   EXPECT_EQ(acts(step, "uh what have we done so far?"), "command status");
+}
+
+}  // namespace
+}  // namespace apprentice::language
+
+namespace apprentice::language {
+namespace {
+
+// Found in set 7: "where did the mic end up?" and "the mic goes in the
+// right hand locker" were refused ("I do not know the word 'mic'"). A word
+// WordNet does not know that begins exactly one longer word of the names
+// here is that word, clipped; a pronoun never is ("she'll want it": not
+// the shelf), nor a word that begins several.
+TEST(ClippedNames, AClippedWordIsTheOneNameItBegins) {
+  std::string error;
+  fresh::Worlds worlds{source_path("tests/language/fresh/set7")};
+  const Scenario* music = worlds.get("music-room.yaml", error);
+  ASSERT_NE(music, nullptr) << error;
+  const World& world = music->world;
+  ReplyContext c;
+  c.asked = Asked::kGoal;
+  c.object = world.universe->find("microphone1");
+  auto acts = [&](std::string_view text) {
+    std::string out;
+    for (const Reply& r : read_acts(grounder(), world, c, text).acts)
+      out += (out.empty() ? "" : " | ") + format_reply(world, r);
+    return out;
+  };
+  EXPECT_EQ(acts("the mic goes in the right hand locker"), "goal (in microphone1 locker2)");
+  // The teacher's question keeps the words; the agent finds the thing by
+  // the reference, as here.
+  EXPECT_EQ(acts("where did the mic end up?"), "command where mic");
+  ReferenceContext reference{world, grounder().lexicon(), std::nullopt};
+  reference.partial_names = true;
+  const auto found = candidates_for(NounPhrase{"", {"mic"}}, Role::kItem, reference);
+  ASSERT_TRUE(std::holds_alternative<CandidateSet>(found));
+  EXPECT_EQ(std::get<CandidateSet>(found).objects, std::vector<ObjectId>{*world.universe->find("microphone1")});
+  // "she" begins "sheet music" here, and is no name.
+  EXPECT_NE(acts("right locker, she'll want it tonight"), "unusable");
 }
 
 }  // namespace

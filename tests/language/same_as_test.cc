@@ -20,6 +20,11 @@ TEST(ReadSameAs, NamesTheOtherThingAndWhatFollows) {
   EXPECT_EQ(with_more.other, "hammer");
   EXPECT_EQ(with_more.more, "shut the drawer afterwards");
   EXPECT_EQ(read_same_as("put it in the fridge").other, "");
+  // "with the stapler" alone, as people say it (issue 21): where the
+  // stapler went. A place said with "with" after it is not one.
+  EXPECT_EQ(read_same_as("with the stapler").other, "stapler");
+  EXPECT_EQ(read_same_as("ok, put it in with the mugs please").other, "mugs");
+  EXPECT_EQ(read_same_as("the shelf with the others").other, "");
 }
 
 TEST(ReadSameAgain, NamesTheThingAskedAboutOrNothing) {
