@@ -66,8 +66,7 @@ std::vector<ObjectId> places_said_not(const Grounder& grounder, const World& wor
   ReferenceContext context{world, grounder.lexicon(), std::nullopt};
   context.partial_names = true;
   for (const Segment& s : segments(text)) {
-    Words words = without_interjections(s.words);
-    if (!words.empty() && words.front() == "and") words.erase(words.begin());
+    const Words words = without_leading_connectives(without_interjections(s.words));
     if (words.empty() || words.front() != "not") continue;
     Words phrase;
     for (std::size_t i = 1; i < words.size(); ++i)

@@ -67,6 +67,13 @@ bool names_a_place_alone(const Grounder& grounder, const World& world, const Wor
   return place;
 }
 
+// "clear" and "the table": the part with the verb before it.
+Words with_verb(const std::string& verb, const Words& part) {
+  Words with = split_words(verb);
+  with.insert(with.end(), part.begin(), part.end());
+  return with;
+}
+
 // The verb a part begins with, as a subtask's reading took it.
 bool starts_with_verb(const Words& part, const std::string& verb) {
   Words v = split_words(verb);
@@ -102,16 +109,14 @@ std::optional<std::pair<Reply, std::vector<std::string>>> several_steps(const Gr
       }
     Reply reply = read_reply(grounder, world, at, quoted_words(part));
     if (!usable(reply) && !verb.empty() && !starts_with_verb(part, verb)) {
-      Words with = split_words(verb);
-      with.insert(with.end(), part.begin(), part.end());
+      Words with = with_verb(verb, part);
       Reply again = read_reply(grounder, world, at, quoted_words(with));
       // "floor next, then the bucket": a surface's general verb carried to
       // a receptacle is the receptacle's ("empty"), and the other way round.
       if (auto* named = std::get_if<SubtaskNamed>(&again); named && !named->places.empty()) {
         const std::string own = clearing_verb(world.universe->info(named->places.front()).kind);
         if (named->verb != own && is_one_of(named->verb, {clearing_verb(ObjectKind::kSurface), clearing_verb(ObjectKind::kReceptacle)})) {
-          with = split_words(own);
-          with.insert(with.end(), part.begin(), part.end());
+          with = with_verb(own, part);
           again = read_reply(grounder, world, at, quoted_words(with));
         }
       }
@@ -145,9 +150,7 @@ std::optional<std::pair<Reply, std::vector<std::string>>> several_steps(const Gr
     // it is asked back; read whole, the reply would lose it silently.
     if (!step && i > 0 && first && std::holds_alternative<SubtaskNamed>(*first) && !usable(reply) &&
         names_a_place_alone(grounder, world, part) && !door_action(grounder, world, at, part)) {
-      Words with = split_words(verb);
-      with.insert(with.end(), part.begin(), part.end());
-      rest.push_back(quoted_words(starts_with_verb(part, verb) ? part : with));
+      rest.push_back(quoted_words(starts_with_verb(part, verb) ? part : with_verb(verb, part)));
       continue;
     }
     if (!step) return std::nullopt;
