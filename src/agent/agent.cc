@@ -19,6 +19,7 @@
 #include "agent/session.h"
 #include "language/known_verbs.h"
 #include "language/narration.h"
+#include "language/narration_steps.h"
 #include "util/log.h"
 #include "util/text.h"
 
@@ -146,7 +147,7 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::learn_task_name() {
     progress_.task = *known;
     progress_.known_to_do.assign(known->subtasks.begin(), known->subtasks.end());
     progress_.asked_about_task = !known->subtasks.empty();
-    say("I know how to " + language::task_phrase(name) + "; I will ask only about what is new.");
+    say(language::already_know_task(name));
     return {};
   }
   progress_.task = TaskKnowledge{name, {}};
@@ -181,19 +182,18 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::learn_task_step() {
   if (awaiting_repeat) progress_.loop();
   if (const auto* loop = std::get_if<language::LoopNamed>(&reply)) {
     progress_.announced_loop = loop->places;
-    say("So I repeat the next steps while something is " + std::string(language::relation_word(world(), loop->places.front())) +
-        " " + language::spoken_places(world(), loop->places) + ".");
+    say(language::read_back_loop(world(), loop->places));
     return {};
   }
   if (const auto* subtask = std::get_if<language::SubtaskNamed>(&reply)) return start_subtask(*subtask);
   if (std::holds_alternative<language::Finished>(reply)) {
     progress_.finishing = true;
-    say("So the task is done" + std::string(progress_.current ? " once this subtask is." : "."));
+    say(language::read_back_task_done(progress_.current.has_value()));
     return {};
   }
   // Proceed: the loop runs (set above).
-  say("So I " + progress_.current->verb + " everything else " + progress_.current->relation + " " +
-      language::spoken_places(world(), progress_.current->places) + " the same way.");
+  say(language::read_back_the_rest_the_same_way(progress_.current->verb, progress_.current->relation, world(),
+                                                 progress_.current->places));
   return {};
 }
 
@@ -207,11 +207,8 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::start_subtask(const
     progress_.task.subtasks.push_back(learned);
     if (auto s = remember_task(); !s) return stop(s.error());
   }
-  const std::string where = next.relation + " " + language::spoken_places(world(), next.places);
-  if (next.mode == Current::Mode::kFirstObject)
-    say("So I " + next.verb + " one thing " + where + " at a time.");
-  else
-    say("So I " + next.verb + " what is " + where + ", one thing at a time.");
+  say(language::read_back_part(next.verb, next.relation, world(), next.places,
+                               next.mode == Current::Mode::kFirstObject));
   return {};
 }
 
@@ -234,13 +231,12 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::learn_subtask_end()
   begin_lesson(heard->text);
   if (std::holds_alternative<language::Finished>(*heard->reply)) {
     progress_.one_was_all();
-    say("So that is all there is to " + c.verb + " for one thing.");
+    say(language::read_back_one_was_all(c.verb));
     return {};
   }
   if (const auto* subtask = std::get_if<language::SubtaskNamed>(&*heard->reply)) return start_subtask(*subtask);
   progress_.loop();
-  say("So I " + c.verb + " everything else " + c.relation + " " + language::spoken_places(world(), c.places) +
-      " the same way.");
+  say(language::read_back_the_rest_the_same_way(c.verb, c.relation, world(), c.places));
   return {};
 }
 
@@ -250,8 +246,7 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::start_known_subtask
   std::vector<ObjectId> places = world().universe->with_category(subtask.place_category);
   if (places.empty()) {
     if (learning_)
-      say("There is no " + language::spoken_category(subtask.place_category) + " here, so I cannot " + subtask.verb +
-          " it.");
+      say(language::no_place_for_known_part(subtask.place_category, subtask.verb));
     else
       report_.help_needed.push_back("which " + language::spoken_category(subtask.place_category) + " to " +
                                     subtask.verb + ": there is none here");
@@ -293,11 +288,9 @@ void TaskLearningAgent::Session::finish_subtask() {
         }));
     const long long remaining = static_cast<long long>(items_at(world(), c.places)) - left;
     if (remaining == 0 && left == 0)
-      say("There is nothing " + std::string(c.mode == Current::Mode::kFirstObject ? "" : "left ") + c.relation + " " +
-          language::spoken_places(world(), c.places) + ".");
+      say(language::nothing_left(c.relation, world(), c.places, c.mode == Current::Mode::kFirstObject));
     else if (remaining > 0)
-      say("I could not " + c.verb + " " + (remaining == 1 ? "1 object" : std::to_string(remaining) + " objects") +
-          " still " + c.relation + " " + language::spoken_places(world(), c.places) + ".");
+      say(language::could_not_finish(c.verb, remaining, c.relation, world(), c.places));
   }
   progress_.subtask_done();
 }

@@ -8,6 +8,7 @@
 #include "agent/session.h"
 #include "language/generation.h"
 #include "language/narration.h"
+#include "language/narration_steps.h"
 #include "language/utterance.h"
 #include "util/log.h"
 #include "util/text.h"
@@ -138,11 +139,7 @@ void TaskLearningAgent::Session::hear_rule(const language::RuleReading& rule, co
   for (ClassRule& said : class_rules_of(world(), rule, RuleSource::kPerson, text, said_scope(), kPersonRuleConfidence))
     if (auto kept = store_class_rule(said); !kept) spdlog::warn("{}", kept.error().message);
   say(language::read_back_rule(world(), rule));
-  if (!rule.not_understood.empty()) {
-    std::vector<std::string> parts;
-    for (const std::string& part : rule.not_understood) parts.push_back("\"" + part + "\"");
-    say("I did not follow " + language::list_phrase(parts) + "; I will ask about those things when I come to them.");
-  }
+  if (!rule.not_understood.empty()) say(language::rule_parts_not_followed(rule.not_understood));
   spdlog::info("a person's rule: {}", language::read_back_rule(world(), rule));
 }
 

@@ -10,6 +10,7 @@
 
 #include "agent/session.h"
 #include "language/narration.h"
+#include "language/narration_steps.h"
 #include "search/iterative_deepening.h"
 #include "util/log.h"
 #include "util/text.h"
@@ -43,11 +44,11 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::undo() {
   auto undone = lessons_.undo(progress_, agent_.knowledge_);
   if (!undone) return stop(undone.error());
   if (!*undone) {
-    say("There is nothing to undo yet.", Voice::kResponse);
+    say(language::nothing_to_undo(), Voice::kResponse);
     return {};
   }
   for (const ClassRule& rule : (*undone)->class_rules) said_rules_.remove(rule);
-  say(with_period("I forgot what you told me last: \"" + (*undone)->reply + "\""), Voice::kResponse);
+  say(language::forgot_last((*undone)->reply), Voice::kResponse);
   put_world_back((*undone)->world, (*undone)->history);
   return tl::unexpected(Stop{});
 }
@@ -75,13 +76,12 @@ void TaskLearningAgent::Session::put_world_back(const State& before, std::size_t
       undoing.push_back(action);
     }
     if (!done) {
-      if (!undoing.empty()) say("To put things back, " + language::report_actions(world(), undoing), Voice::kResponse);
-      say("I could not put everything back as it was.", Voice::kResponse);
+      if (std::string back = language::put_back(world(), undoing, false); !back.empty()) say(back, Voice::kResponse);
+      say(language::could_not_put_back(), Voice::kResponse);
       return;
     }
   }
-  std::string report = language::report_actions(world(), undoing);
-  if (!report.empty()) say("To put things back as they were, " + report, Voice::kResponse);
+  if (std::string back = language::put_back(world(), undoing, true); !back.empty()) say(back, Voice::kResponse);
 }
 
 }  // namespace apprentice

@@ -177,7 +177,11 @@ std::string location_phrase(const World& world, ObjectId object) {
   return (world.state.holds(Fact(world.vocabulary.on, {object, *where})) ? "on " : "in ") + noun_for(world, *where);
 }
 
-std::string say_task_name(std::string_view name) { return capitalize(std::string(bare(name))) + "."; }
+std::string say_task_name(std::string_view name) {
+  std::string said(bare(name));
+  std::replace(said.begin(), said.end(), '-', ' ');  // "tidy exam-room" is said "tidy exam room"
+  return capitalize(said) + ".";
+}
 
 namespace {
 

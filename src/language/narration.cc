@@ -387,7 +387,10 @@ std::string task_phrase(std::string_view task_name) {
   static const std::set<std::string> kDeterminers = {"the", "a", "an", "my", "your", "our", "this", "that",
                                                      "these", "those", "all", "every", "some", "his", "her", "their"};
   static const std::set<std::string> kParticles = {"up", "away", "out", "off", "down"};
-  std::vector<std::string> words = split_words(task_name);
+  // "tidy exam-room": a location's hyphen is said as a space, as a name's.
+  std::string said(task_name);
+  std::replace(said.begin(), said.end(), '-', ' ');
+  std::vector<std::string> words = split_words(said);
   if (words.size() < 2) return join(words, " ");
   std::size_t object_start = kParticles.count(words[1]) && words.size() > 2 ? 2 : 1;
   // "clean up after party" -> "clean up after the party".

@@ -376,15 +376,19 @@ bool says_property(std::string_view word, std::string_view property, const Lexic
       {"back", "rear", "hind", "behind"},
       {"left", "leftmost", "lefthand"},
       {"right", "rightmost", "righthand"}};
+  // Both in base forms too: "bottom" says the property "lower" ("low").
   std::vector<std::string> forms{std::string(word)};
   for (std::string& base : lexicon.adjective_lemmas(word)) forms.push_back(std::move(base));
-  for (const std::string& form : forms) {
-    if (form == property) return true;
-    for (const auto& end : kSameEnd) {
-      bool has_form = std::find(end.begin(), end.end(), form) != end.end();
-      if (has_form && std::find(end.begin(), end.end(), property) != end.end()) return true;
+  std::vector<std::string> property_forms{std::string(property)};
+  for (std::string& base : lexicon.adjective_lemmas(property)) property_forms.push_back(std::move(base));
+  for (const std::string& form : forms)
+    for (const std::string& said : property_forms) {
+      if (form == said) return true;
+      for (const auto& end : kSameEnd) {
+        bool has_form = std::find(end.begin(), end.end(), form) != end.end();
+        if (has_form && std::find(end.begin(), end.end(), said) != end.end()) return true;
+      }
     }
-  }
   return false;
 }
 

@@ -340,6 +340,7 @@ Reply read_reply_plain(const Grounder& grounder, const World& world, const Reply
 
 std::vector<std::string> example_replies(const World& world, const ReplyContext& context) {
   std::string room = world.location.empty() ? "room" : world.location;
+  std::replace(room.begin(), room.end(), '-', ' ');  // "exam-room" is said "exam room"
   std::vector<std::string> out;
   switch (context.asked) {
     case Asked::kTask: out = {"tidy the " + room, "I want you to tidy the " + room}; break;

@@ -27,16 +27,6 @@ namespace apprentice::language {
 namespace acts {
 namespace {
 
-// "you left it open", "someone left the lid up": what a person did, told,
-// not what the agent should do.
-bool tells_what_someone_did(const Words& words) {
-  for (std::size_t i = 1; i < words.size(); ++i)
-    if (words[i] == "left" && is_one_of(words[i - 1], {"you", "someone", "somebody", "they", "he", "she", "we", "i",
-                                                        "kids", "who", "guest", "guests"}))
-      return true;
-  return false;
-}
-
 // "there by the X", "here next to the X": a spot said by another thing.
 bool there_described(const Words& words) {
   for (std::size_t i = 0; i + 1 < words.size(); ++i)
@@ -123,6 +113,52 @@ std::vector<Action> other_closings(const Grounder& grounder, const World& world,
   return actions;
 }
 
+// "pan in the sink, knife too", "sandpaper in the bottom drawer and the
+// batteries as well": the answer before the clauses that say "the same
+// for" other things, and those clauses ("knife too"); none when the answer
+// ends with no such clause.
+std::pair<std::string, std::vector<std::string>> without_trailing_toos(std::string_view answer) {
+  const Words words = reply_words(answer);
+  std::vector<std::string> toos;
+  std::size_t end = words.size();
+  for (;;) {
+    std::size_t cut = end;
+    while (cut > 0 && !is_one_of(words[cut - 1], {",", "and"})) --cut;
+    if (cut == 0) break;
+    Words clause(words.begin() + static_cast<std::ptrdiff_t>(cut), words.begin() + static_cast<std::ptrdiff_t>(end));
+    const bool too = !clause.empty() && (clause.back() == "too" || has(clause, {"as", "well"}));
+    const bool says_a_place = std::any_of(clause.begin(), clause.end(), [](const std::string& w) {
+      return is_one_of(w, {"in", "on", "into", "onto", "inside", "there", "it", "them", "go", "goes", "put"});
+    });
+    if (!too || says_a_place || clause.size() > 5) break;
+    toos.insert(toos.begin(), quoted_words(clause));
+    end = cut - 1;
+    while (end > 0 && is_one_of(words[end - 1], {",", "and"})) --end;
+  }
+  if (toos.empty()) return {std::string(answer), {}};
+  return {quoted_words(Words(words.begin(), words.begin() + static_cast<std::ptrdiff_t>(end))), toos};
+}
+
+// The goals of the things a "knife too" names, like the goal `given` the
+// thing asked about; added to its others.
+void add_the_same_for(const Grounder& grounder, const World& world, const ReplyContext& at,
+                      const std::vector<std::string>& toos, GoalGiven& given) {
+  if (!at.object) return;
+  ReplyContext after = at;
+  after.last_goal = ReplyContext::LastGoal{*at.object, given.goal};
+  for (const std::string& too : toos) {
+    const Reply same = read_reply(grounder, world, after, too);
+    const auto* theirs = std::get_if<GoalGiven>(&same);
+    if (theirs == nullptr) continue;
+    auto add = [&](const Goal& g) {
+      if (!(g == given.goal) && std::find(given.others.begin(), given.others.end(), g) == given.others.end())
+        given.others.push_back(g);
+    };
+    add(theirs->goal);
+    for (const Goal& g : theirs->others) add(g);
+  }
+}
+
 }  // namespace
 
 ReplyActs read(const Grounder& grounder, const World& world, const ReplyContext& context, std::string_view text) {
@@ -157,7 +193,10 @@ ReplyActs read(const Grounder& grounder, const World& world, const ReplyContext&
   bool undo_words = false;  // an undo was said with the word "undo"
   for (std::size_t i = 0; i < parts.size(); ++i) {
     const Segment& s = parts[i];
-    if (without_interjections(s.words).empty() && answer.empty() && before.empty()) continue;
+    // ("yeah. oh and close the cabinet": at a yes/no question a yes said
+    // with a word that is also a filler is the answer.)
+    const bool yes_or_no_said = context.asked == Asked::kYesNo && answer_prefix(s.words);
+    if (without_interjections(s.words).empty() && answer.empty() && before.empty() && !yes_or_no_said) continue;
     if (corrects && answer.empty() && before.empty()) {
       Marker m = marker(s.words);
       if (m.length > 0 && m.length >= s.words.size()) {
@@ -191,10 +230,6 @@ ReplyActs read(const Grounder& grounder, const World& world, const ReplyContext&
       after.push_back(*q);
       continue;
     }
-    if (!answer.empty() && tells_what_someone_did(s.words)) {
-      out.notes.push_back("I took " + quote(s.text) + " as a remark.");
-      continue;
-    }
     if (context.asked != Asked::kAction)
       if (auto actions = door_action(grounder, world, context, s.words)) {
         door_first.push_back(answer.empty());
@@ -202,13 +237,38 @@ ReplyActs read(const Grounder& grounder, const World& world, const ReplyContext&
         door_actions.push_back(*actions);
         continue;
       }
+    if (!answer.empty() && what_someone_did_from(s.words) < s.words.size()) {
+      out.notes.push_back("I took " + quote(s.text) + " as a remark.");
+      continue;
+    }
+    // "leave the sweater, I'll wear it", "close the cabinet, it's been
+    // open all day": why, told after an answer or an action.
+    const bool about_a_thing = context.asked == Asked::kGoal || context.asked == Asked::kYesNo;
+    if (about_a_thing && (!answer.empty() || !doors.empty()) && says_why(grounder, world, s.words)) {
+      out.notes.push_back("I took " + quote(s.text) + " as a reason, not an instruction.");
+      continue;
+    }
+    if (auto kept = about_a_thing ? without_reason(grounder, world, s.words) : std::nullopt) {
+      const Words reason(s.words.begin() + static_cast<std::ptrdiff_t>(kept->size()), s.words.end());
+      out.notes.push_back("I took " + quote(quoted_words(reason)) + " as a reason, not an instruction.");
+      repaired.push_back({quoted_words(*kept), *kept});
+      answer.push_back(&repaired.back());
+      continue;
+    }
     // "bottom drawer. no wait, top", "in the fridge, sorry, the pantry":
     // the reply corrects itself, and what it said before the marker is
     // not part of the answer. A marker said last corrects nothing.
-    if (!answer.empty()) {
+    if (!answer.empty() || !doors.empty()) {
       Marker m = marker(s.words);
       if (m.length > 0 && m.strong && (m.length < s.words.size() || i + 1 < parts.size())) {
-        out.notes.push_back("I left out " + quote(joined(answer)) + ": you corrected it.");
+        // ("first shut the top drawer... no wait it's already shut": the
+        // action said before the marker is taken back too.)
+        std::vector<const Segment*> left_out = doors;
+        left_out.insert(left_out.end(), answer.begin(), answer.end());
+        out.notes.push_back("I left out " + quote(joined(left_out)) + ": you corrected it.");
+        doors.clear();
+        door_actions.clear();
+        door_first.clear();
         answer.clear();
         lead_in_answer = false;
         if (m.length < s.words.size()) {
@@ -313,6 +373,7 @@ ReplyActs read(const Grounder& grounder, const World& world, const ReplyContext&
   // Remarks ("it's soaking", "kids") are dropped when the rest is whole.
   Reply reply = Unusable{};
   bool answered = !trim(answer_text).empty();
+  const std::size_t notes_before_answer = out.notes.size();
   if (answered) {
     reply = read_answer(grounder, world, at, answer_text, out.notes);
     if (!usable(reply) && answer.size() > 1) {
@@ -327,6 +388,32 @@ ReplyActs read(const Grounder& grounder, const World& world, const ReplyContext&
         if (usable(retry)) {
           reply = retry;
           for (const std::string& d : dropped) out.notes.push_back("I took " + quote(d) + " as a remark.");
+        }
+      }
+    }
+  }
+  // "pan in the sink, knife too", read whole as the pan's goal alone: the
+  // answer read without the "too"s, which then give their things the same
+  // goal. ("milk and cream too" read whole is both; "combs in the jar,
+  // brushes in the drawer, scissors too" says several places, and which
+  // one "too" repeats is not guessed.)
+  if (answered && at.asked == Asked::kGoal && at.object) {
+    const auto* whole_goal = std::get_if<GoalGiven>(&reply);
+    auto [before_toos, toos] = without_trailing_toos(answer_text);
+    const Words before = reply_words(before_toos);
+    const auto places_said = std::count_if(before.begin(), before.end(), [](const std::string& w) {
+      return is_one_of(w, {"in", "on", "into", "onto", "inside"});
+    });
+    if ((whole_goal == nullptr || whole_goal->others.empty()) && !toos.empty() && !trim(before_toos).empty() &&
+        places_said <= 1) {
+      std::vector<std::string> notes;
+      Reply first = read_answer(grounder, world, at, before_toos, notes);
+      if (auto* given = std::get_if<GoalGiven>(&first); given && given->others.empty()) {
+        add_the_same_for(grounder, world, at, toos, *given);
+        if (!given->others.empty()) {
+          reply = std::move(first);
+          out.notes.resize(notes_before_answer);
+          out.notes.insert(out.notes.end(), notes.begin(), notes.end());
         }
       }
     }

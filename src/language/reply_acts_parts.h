@@ -56,6 +56,10 @@ std::optional<Command> question(const Grounder& grounder, const World& world, co
 bool ends_session(const Words& said, Asked asked);
 // "what can you do?", "what do I type here?": the teacher asks what to say.
 bool asks_for_help(const Words& said);
+// "you left it open", "someone left the lid up": where the words tell
+// what a person did (not what the agent should do); words.size() when
+// they tell none.
+std::size_t what_someone_did_from(const Words& words);
 // "close the top drawer", "shut both drawers": the actions, or nullopt when
 // the segment is not such a command.
 std::optional<std::vector<Action>> door_action(const Grounder& grounder, const World& world,
@@ -79,6 +83,14 @@ Reply read_answer(const Grounder& grounder, const World& world, const ReplyConte
                   std::vector<std::string>& notes);
 // Segments that name nothing here and hold no instruction: remarks.
 bool is_remark(const Grounder& grounder, const World& world, const Words& words);
+// "I'll wear it", "more stuff is going in", "there's another one", "so I
+// can grab it in the dark": a clause with a subject of its own (or a
+// reason's conjunction) that names nothing here and says no place: why,
+// told after the answer, not what to do.
+bool says_why(const Grounder& grounder, const World& world, const Words& words);
+// "leave it open so I can grab it in the dark": the words before a reason
+// said inside a segment; nullopt when it holds none.
+std::optional<Words> without_reason(const Grounder& grounder, const World& world, const Words& words);
 std::string joined(const std::vector<const Segment*>& parts);
 
 // --- Several steps (reply_steps.cc) --------------------------------------

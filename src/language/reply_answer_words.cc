@@ -166,6 +166,57 @@ bool is_remark(const Grounder& grounder, const World& world, const Words& words)
   return true;
 }
 
+namespace {
+
+// Words that begin a clause told about someone or something: its subject
+// ("I", "we", "there", "more stuff", "a student").
+bool begins_with_a_subject(const Words& words) {
+  if (words.size() < 2) return false;
+  return is_one_of(words.front(), {"i", "we", "you", "he", "she", "they", "it", "there", "someone", "somebody",
+                                   "everyone", "nobody", "more", "a", "an", "some", "my", "our", "his", "her",
+                                   "their", "kids"});
+}
+
+// Whether some word of `words` names a thing or a place here (by the
+// reference's tiers, partial names included), or says where a thing goes.
+bool names_or_places(const Grounder& grounder, const World& world, const Words& words) {
+  ReferenceContext context{world, grounder.lexicon(), std::nullopt};
+  context.partial_names = true;
+  for (const std::string& w : words) {
+    if (is_determiner(w) || is_object_pronoun(w) || is_copula(w) || is_filler(w)) continue;
+    // ("I can grab it": a modal is no beer can.)
+    if (is_one_of(w, {"can", "will", "would", "could", "might", "must", "may", "shall", "need", "needs", "have",
+                      "has", "had", "do", "does", "did", "not", "still", "just", "already"}))
+      continue;
+    if (is_one_of(w, {"go", "goes", "belong", "belongs", "live", "lives", "stay", "stays", "should"})) return true;
+    if (std::holds_alternative<CandidateSet>(candidates_for(NounPhrase{"", {w}}, Role::kItem, context))) return true;
+    if (std::holds_alternative<CandidateSet>(candidates_for(NounPhrase{"", {w}}, Role::kPlace, context))) return true;
+  }
+  return false;
+}
+
+bool is_reason_word(std::string_view w) { return is_one_of(w, {"so", "because", "cause", "coz", "since"}); }
+
+}  // namespace
+
+bool says_why(const Grounder& grounder, const World& world, const Words& said) {
+  const Words words = without_leading_connectives(without_interjections(said));
+  const bool told = begins_with_a_subject(words) || (!words.empty() && is_reason_word(words.front()));
+  return told && !names_or_places(grounder, world, words);
+}
+
+std::optional<Words> without_reason(const Grounder& grounder, const World& world, const Words& words) {
+  for (std::size_t i = 1; i + 1 < words.size(); ++i) {
+    if (!is_reason_word(words[i])) continue;
+    // ("ok so I want you to ...": "so" after fillers begins the reply.)
+    if (without_interjections(Words(words.begin(), words.begin() + static_cast<std::ptrdiff_t>(i))).empty()) continue;
+    const Words reason(words.begin() + static_cast<std::ptrdiff_t>(i), words.end());
+    if (begins_with_a_subject(Words(reason.begin() + 1, reason.end())) && !names_or_places(grounder, world, reason))
+      return Words(words.begin(), words.begin() + static_cast<std::ptrdiff_t>(i));
+  }
+  return std::nullopt;
+}
+
 std::string joined(const std::vector<const Segment*>& parts) {
   std::vector<std::string> texts;
   for (const Segment* s : parts) texts.push_back(s->text);

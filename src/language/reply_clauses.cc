@@ -132,6 +132,10 @@ class ClauseReader {
     if (v_.is_name_word(word) && !(i_ == 0 && v_.household_verb(word) == word && starts_noun(1))) return false;
     // "trash can", "recycle bin": the first word of a compound noun.
     if (i_ + 1 < w_.size() && v_.compound_noun(word, at(1))) return false;
+    // "lower drawer", "upper cabinet": a word for a property of a look-alike
+    // before a name is the name's, unless it is a household verb.
+    if (i_ + 1 < w_.size() && v_.is_property(word) && v_.is_name_word(at(1)) && v_.household_verb(word).empty())
+      return false;
     base = v_.household_verb(word);
     if (!base.empty()) return true;
     base = v_.any_verb(word);
@@ -309,6 +313,19 @@ class ClauseReader {
     for (bool first = true; i_ < w_.size() && continues_noun(0, first); first = false) {
       if (at(0) != "one" && at(0) != "ones") out.words.emplace_back(at(0));
       ++i_;
+    }
+    // "the shelf on the right", "the cabinet up top", "the drawer at the
+    // bottom": a look-alike's property said after its name, last in the
+    // phrase ("on the top shelf" names another place).
+    auto ends_phrase = [&](std::size_t k) { return at(k).empty() || is_one_of(at(k), {",", "and", "then", "please"}); };
+    if (!out.words.empty()) {
+      if (is_one_of(at(0), {"on", "at", "to"}) && at(1) == "the" && v_.is_property(at(2)) && ends_phrase(3)) {
+        out.words.insert(out.words.begin(), std::string(at(2)));
+        i_ += 3;
+      } else if (at(0) == "up" && v_.is_property(at(1)) && ends_phrase(2)) {
+        out.words.insert(out.words.begin(), std::string(at(1)));
+        i_ += 2;
+      }
     }
     // "this one", "that one": the thing asked about.
     if (out.words.empty() && is_one_of(out.determiner, {"this", "that", "these", "those"})) out.pronoun = true;

@@ -65,6 +65,13 @@ Reply asked_back(const World& world, const ReplyContext& c, const std::string& r
   return Unusable{reason + where, example_replies(world, c), std::nullopt};
 }
 
+// The words of "leave it be", "leave them where they are", "leave it
+// out": where the thing is, or that it stays.
+bool says_where_it_is(std::string_view w) {
+  return is_one_of(w, {"it", "that", "this", "one", "them", "those", "alone", "be", "there", "where", "is", "are",
+                       "they", "as", "for", "here", "put", "was", "the", "way", "out"});
+}
+
 // "done", "skip it", "leave it be", "it stays where it is".
 bool leaves_it_alone(const Words& said) {
   Words words;
@@ -78,10 +85,28 @@ bool leaves_it_alone(const Words& said) {
   for (const auto& phrase : kWhole)
     if (std::equal(words.begin(), words.end(), phrase.begin(), phrase.end())) return true;
   if (!is_one_of(words.front(), {"leave", "skip", "ignore", "keep"})) return false;
-  return std::all_of(words.begin() + 1, words.end(), [](const std::string& w) {
-    return is_one_of(w, {"it", "that", "this", "one", "them", "those", "alone", "be", "there", "where", "is", "are",
-                         "they", "as", "for", "here", "put", "was", "the", "way"});
+  return std::all_of(words.begin() + 1, words.end(), [](const std::string& w) { return says_where_it_is(w); });
+}
+
+// "leave the sweater", "leave the notebook out", asked about the sweater or
+// the notebook: the thing asked about named, and left alone.
+bool leaves_the_thing_alone(const Grounder& grounder, const World& world, const ReplyContext& c, const Words& said) {
+  if (!c.object) return false;
+  Words words;
+  for (const std::string& w : said)
+    if (w != "," && !is_filler(w)) words.push_back(w);
+  if (words.size() < 2 || !is_one_of(words.front(), {"leave", "skip", "ignore"})) return false;
+  Words named;
+  for (auto w = words.begin() + 1; w != words.end(); ++w)
+    if (!says_where_it_is(*w) && !is_determiner(*w)) named.push_back(*w);
+  // ("leave the mug in the sink" says where it goes.)
+  const bool says_a_place = std::any_of(named.begin(), named.end(), [](const std::string& w) {
+    return is_one_of(w, {"in", "on", "into", "onto", "inside", "with", "by", "next", "under", "open", "closed", "shut"});
   });
+  if (named.empty() || says_a_place) return false;
+  const std::vector<ObjectId> things = may_name(grounder, world, join(named, " "));
+  const std::string& kind = kind_of(world, *c.object);
+  return std::any_of(things.begin(), things.end(), [&](ObjectId o) { return kind_of(world, o) == kind; });
 }
 
 // The goal given last, for `object`.
@@ -392,7 +417,7 @@ std::optional<Reply> read_goal_with_rest(const Grounder& grounder, const World& 
 std::optional<Reply> read_goal_by_others(const Grounder& grounder, const World& world, const ReplyContext& context,
                                          std::string_view text, const Reply& first) {
   Words words = reply_words(text);
-  if (leaves_it_alone(words)) return Finished{};
+  if (leaves_it_alone(words) || leaves_the_thing_alone(grounder, world, context, words)) return Finished{};
   // "I'm done", "that's it", "we're done here": an ending, which the
   // question pending decides the meaning of (language/reply.h, Finished).
   if (ReplyInput in(grounder, world, context, words); says_only_an_ending(words, in)) return Finished{true};

@@ -230,12 +230,23 @@ bool is_subordinator(std::string_view w) {
                        "although", "cause", "cuz", "coz"});
 }
 
+std::size_t what_someone_did_from(const Words& words) {
+  for (std::size_t i = 1; i < words.size(); ++i)
+    if (words[i] == "left" && is_one_of(words[i - 1], {"you", "someone", "somebody", "they", "he", "she", "we", "i",
+                                                        "kids", "who", "guest", "guests"}))
+      return i - 1;
+  return words.size();
+}
+
 // "close the top drawer", "shut both drawers", "open the compost bin
 // first": the actions, or nullopt when the segment is not such a command.
 std::optional<std::vector<Action>> door_action(const Grounder& grounder, const World& world,
                                                const ReplyContext& context, const Words& said) {
   Words words = without_interjections(said);
-  while (!words.empty() && (is_connective(words.front()) || is_one_of(words.front(), {"can", "could", "would", "you", "also", "just"})))
+  // "first shut the fridge", "please close it": an order word or a
+  // courtesy before the verb.
+  while (!words.empty() && (is_connective(words.front()) ||
+                            is_one_of(words.front(), {"can", "could", "would", "you", "also", "just", "first", "please"})))
     words.erase(words.begin());
   // "lock it": the domain has no locks; a locked door is a closed one.
   // ("lock it in the cabinet" puts it there: no door action.)
@@ -247,11 +258,14 @@ std::optional<std::vector<Action>> door_action(const Grounder& grounder, const W
   const bool open = words.front() == "open";
   // "shut the top drawer if it's still open", "close it so the kids can't
   // get in": a clause of condition or reason says when or why, not what.
-  Words object(words.begin() + 1, std::find_if(words.begin() + 1, words.end(), [](const std::string& w) {
+  // ("close the icebox someone left it open": what a person did, told
+  // after the command, is no part of what to close.)
+  const auto told = words.begin() + static_cast<std::ptrdiff_t>(std::max<std::size_t>(1, what_someone_did_from(words)));
+  Words object(words.begin() + 1, std::find_if(words.begin() + 1, told, [](const std::string& w) {
                  return is_subordinator(w);
                }));
   std::erase_if(object, [](const std::string& w) {
-    return is_one_of(w, {"first", "now", "please", "too", "again", "up", "properly", "after", "afterwards"});
+    return is_one_of(w, {"first", "now", "please", "pls", "plz", "too", "again", "up", "properly", "after", "afterwards"});
   });
   if (object.empty()) return std::nullopt;
   bool every = is_one_of(object.front(), {"both", "all", "every", "each"}) || object.back().ends_with("s");

@@ -56,15 +56,23 @@ std::vector<Words> parts_at_and(const std::vector<Words>& parts) {
 // "counter next", "the folding table": a place of the world said with no
 // verb and nothing said of it ("the table's clear", "the bag still has
 // stuff in it" say something).
-bool names_a_place_alone(const Grounder& grounder, const World& world, const Words& part) {
+// The places it may name, or none.
+std::vector<ObjectId> places_named_alone(const Grounder& grounder, const World& world, const Words& part) {
   ReferenceContext context{world, grounder.lexicon(), std::nullopt};
-  bool place = false;
+  std::vector<ObjectId> places;
   for (const std::string& w : part) {
-    if (is_copula(w) || is_one_of(w, {"has", "have", "still", "more", "there", "it", "that", "this"})) return false;
+    if (is_copula(w) || is_one_of(w, {"has", "have", "still", "more", "there", "it", "that", "this"})) return {};
     if (is_determiner(w)) continue;
-    if (std::holds_alternative<CandidateSet>(candidates_for(NounPhrase{"", {w}}, Role::kPlace, context))) place = true;
+    if (const auto found = candidates_for(NounPhrase{"", {w}}, Role::kPlace, context);
+        const auto* set = std::get_if<CandidateSet>(&found))
+      for (ObjectId o : set->objects)
+        if (std::find(places.begin(), places.end(), o) == places.end()) places.push_back(o);
   }
-  return place;
+  return places;
+}
+
+bool names_a_place_alone(const Grounder& grounder, const World& world, const Words& part) {
+  return !places_named_alone(grounder, world, part).empty();
 }
 
 // "clear" and "the table": the part with the verb before it.
@@ -93,8 +101,13 @@ std::optional<std::pair<Reply, std::vector<std::string>>> several_steps(const Gr
   std::optional<Reply> first;
   std::vector<std::string> rest;
   std::string verb;  // the last verb said, for a part without one
+  std::vector<ObjectId> last_places;  // the places of the last part read
   bool names_a_part = false;  // "that's it, we're done" is one ending
   ReplyContext at = context;
+  // "shut the drawer... no wait it's already shut. just clear the table":
+  // a correction inside the reply is read with the reply's acts.
+  for (std::size_t i = 1; i < parts.size(); ++i)
+    if (const Marker m = marker(parts[i]); m.length > 0 && m.strong) return std::nullopt;
   for (std::size_t i = 0; i < parts.size(); ++i) {
     // "ok now shut the cupboard": "now" was not first until "ok" went.
     Words part = without_leading_connectives(without_interjections(parts[i]));
@@ -107,8 +120,15 @@ std::optional<std::pair<Reply, std::vector<std::string>>> several_steps(const Gr
         at.asked = Asked::kTaskStep;
         continue;
       }
+    // ("the folding table, clear it": "it" is the place of the part before.)
+    const bool pronoun = std::any_of(part.begin(), part.end(), [](const std::string& w) { return is_object_pronoun(w); });
+    at.topic_places = pronoun && !last_places.empty() ? last_places : context.topic_places;
     Reply reply = read_reply(grounder, world, at, quoted_words(part));
-    if (!usable(reply) && !verb.empty() && !starts_with_verb(part, verb)) {
+    // (A place alone reads as its own kind's part too, "start with the
+    // table"; after a part, it takes that part's verb first.)
+    const bool place_first = !part.empty() && !grounder.lexicon().has_verb(part.front()) &&
+                             names_a_place_alone(grounder, world, part);
+    if ((!usable(reply) || (i > 0 && place_first)) && !verb.empty() && !starts_with_verb(part, verb)) {
       Words with = with_verb(verb, part);
       Reply again = read_reply(grounder, world, at, quoted_words(with));
       // "floor next, then the bucket": a surface's general verb carried to
@@ -127,6 +147,14 @@ std::optional<std::pair<Reply, std::vector<std::string>>> several_steps(const Gr
     }
     // "that's it for the desk", "done with the table": an ending about
     // the part under way, said with its place.
+    // ("the counter is done. clear the floor next": a part's ending, asked
+    // back when said alone at the task's next step, is here the part's.)
+    if (!usable(reply) && at.asked == Asked::kTaskStep && parts.size() > 1) {
+      ReplyContext part_end = at;
+      part_end.asked = Asked::kSubtaskEnd;
+      if (Reply ending = read_reply(grounder, world, part_end, quoted_words(part)); std::holds_alternative<Finished>(ending))
+        reply = ending;
+    }
     if (!usable(reply)) {
       auto about = std::find_if(part.begin() + 1, part.end(), [](const std::string& w) { return is_one_of(w, {"for", "with"}); });
       if (about != part.end() && about != part.begin()) {
@@ -142,7 +170,11 @@ std::optional<std::pair<Reply, std::vector<std::string>>> several_steps(const Gr
     if (!step && !usable(reply) && names_a_place_alone(grounder, world, part))
       for (std::size_t j = 0; j < parts.size(); ++j) {
         if (j == i) continue;
-        Reply other = read_reply(grounder, world, at, quoted_words(without_interjections(parts[j])));
+        // (Read as a part's ending: "that's it for the bench" is asked back
+        // at the task's next step, and ends a part here all the same.)
+        ReplyContext part_end = at;
+        part_end.asked = Asked::kSubtaskEnd;
+        Reply other = read_reply(grounder, world, part_end, quoted_words(without_interjections(parts[j])));
         if (std::holds_alternative<Finished>(other)) return std::make_pair(reply, std::vector<std::string>{});
       }
     // "clear the floor, then the top of the piano": a later part about a
@@ -154,10 +186,16 @@ std::optional<std::pair<Reply, std::vector<std::string>>> several_steps(const Gr
       continue;
     }
     if (!step) return std::nullopt;
-    if (const auto* named = std::get_if<SubtaskNamed>(&reply)) verb = named->verb;
+    if (const auto* named = std::get_if<SubtaskNamed>(&reply)) {
+      verb = named->verb;
+      last_places = named->places;
+    } else if (std::vector<ObjectId> said = places_named_alone(grounder, world, part); !usable(reply) && !said.empty()) {
+      last_places = said;  // "now the buckets, empty them"
+    }
     names_a_part = names_a_part || std::holds_alternative<SubtaskNamed>(reply) || std::holds_alternative<LoopNamed>(reply);
     if (i == 0) first = reply;
-    else rest.push_back(quoted_words(part));
+    // ("the floor. get all that junk off the floor": one part said twice.)
+    else if (!(first && format_reply(world, *first) == format_reply(world, reply))) rest.push_back(quoted_words(part));
     // What follows the first part is read at the question about the task's
     // next step.
     at.asked = Asked::kTaskStep;

@@ -167,7 +167,18 @@ class StructureReader {
       else if (proceed_words(piece) || (in_.context.asked == Asked::kSubtaskEnd && says_there_is_more(piece)))
         proceed = true;
     }
-    if (finished) return Finished{};
+    if (finished) {
+      // "that's it for the table", "the counter is clear", asked for the
+      // task's next step: that part is over, which says nothing of the
+      // task; asked back rather than ending the task with parts left.
+      if (in_.context.asked == Asked::kTaskStep && !problem_ && !ambiguous_)
+        if (auto part = first_places(clauses); part && !part->objects.empty())
+          return unusable(in_, Problem{"So " + spoken_places(in_.world, part->objects) +
+                                           " is done. Say \"that's all\" if the whole task is done, or tell me what "
+                                           "to do next.",
+                                       std::nullopt});
+      return Finished{};
+    }
     // "the counter next", "same with the counter": the last subtask's verb
     // at a place named without one, when it is the verb for places of this
     // kind ("clear" a surface, "empty" a receptacle). "Sort the baskets",
@@ -180,6 +191,29 @@ class StructureReader {
       const std::string& last = in_.context.taught_subtasks.back();
       if (!holding.empty() && last == clearing_verb(in_.world.universe->info(holding.front()).kind))
         return SubtaskNamed{last, relation(holding.front()), holding};
+    }
+    // "start with the table", "the sink first", before any part was taught:
+    // the verb for places of its kind, said in the read-back.
+    // (A surface is cleared; what is done with a receptacle's things,
+    // emptied, unloaded or sorted, is asked, as is a place of several.)
+    // (Said with more, "the bench, then the floor", where "the bench" names
+    // nothing here, the part is asked, lest one be lost.)
+    const bool asks = !in_.words.empty() && is_one_of(in_.words.front(), {"what", "where", "which", "why", "how", "is", "are"});
+    const bool one_phrase = comma_pieces(in_.words).size() == 1 &&
+                            std::none_of(in_.words.begin(), in_.words.end(), [](const std::string& w) {
+                              return is_one_of(w, {"and", "then", "after", "before"});
+                            });
+    if (named && in_.context.taught_subtasks.empty() && in_.context.asked == Asked::kTaskStep && !problem_ &&
+        !ambiguous_ && !item_named_ && !proceed && !asks && one_phrase) {
+      std::vector<ObjectId> holding = holding_items(named->objects);
+      if (holding.size() == 1 && in_.world.universe->info(holding.front()).kind == ObjectKind::kSurface) {
+        const std::string verb = clearing_verb(in_.world.universe->info(holding.front()).kind);
+        const std::string place = holding.size() == 1 ? distinct_noun_for(in_.world, holding.front())
+                                                      : spoken_places(in_.world, holding);
+        return SubtaskNamed{verb, relation(holding.front()), holding,
+                            "I took " + apprentice::quoted(quoted_words(in_.words)) + " as " + ing_form(verb) + " " +
+                                place + "."};
+      }
     }
     if (proceed && !named) return Proceed{};
     if (problem_ || ambiguous_) return outcome();
@@ -498,10 +532,11 @@ class StructureReader {
 // is the agent's task verb WordNet puts closest (known_verbs.h), with a
 // note for the read-back. `up_first`: "up" said right after the verb.
 // WordNet's classes of the places a task is done in, besides rooms:
-// "shed", "greenhouse" (buildings), "station", "gym" (facilities). Not
+// "shed", "greenhouse" (buildings), "station", "gym" (facilities), "boat"
+// (vessels). Not "establishment": "the office" of a study stays as said. Not
 // "structure" or "area": a cupboard is both; nor "workplace": "the
 // laundry" is the washing before it is a room.
-constexpr std::array<std::string_view, 2> kRoomlikeClasses{"building", "facility"};
+constexpr std::array<std::string_view, 3> kRoomlikeClasses{"building", "facility", "vessel"};
 
 TaskNamed task_named(const ReplyInput& in, const std::string& verb, const std::string& particle, bool up, Words object,
                      bool up_first) {

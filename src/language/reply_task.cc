@@ -191,6 +191,12 @@ Reply read_task(const ReplyInput& in) {
   Words object;
   for (std::size_t i = 1; i < words->size(); ++i) {
     const std::string& w = (*words)[i];
+    // ("tidy up the cabin before we hand the boat back": the time said
+    // after the task holds no particle of its verb.)
+    if (is_one_of(w, {"before", "after", "when", "while", "until"})) {
+      object.insert(object.end(), words->begin() + static_cast<std::ptrdiff_t>(i), words->end());
+      break;
+    }
     if (is_particle(w)) {
       if (w != "up" && particle.empty()) particle = w;  // "tidy up" is "tidy"
     } else if (!is_determiner(w)) {

@@ -164,7 +164,8 @@ Reply read_yes_no(const ReplyInput& in) {
   const bool filler_yes =
       answer->second && std::all_of(words.begin(), words.begin() + static_cast<std::ptrdiff_t>(answer->first),
                                     [](const std::string& w) { return acts::is_interjection(w); });
-  if (filler_yes && !rest.empty()) {
+  // ("yeah that's right": a rest that only confirms is no other goal.)
+  if (filler_yes && !rest.empty() && !only_confirms(rest)) {
     std::optional<Reply> instead = said_instead_of_yes_or_no(in, rest);
     const auto* yes_no = instead ? std::get_if<YesNo>(&*instead) : nullptr;
     if (instead && (yes_no == nullptr || !yes_no->yes)) return *instead;

@@ -198,14 +198,16 @@ std::optional<Acts> reading_acts(const Grounder& grounder, const World& world, c
     bool operator()(const Finished& r) const {
       // An ending at a goal question ends the part with this thing when
       // nothing else is to come; else the dialogue asks it back ("There
-      // are still 3 things on the table: ... Shall I leave them?").
-      if (r.ending && line.asked == "goal") {
+      // are still 3 things on the table: ... Shall I leave them?"). The
+      // agent takes it so at a proposal about the thing too (leave_as_told).
+      const bool about_a_thing = line.asked == "goal" || line.asked == "yes-no";
+      if (r.ending && about_a_thing) {
         if (!context.still_to_come.empty()) return false;
         return push(acts, {"part-done"}), true;
       }
       const std::string word = line.asked == "task-step"     ? "task-done"
                                : line.asked == "subtask-end" ? "part-done"
-                               : line.asked == "goal"        ? "leave"
+                               : about_a_thing               ? "leave"
                                                              : "finished";
       return push(acts, {word}), true;
     }

@@ -1,4 +1,4 @@
-// The fresh reply corpora (tests/language/fresh/set1 to set7): every labelled
+// The fresh reply corpora (tests/language/fresh/set1 to set8): every labelled
 // reply read with read_reply in the context its line describes, and scored
 // against its meaning (fresh_corpus.h). The figures are a measurement and
 // are printed, not asserted; what is asserted is that the scorer works:
@@ -132,6 +132,13 @@ TEST(FreshCorpus, Set7IsReadAndScored) {
   expect_read_with_every_act("set7", 324u);
 }
 
+// Set 8, the fourth held-out set of issue 21 (written 2026-12-07 06:03 UTC by
+// writers who saw no code, before that day's reader work): scored as it
+// came.
+TEST(FreshCorpus, Set8IsReadAndScored) {
+  expect_read_with_every_act("set8", 577u);
+}
+
 // The scorer itself, on lines written here, in set 1's bathroom.
 class FreshScorer : public ::testing::Test {
  protected:
@@ -222,6 +229,15 @@ TEST_F(FreshScorer, AnEndingCountsByTheQuestion) {
   EXPECT_EQ(scored("task-step", "", "You are done.", R"([{"act": "task-done"}])").outcome, Outcome::kMeant);
   EXPECT_EQ(scored("subtask-end", "", "You are done.", R"([{"act": "part-done"}])").outcome, Outcome::kMeant);
   EXPECT_EQ(scored("subtask-end", "", "You are done.", R"([{"act": "task-done"}])").outcome, Outcome::kWrong);
+  // At a proposal about a thing, as at the question where it goes (the
+  // agent leaves it as told either way): the part's end when nothing else
+  // is to come, else asked back.
+  const std::string proposal =
+      R"({"proposal": {"thing": "hair-dryer", "place": "cabinet", "relation": "in", "closed": true}, "still_to_come": []})";
+  EXPECT_EQ(scored("yes-no", "hair-dryer", "I'm done", R"([{"act": "part-done"}])", proposal).outcome, Outcome::kMeant);
+  const std::string more =
+      R"({"proposal": {"thing": "hair-dryer", "place": "cabinet", "relation": "in", "closed": true}, "still_to_come": ["razor"]})";
+  EXPECT_EQ(scored("yes-no", "hair-dryer", "I'm done", R"([{"act": "part-done"}])", more).outcome, Outcome::kAskedBack);
 }
 
 TEST(FreshScorerReport, TheTableAddsUp) {

@@ -262,7 +262,8 @@ TEST(ReplyStructure, APlaceWithoutAVerbTakesTheLastSubtasksVerb) {
   EXPECT_EQ(read(kitchen, step, "now do the same with the counter"), "subtask clear on counter1");
   EXPECT_EQ(read(kitchen, step, "then do the dish rack"), "subtask clear in dish-rack1");
   EXPECT_EQ(read(kitchen, step, "now unload the dish rack"), "subtask unload in dish-rack1");
-  EXPECT_EQ(read(kitchen, step, "that's all for the table"), "finished");
+  // (A part's ending is asked back here: APartsEndingAtTheTasksNextStepIsAskedBack.)
+  EXPECT_EQ(read(kitchen, step, "that's all for the table"), "unusable");
   // The last verb is for places of another kind, or no general one: asked
   // back (sorting a table, clearing a rack, may not be what was meant).
   EXPECT_EQ(read(kitchen, step, "the dish rack next"), "unusable");
@@ -283,12 +284,31 @@ TEST(ReplyStructure, AVerbWithOutAtAReceptacleEmptiesIt) {
   EXPECT_EQ(read(kitchen, step, "sort out the counter"), read(kitchen, step, "sort the counter"));
 }
 
+// Found in set 8: "start with the table", "the sink first", as the first
+// part, were asked back. Before any part is taught, a place named alone is
+// its kind's part (clear a surface, empty a receptacle), said in the
+// read-back; after a part of another verb it is still asked.
+TEST(ReplyStructure, APlaceNamedAloneFirstIsItsKindsPart) {
+  const World& kitchen = kitchen30().world;
+  ReplyContext step = asking(Asked::kTaskStep);
+  EXPECT_EQ(read(kitchen, step, "start with the counter"), "subtask clear on counter1");
+  // A receptacle's things may be emptied, unloaded or sorted: asked.
+  EXPECT_EQ(read(kitchen, step, "the dish rack first"), "unusable");
+  Reply said = read_reply(grounder(), kitchen, step, "start with the counter");
+  ASSERT_TRUE(std::holds_alternative<SubtaskNamed>(said));
+  EXPECT_EQ(std::get<SubtaskNamed>(said).note, "I took \"start with the counter\" as clearing the counter.");
+  step.taught_subtasks = {"sort"};
+  EXPECT_EQ(read(kitchen, step, "start with the counter"), "unusable");
+}
+
 // After "What should I do with the things on the counter?" (the reason
 // names the place it asks about), "clear it" and "clear" are about that
-// place; without that question they are not.
+// place; without that question they are not. (The question is asked of a
+// place named alone after a part whose verb is not its kind's: "sort".)
 TEST(ReplyStructure, ItAfterAQuestionAboutAPlaceIsThatPlace) {
   const World& kitchen = kitchen30().world;
   ReplyContext step = asking(Asked::kTaskStep);
+  step.taught_subtasks = {"sort"};
   Reply bare = read_reply(grounder(), kitchen, step, "start with the counter");
   ASSERT_TRUE(std::holds_alternative<Unusable>(bare)) << format_reply(kitchen, bare);
   ASSERT_EQ(std::get<Unusable>(bare).topic_places.size(), 1u);
@@ -363,6 +383,12 @@ TEST(ReplyTask, ATaskSaidWithATimeIsNamedByTheLocation) {
   EXPECT_EQ(task_phrase("tidy up kitchen"), "tidy up the kitchen");
   EXPECT_EQ(task_phrase("clean after party"), "clean after the party");
   EXPECT_EQ(task_phrase("clean after the party"), "clean after the party");
+  // Found in set 8: "tidy up the cabin before we hand the boat back" was
+  // "tidy back cabin"; the time said after the task holds no particle.
+  EXPECT_EQ(read(kitchen, task, "tidy up the kitchen before we hand the keys back"), "task tidy kitchen");
+  // A location's hyphen is said as a space ("tidy the exam-room" was said).
+  EXPECT_EQ(task_phrase("tidy exam-room"), "tidy the exam room");
+  EXPECT_EQ(say_task_name("tidy exam-room"), "Tidy exam room.");
 }
 
 // A request whose verb names no task ("get", "have", "end") is named by
@@ -379,6 +405,9 @@ TEST(ReplyTask, TheVerbThatNamesATaskWinsOverOneThatNamesNone) {
   // A verb that names a task of its own stays as said.
   EXPECT_EQ(read(kitchen, task, "we had a party, put the groceries away"), "task put away groceries");
   EXPECT_EQ(read(kitchen, task, "tidy up the canteen"), "task tidy kitchen");
+  // Found in set 8: a boat is a vessel, the room the agent is in when it
+  // names nothing here.
+  EXPECT_EQ(read(kitchen, task, "clean up the boat pls"), "task tidy kitchen");
   // A place or a thing of the world is not the room: "the fridge" is not
   // taken for the kitchen.
   EXPECT_EQ(read(kitchen, task, "tidy the fridge"), "task tidy fridge");
@@ -392,6 +421,22 @@ TEST(ReplyStructure, AStepVerbWinsOverADescriptionsVerb) {
   EXPECT_EQ(read(kitchen, step, "ugh the table's covered in junk. clear it off"), read(kitchen, step, "clear the table"));
   EXPECT_EQ(read(kitchen, step, "the counter is covered in stuff, please clear it"),
             read(kitchen, step, "clear the counter"));
+}
+
+// Found teaching in the terminal: "that's it for the table", said at the
+// task's next step after the table was cleared, ended the whole task with
+// the counter left. A part's ending there is asked back; the task's is not.
+TEST(ReplyStructure, APartsEndingAtTheTasksNextStepIsAskedBack) {
+  const World& kitchen = kitchen30().world;
+  ReplyContext step = asking(Asked::kTaskStep);
+  Reply part = read_reply(grounder(), kitchen, step, "that's it for the table");
+  ASSERT_TRUE(std::holds_alternative<Unusable>(part)) << format_reply(kitchen, part);
+  EXPECT_NE(std::get<Unusable>(part).reason.find("that's all"), std::string::npos) << std::get<Unusable>(part).reason;
+  EXPECT_EQ(read(kitchen, step, "the counter is clear"), "unusable");
+  EXPECT_EQ(read(kitchen, step, "that's it"), "finished");
+  EXPECT_EQ(read(kitchen, step, "we're done with the kitchen"), "finished");
+  // Asked whether the part has more, it ends the part.
+  EXPECT_EQ(read(kitchen, asking(Asked::kSubtaskEnd), "that's it for the table"), "finished");
 }
 
 // Asked whether there is more to a part: "more" or "still" without a "no"
