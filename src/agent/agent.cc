@@ -135,7 +135,7 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::learn_task_name() {
   auto heard = converse(question(QuestionKind::kTaskName, language::ask_task()), context(language::Asked::kTask),
                         [](const language::Reply& r) -> std::optional<std::string> {
                           if (std::holds_alternative<language::TaskNamed>(r)) return std::nullopt;
-                          return "I need the name of the task first.";
+                          return language::need_task_name_first();
                         });
   if (!heard) return tl::unexpected(heard.error());
   if (!heard->reply)
@@ -165,11 +165,11 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::learn_task_step() {
     // lesson having learned nothing, and call the task learned.
     if (std::holds_alternative<language::Finished>(r))
       return progress_.task.subtasks.empty() && !progress_.current
-                 ? std::optional<std::string>("I have not been told any part of the task yet, so it cannot be done.")
+                 ? std::optional<std::string>(language::no_part_taught_yet())
                  : std::nullopt;
     if (std::holds_alternative<language::Proceed>(r))
-      return awaiting_repeat ? std::nullopt : std::optional<std::string>("There is nothing to repeat yet.");
-    return "I asked for the next step of the task: a subtask and its place, or that the task is done.";
+      return awaiting_repeat ? std::nullopt : std::optional<std::string>(language::nothing_to_repeat_yet());
+    return language::asked_for_next_step();
   });
   if (!heard) return tl::unexpected(heard.error());
   if (!heard->reply)
@@ -220,7 +220,7 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::learn_subtask_end()
     if (std::holds_alternative<language::Finished>(r) || std::holds_alternative<language::Proceed>(r) ||
         std::holds_alternative<language::SubtaskNamed>(r))
       return std::nullopt;
-    return "I asked whether there is more to this subtask.";
+    return language::asked_whether_more_to_part();
   });
   if (!heard) return tl::unexpected(heard.error());
   if (!heard->reply) {

@@ -12,6 +12,8 @@
 #include "agent/goal_proposals.h"
 #include "agent/session.h"
 #include "language/narration.h"
+#include "language/narration_conversation.h"
+#include "language/narration_steps.h"
 #include "util/log.h"
 #include "util/text.h"
 
@@ -140,7 +142,7 @@ TaskLearningAgent::Session::answer_to_proposal(const Question& asked, ObjectId o
         if (std::holds_alternative<language::YesNo>(r) || std::holds_alternative<language::Finished>(r) ||
             about_it(r))
           return std::nullopt;
-        return "I asked a yes-or-no question.";
+        return language::asked_yes_or_no();
       },
       // Where the thing goes instead, said in place of "no".
       [&](const std::string& text) -> std::optional<language::Reply> {
@@ -317,9 +319,7 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
       std::string asked =
           decision.support.front().source == ProposalSource::kFleet && others.empty()
               ? fleet_question(w, object, *goal, decision.support.front())
-              : "Does " + language::spoken_name_and_location(w, object) + " go " + (evidence.empty() ? "here" : evidence) +
-                    ": " + language::goal_outcome(w, object, *goal, "it") +
-                    (others.empty() ? "?" : ", and " + language::list_phrase(others) + " too?");
+              : language::ask_goal_proposed(w, object, *goal, evidence, others);
       Question q = question(QuestionKind::kConfirmGoal, asked, object, goal);
       for (const auto& entry : together) q.together.push_back(entry.first);
       auto answer = answer_to_proposal(q, object);

@@ -5,35 +5,9 @@
 
 #include "agent/agent.h"
 #include "agent/session.h"
-#include "language/generation.h"
+#include "language/narration_steps.h"
 
 namespace apprentice {
-
-namespace {
-
-// Who learned it: "Robot kitchen-2", a name that says "robot" already as it
-// is ("Robot 2", "robot-7" as "Robot-7"), or "Another robot" for one the
-// store does not name (a goal saved before stores named robots).
-std::string robot_subject(const std::string& robot) {
-  if (robot.empty()) return "Another robot";
-  std::string lower;
-  for (char c : robot.substr(0, 5)) lower += static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
-  if (lower != "robot") return "Robot " + robot;
-  return "R" + robot.substr(1);
-}
-
-// "Robot kitchen-2 just learned where the ketchup goes." or "... where the
-// ketchup and the paper plate go."
-std::string news_sentence(const std::string& robot, const std::vector<std::string>& kinds) {
-  std::string things;
-  for (std::size_t i = 0; i < kinds.size(); ++i) {
-    if (i > 0) things += i + 1 == kinds.size() ? (kinds.size() > 2 ? ", and " : " and ") : ", ";
-    things += "the " + language::spoken_category(kinds[i]);
-  }
-  return robot_subject(robot) + " just learned where " + things + (kinds.size() == 1 ? " goes." : " go.");
-}
-
-}  // namespace
 
 void TaskLearningAgent::Session::take_news() {
   KnowledgeStore* store = agent_.watched_;
@@ -60,7 +34,7 @@ void TaskLearningAgent::Session::take_news() {
   }
   for (Rule& rule : news->rules) agent_.knowledge_.rules.add(*world().domain, std::move(rule));
   for (const auto& [robot, kinds] : by_robot) {
-    const std::string sentence = news_sentence(robot, kinds);
+    const std::string sentence = language::news_sentence(robot, kinds);
     report_.news.push_back(sentence);
     say(sentence);
   }

@@ -8,6 +8,7 @@
 #include "agent/session.h"
 #include "language/generation.h"
 #include "language/narration.h"
+#include "language/narration_conversation.h"
 #include "language/narration_steps.h"
 #include "language/utterance.h"
 #include "util/log.h"
@@ -62,12 +63,11 @@ std::optional<std::string> TaskLearningAgent::Session::other_name_of_thing(const
 TaskLearningAgent::Session::Flow<std::optional<language::Reply>> TaskLearningAgent::Session::ask_other_name(
     const std::string& word, const std::string& text, const Question& asked, const language::ReplyContext& context) {
   const ObjectId object = *context.object;
-  Question q = question(QuestionKind::kConfirmGoal,
-                        "By \"" + word + "\", do you mean " + language::spoken_name(world(), object) + "?", asked.object);
+  Question q = question(QuestionKind::kConfirmGoal, language::ask_other_name(word, world(), object), asked.object);
   auto heard = converse(q, this->context(language::Asked::kYesNo, object),
                         [](const language::Reply& r) -> std::optional<std::string> {
                           if (std::holds_alternative<language::YesNo>(r)) return std::nullopt;
-                          return "I asked a yes-or-no question.";
+                          return language::asked_yes_or_no();
                         });
   if (!heard) return tl::unexpected(heard.error());
   if (!heard->reply || !std::get<language::YesNo>(*heard->reply).yes) return std::optional<language::Reply>();

@@ -76,4 +76,44 @@ std::string put_back(const World& world, const std::vector<Action>& actions, boo
 
 std::string could_not_put_back() { return "I could not put everything back as it was."; }
 
+std::string need_task_name_first() { return "I need the name of the task first."; }
+std::string no_part_taught_yet() { return "I have not been told any part of the task yet, so it cannot be done."; }
+std::string nothing_to_repeat_yet() { return "There is nothing to repeat yet."; }
+std::string asked_for_next_step() {
+  return "I asked for the next step of the task: a subtask and its place, or that the task is done.";
+}
+std::string asked_whether_more_to_part() { return "I asked whether there is more to this subtask."; }
+
+std::string ask_other_name(std::string_view word, const World& world, ObjectId object) {
+  return "By \"" + std::string(word) + "\", do you mean " + spoken_name(world, object) + "?";
+}
+
+std::string ask_goal_proposed(const World& world, ObjectId object, const Goal& goal, std::string_view evidence,
+                              const std::vector<std::string>& others) {
+  return "Does " + spoken_name_and_location(world, object) + " go " +
+         (evidence.empty() ? std::string("here") : std::string(evidence)) + ": " +
+         goal_outcome(world, object, goal, "it") + (others.empty() ? "?" : ", and " + list_phrase(others) + " too?");
+}
+
+namespace {
+
+std::string robot_subject(std::string_view robot) {
+  if (robot.empty()) return "Another robot";
+  std::string lower;
+  for (char c : robot.substr(0, 5)) lower += static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
+  if (lower != "robot") return "Robot " + std::string(robot);
+  return "R" + std::string(robot.substr(1));
+}
+
+}  // namespace
+
+std::string news_sentence(std::string_view robot, const std::vector<std::string>& kinds) {
+  std::string things;
+  for (std::size_t i = 0; i < kinds.size(); ++i) {
+    if (i > 0) things += i + 1 == kinds.size() ? (kinds.size() > 2 ? ", and " : " and ") : ", ";
+    things += "the " + spoken_category(kinds[i]);
+  }
+  return robot_subject(robot) + " just learned where " + things + (kinds.size() == 1 ? " goes." : " go.");
+}
+
 }  // namespace apprentice::language

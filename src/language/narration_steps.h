@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "world/action.h"
+#include "world/goal.h"
 #include "world/world.h"
 
 namespace apprentice::language {
@@ -52,5 +53,24 @@ std::string forgot_last(std::string_view reply);
 // by could_not_put_back().
 std::string put_back(const World& world, const std::vector<Action>& actions, bool all);
 std::string could_not_put_back();
+
+// Why a reply was not taken, at each question of the task's structure.
+std::string need_task_name_first();         // "I need the name of the task first."
+std::string no_part_taught_yet();           // "I have not been told any part of the task yet, so it cannot be done."
+std::string nothing_to_repeat_yet();        // "There is nothing to repeat yet."
+std::string asked_for_next_step();          // "I asked for the next step of the task: ..."
+std::string asked_whether_more_to_part();   // "I asked whether there is more to this subtask."
+
+// "By "dummy", do you mean the pacifier?"
+std::string ask_other_name(std::string_view word, const World& world, ObjectId object);
+// "Does the mug on the table go like the cup: in the cupboard?" (`evidence`
+// "like the cup"; "here" when empty), with "and the fork and the plate too"
+// for `others` (spoken names).
+std::string ask_goal_proposed(const World& world, ObjectId object, const Goal& goal, std::string_view evidence,
+                              const std::vector<std::string>& others);
+// What another robot learned: "Robot kitchen-2 just learned where the
+// ketchup goes." ("Another robot" when the store does not name it; a name
+// that says "robot" already is said as it is.)
+std::string news_sentence(std::string_view robot, const std::vector<std::string>& kinds);
 
 }  // namespace apprentice::language

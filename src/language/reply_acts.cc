@@ -159,6 +159,28 @@ void add_the_same_for(const Grounder& grounder, const World& world, const ReplyC
   }
 }
 
+// The answer read without its "too"s, whose things then get the same goal;
+// nullopt when the whole reading already gives others their goals, the
+// answer says several places, or the "too"s add no goal. `notes` gets the
+// notes of that reading.
+std::optional<Reply> with_the_toos(const Grounder& grounder, const World& world, const ReplyContext& at,
+                                   const std::string& answer, const Reply& whole, std::vector<std::string>& notes) {
+  const auto* whole_goal = std::get_if<GoalGiven>(&whole);
+  if (whole_goal != nullptr && !whole_goal->others.empty()) return std::nullopt;
+  auto [before_toos, toos] = without_trailing_toos(answer);
+  const Words before = reply_words(before_toos);
+  const auto places_said = std::count_if(before.begin(), before.end(), [](const std::string& w) {
+    return is_one_of(w, {"in", "on", "into", "onto", "inside"});
+  });
+  if (toos.empty() || trim(before_toos).empty() || places_said > 1) return std::nullopt;
+  Reply first = read_answer(grounder, world, at, before_toos, notes);
+  auto* given = std::get_if<GoalGiven>(&first);
+  if (given == nullptr || !given->others.empty()) return std::nullopt;
+  add_the_same_for(grounder, world, at, toos, *given);
+  if (given->others.empty()) return std::nullopt;
+  return first;
+}
+
 }  // namespace
 
 ReplyActs read(const Grounder& grounder, const World& world, const ReplyContext& context, std::string_view text) {
@@ -398,24 +420,11 @@ ReplyActs read(const Grounder& grounder, const World& world, const ReplyContext&
   // brushes in the drawer, scissors too" says several places, and which
   // one "too" repeats is not guessed.)
   if (answered && at.asked == Asked::kGoal && at.object) {
-    const auto* whole_goal = std::get_if<GoalGiven>(&reply);
-    auto [before_toos, toos] = without_trailing_toos(answer_text);
-    const Words before = reply_words(before_toos);
-    const auto places_said = std::count_if(before.begin(), before.end(), [](const std::string& w) {
-      return is_one_of(w, {"in", "on", "into", "onto", "inside"});
-    });
-    if ((whole_goal == nullptr || whole_goal->others.empty()) && !toos.empty() && !trim(before_toos).empty() &&
-        places_said <= 1) {
-      std::vector<std::string> notes;
-      Reply first = read_answer(grounder, world, at, before_toos, notes);
-      if (auto* given = std::get_if<GoalGiven>(&first); given && given->others.empty()) {
-        add_the_same_for(grounder, world, at, toos, *given);
-        if (!given->others.empty()) {
-          reply = std::move(first);
-          out.notes.resize(notes_before_answer);
-          out.notes.insert(out.notes.end(), notes.begin(), notes.end());
-        }
-      }
+    std::vector<std::string> notes;
+    if (auto with_toos = with_the_toos(grounder, world, at, answer_text, reply, notes)) {
+      reply = std::move(*with_toos);
+      out.notes.resize(notes_before_answer);
+      out.notes.insert(out.notes.end(), notes.begin(), notes.end());
     }
   }
   // "it goes in the bin, not in the recycling bin", where the recycling

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <set>
 #include <utility>
 
 #include "language/parser.h"
@@ -192,7 +193,10 @@ void join_world_names(std::vector<std::string>& words, const Universe& universe)
     if (std::none_of(names.begin(), names.end(), [&](const auto& n) { return n.first == info.category; }))
       names.emplace_back(info.category, std::move(parts));
   }
-  if (names.empty()) return;
+  if (names.empty()) {
+    join_split_names(words, universe);
+    return;
+  }
   std::sort(names.begin(), names.end(), [](const auto& a, const auto& b) { return a.second.size() > b.second.size(); });
   // Each word split on hyphens, remembering which word each part came from.
   std::vector<std::string> parts;
@@ -230,6 +234,28 @@ void join_world_names(std::vector<std::string>& words, const Universe& universe)
     if (!joined) ++at;
   }
   for (std::size_t w = next_word; w < words.size(); ++w) out.push_back(words[w]);
+  words = std::move(out);
+  join_split_names(words, universe);
+}
+
+void join_split_names(std::vector<std::string>& words, const Universe& universe) {
+  std::set<std::string> closed;  // one-word parts of names: "toolbox", "workbench"
+  for (const ObjectInfo& info : universe.objects())
+    for (std::string& part : name_parts(info.category))
+      if (part.size() >= 6) closed.insert(std::move(part));
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < words.size(); ++i) {
+    if (i + 1 < words.size() && words[i].size() >= 2 && words[i + 1].size() >= 2) {
+      const std::string together = words[i] + words[i + 1];
+      const bool plural = together.size() > 1 && together.back() == 's' && closed.count(together.substr(0, together.size() - 1));
+      if (closed.count(together) || plural) {
+        out.push_back(together);
+        ++i;
+        continue;
+      }
+    }
+    out.push_back(words[i]);
+  }
   words = std::move(out);
 }
 

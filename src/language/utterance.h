@@ -28,7 +28,12 @@ std::vector<std::string> reply_words(std::string_view text);
 // category itself: {"the", "walk", "in", "pantry"} -> {"the",
 // "walk-in-pantry"}; a plural last word counts ("jacks-in-the-box" aside,
 // "walk in pantries" -> "walk-in-pantry").
+// Then join_split_names.
 void join_world_names(std::vector<std::string>& words, const Universe& universe);
+// Two words that make one word of a name here, said apart: {"tool", "box"}
+// -> {"toolbox"}, {"work", "benches"} -> {"workbenches"} (names of six
+// letters or more, so that short words never run together).
+void join_split_names(std::vector<std::string>& words, const Universe& universe);
 
 // Removes `phrase` wherever it occurs as whole words; true if it did.
 bool erase_phrase(std::vector<std::string>& words, const std::vector<std::string_view>& phrase);

@@ -332,6 +332,18 @@ TEST(ReplyStructure, ItAfterAQuestionAboutAPlaceIsThatPlace) {
   EXPECT_EQ(read(garage.world, garage_step, "empty them"), "subtask empty in bucket1 bucket2");
 }
 
+// Found in set 8: "tape measure goes in the tool box", where the world has
+// a toolbox. A name of one word, said as two, is that name.
+TEST(ReplyGoal, ANameSaidAsTwoWordsIsTheName) {
+  const World& kitchen = kitchen30().world;
+  ReplyContext plate = asking(Asked::kGoal, in(kitchen, "ceramic-plate1"));
+  EXPECT_EQ(read(kitchen, plate, "in the dish washer"), "goal (in ceramic-plate1 dishwasher1)");
+  EXPECT_EQ(read(kitchen, plate, "put it in the cup board"), "goal (in ceramic-plate1 cupboard1)");
+  EXPECT_EQ(read(kitchen, plate, "the cup boards"), "goal (in ceramic-plate1 cupboard1)");
+  // A name of two words stays two ("dish rack" is no "dishrack").
+  EXPECT_EQ(read(kitchen, plate, "in the dish rack"), "goal (in ceramic-plate1 dish-rack1)");
+}
+
 // Things named in clauses of their own before the clause that says where
 // they go go there too; the goal asked for is the asked thing's, and the
 // others' come with it, in the order said.
