@@ -274,6 +274,29 @@ std::optional<Candidates> by_clipped_word(const std::string& phrase, Role role, 
 
 // All candidates for a phrase, by the first tier that finds any.
 std::variant<Candidates, GroundingFailure> candidates(const NounPhrase& np, Role role, const ReferenceContext& context);
+
+// Everyday replies: "sharps bin", "the meds box": a head WordNet has as a
+// container, after words that name receptacles here (by a part of their
+// names, or as WordNet relates them), is one of those receptacles.
+std::optional<Candidates> by_modifier_of_a_container(const std::string& phrase, Role role,
+                                                     const ReferenceContext& context) {
+  if (role == Role::kItem || !context.lexicon.has_wordnet()) return std::nullopt;
+  const std::vector<std::string> words = split_words(phrase);
+  if (words.size() < 2) return std::nullopt;
+  const std::vector<std::string> head{words.back()};
+  if (context.lexicon.kinds_under("container", head).empty()) return std::nullopt;
+  const NounPhrase modifiers{"", std::vector<std::string>(words.begin(), words.end() - 1)};
+  auto found = candidates(modifiers, role, context);
+  auto* named = std::get_if<Candidates>(&found);
+  if (named == nullptr || named->objects.empty()) return std::nullopt;
+  // Several receptacles ("rubbish" is scrap too) are asked about by name.
+  for (ObjectId object : named->objects)
+    if (context.world.universe->info(object).kind != ObjectKind::kReceptacle) return std::nullopt;
+  named->method = ReferenceMethod::kPartialName;
+  named->reason = "'" + words.back() + "' said of what '" + modifiers.text() + "' names; " + named->reason;
+  return *named;
+}
+
 std::variant<Candidates, GroundingFailure> candidates(const NounPhrase& np, Role role,
                                                       const ReferenceContext& context) {
   std::string phrase = np.text();
@@ -330,6 +353,8 @@ std::variant<Candidates, GroundingFailure> candidates(const NounPhrase& np, Role
     if (auto named = by_last_words(phrase, role, context)) return *named;
   if (context.partial_names)
     if (auto named = by_clipped_word(phrase, role, context)) return *named;
+  if (context.partial_names)
+    if (auto named = by_modifier_of_a_container(phrase, role, context)) return *named;
   // A phrase naming only things of the other role ("Pick up the bin", "the
   // trash is in the kitchen") should fail on that thing's affordances, not
   // on its name.

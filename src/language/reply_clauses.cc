@@ -341,6 +341,15 @@ class ClauseReader {
     return continues_noun(k, false) && v_.any_verb(t).empty();
   }
 
+  // Whether the word at k ends the phrase and names a kind of container.
+  bool ends_with_a_container_word(std::size_t k) const {
+    const bool ends = at(k + 1).empty() || is_one_of(at(k + 1), {",", "and", "please", "then", "too"});
+    const std::size_t here = i_ + k;
+    if (!ends || here == 0 || here > w_.size() || w_[here - 1] == "'s") return false;
+    const std::vector<std::string> word{std::string(at(k))};
+    return !v_.lexicon().kinds_under("container", word).empty();
+  }
+
   // Whether the word at k belongs to a noun phrase being read; the first
   // word of a phrase may be a verb's form ("the trash", "the recycling").
   bool continues_noun(std::size_t k, bool first) const {
@@ -356,7 +365,10 @@ class ClauseReader {
       return false;
     if (is_particle(t)) return false;
     if (first) return true;
-    if (!v_.household_verb(t).empty()) return false;
+    // "the rubbish bin", "sharps bin": a household verb that ends the
+    // phrase and names a container is the phrase's head ("bin it" has an
+    // object; "... and you close" is a verb).
+    if (!v_.household_verb(t).empty() && !ends_with_a_container_word(k)) return false;
     // A word WordNet has as a verb and not as a noun ends the phrase
     // ("the ketchup lives ...").
     std::string verb = v_.any_verb(t);

@@ -127,6 +127,35 @@ TEST(ReplyActsLookAlikes, APropertySaidInItsOwnWordsOrAnothersIsTheSame) {
   }
 }
 
+// "sharps bin", "rubbish bin": a container word said after words that
+// name one receptacle here is that receptacle, and "bin" there is no verb;
+// "bin it" still throws the thing away.
+TEST(ReplyActsContainerWords, AContainerWordAfterWhatNamesAReceptacleIsThatReceptacle) {
+  fresh::Worlds worlds(testing::source_path("tests/language/fresh/set8"));
+  std::string error;
+  auto goal_read = [&](const char* file, const char* about, const char* said) {
+    const Scenario* scenario = worlds.get(file, error);
+    if (scenario == nullptr) return "no world: " + error;
+    const World& w = scenario->world;
+    ReplyContext c;
+    c.asked = Asked::kGoal;
+    c.object = w.universe->find(about);
+    if (!c.object) return std::string("no ") + about;
+    ReplyActs read = read_acts(grounder(), w, c, said);
+    return read.acts.empty() ? std::string("nothing") : format_reply(w, read.acts.front());
+  };
+  EXPECT_EQ(goal_read("vet-exam-room.yaml", "syringe1", "sharps bin"), "goal (in syringe1 sharps-container1)");
+  EXPECT_EQ(goal_read("vet-exam-room.yaml", "syringe1", "in the sharps bin please"),
+            "goal (in syringe1 sharps-container1)");
+  EXPECT_EQ(goal_read("vet-exam-room.yaml", "glove1", "rubbish bin"), "goal (in glove1 trash-can1)");
+  // The maker space has a scrap bin too, and WordNet's rubbish is scrap:
+  // which one is asked, never taken.
+  EXPECT_EQ(goal_read("maker-space.yaml", "coffee-cup1", "in the rubbish bin").rfind("ambiguous", 0), 0u);
+  EXPECT_EQ(goal_read("maker-space.yaml", "coffee-cup1", "just bin it"), "goal (in coffee-cup1 trash-can1)");
+  // A word naming no receptacle before "bin" names nothing by it.
+  EXPECT_NE(goal_read("vet-exam-room.yaml", "syringe1", "stethoscope bin"), "goal (in syringe1 sharps-container1)");
+}
+
 // Before any part is taught, "the counter, clear it and then we're done":
 // one part, said twice, then the ending for the next question.
 TEST_F(ReplyActsTest, APartNamedThenSaidAgainIsOnePart) {
