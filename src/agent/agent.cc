@@ -25,16 +25,6 @@
 
 namespace apprentice {
 
-namespace {
-
-std::set<std::string> forgotten_keys(const Knowledge& knowledge) {
-  std::set<std::string> keys;
-  for (const ClassRule& rule : knowledge.forgotten_rules.all()) keys.insert(class_rule_key(rule));
-  return keys;
-}
-
-}  // namespace
-
 TaskLearningAgent::TaskLearningAgent(AgentOptions options, Knowledge knowledge, Understanding understanding,
                                      KnowledgeStore* store, LlmAdvisor* llm)
     : options_(std::move(options)), knowledge_(std::move(knowledge)), understanding_(std::move(understanding)),
@@ -63,17 +53,11 @@ Result<AgentReport> TaskLearningAgent::perform(Simulator& simulator, const std::
 
 TaskLearningAgent::Session::Session(TaskLearningAgent& agent, Simulator& simulator, Dialogue* dialogue,
                                     bool learning)
-    : agent_(agent), simulator_(simulator), dialogue_(dialogue), learning_(learning),
+    : agent_(agent), simulator_(simulator), conversation_(dialogue), learning_(learning),
       lessons_(agent.store_, *simulator.world().domain),
-      transfer_(agent.knowledge_, simulator.world(), agent.understanding_.lexicon()),
-      concepts_(agent.understanding_.lexicon(), agent.understanding_.vectors()),
-      proposer_(concepts_, transfer_.prior_goals(), forgotten_keys(agent.knowledge_)) {
-  for (const CategoryMatch& m : transfer_.matches())
+      sources_(agent.knowledge_, simulator.world(), agent.understanding_.lexicon(), agent.understanding_.vectors()) {
+  for (const CategoryMatch& m : sources_.transfer().matches())
     report_.renamed.push_back("took the " + m.world + " for the " + m.learned + " (" + m.reason + ")");
-  // A person's rules said in earlier sessions hold here too (for the same
-  // task, or any task when said before one).
-  for (const ClassRule& rule : agent.knowledge_.class_rules.all())
-    if (rule.source == RuleSource::kPerson) said_rules_.add(rule);
 }
 
 std::string TaskLearningAgent::Session::describe_object(ObjectId object) const {
@@ -81,7 +65,7 @@ std::string TaskLearningAgent::Session::describe_object(ObjectId object) const {
 }
 
 Result<AgentReport> TaskLearningAgent::Session::learn_task() {
-  if (std::string renamed = say_renamings(transfer_.matches()); !renamed.empty()) say(renamed);
+  if (std::string renamed = say_renamings(sources_.transfer().matches()); !renamed.empty()) say(renamed);
   while (!progress_.finished) {
     Step step = next_step();
     // An undo has put everything back as it was before the last lesson:

@@ -8,8 +8,6 @@
 #include "language/generation.h"
 #include "language/narration.h"
 #include "language/narration_conversation.h"
-#include "search/greedy_best_first.h"
-#include "search/iterative_deepening.h"
 #include "util/log.h"
 #include "util/text.h"
 
@@ -33,7 +31,7 @@ std::string step_text(const World& world, const Action& action) {
 TaskLearningAgent::Session::Flow<bool> TaskLearningAgent::Session::achieve(InProgress& work) {
   const Condition& condition = agent_.options_.condition;
   ObjectReport& report = work.report;
-  Attempt attempt;
+  OwnActions own;
   int actions = 0;
   while (!work.goal.satisfied_by(world().state)) {
     // Past the bound, a program's run gives up on the object; a person is
@@ -46,9 +44,9 @@ TaskLearningAgent::Session::Flow<bool> TaskLearningAgent::Session::achieve(InPro
     std::optional<Action> next;
     std::string source;
     if (!over_bound) {
-      auto own = own_next_action(work, attempt, source);
-      if (!own) return tl::unexpected(own.error());
-      next = *own;
+      auto found = own_next_action(work, own, source);
+      if (!found) return tl::unexpected(found.error());
+      next = *found;
     }
     if (!next && learning_ && condition.instruction) {
       auto from_instructor = action_from_instructor(work);
@@ -65,7 +63,7 @@ TaskLearningAgent::Session::Flow<bool> TaskLearningAgent::Session::achieve(InPro
     }
     if (auto status = execute(*next); !status) {
       // Advice that cannot be carried out; the plan, if any, is stale.
-      attempt.plan.clear();
+      own.drop_plan();
       say(language::refusal(world(), *next), Voice::kResponse);
       if (source.rfind("instructor", 0) != 0) ++actions;
       continue;
@@ -80,38 +78,24 @@ TaskLearningAgent::Session::Flow<bool> TaskLearningAgent::Session::achieve(InPro
 }
 
 TaskLearningAgent::Session::Flow<std::optional<Action>> TaskLearningAgent::Session::own_next_action(
-    InProgress& work, Attempt& attempt, std::string& source) {
+    InProgress& work, OwnActions& own, std::string& source) {
   const Condition& condition = agent_.options_.condition;
-  if (!attempt.plan.empty()) {
-    Action next = attempt.plan.front();
-    attempt.plan.pop_front();
-    source = "search";
-    return next;
+  OwnActions::Ways ways;
+  if (agent_.options_.use_rules) ways.rules = &agent_.knowledge_.rules;
+  // Performing alone, the agent does what its rules say and does not search.
+  if (learning_) {
+    ways.search_depth = condition.search_depth;
+    ways.unbounded_search = condition.unbounded_search;
   }
-  if (agent_.options_.use_rules) {
-    MatchQuery query{&world().state, &work.goal, work.object, current().verb};
-    if (auto proposal = agent_.knowledge_.rules.select(*world().domain, *world().universe, query)) {
-      source = "rule";
-      ++report_.rule_actions;
-      return std::optional<Action>(proposal->action);
-    }
-  }
-  if (learning_ && (condition.search_depth > 0 || condition.unbounded_search) &&
-      attempt.searched_in != world().state) {
-    SearchOptions options;
-    options.max_depth = condition.search_depth;
-    PlanResult result =
-        condition.unbounded_search
-            ? find_greedy_plan(*world().domain, *world().universe, world().state, work.goal, options)
-            : find_plan(*world().domain, *world().universe, world().state, work.goal, options);
+  OwnActions::Next next = own.next(world(), work.goal, work.object, current().verb, ways);
+  if (next.searched) {
     ++report_.searches;
-    report_.search_nodes += result.statistics.nodes_expanded;
-    attempt.searched_in = world().state;
-    if (result.status == SearchStatus::kSolved && !result.plan.empty()) {
-      attempt.plan.assign(result.plan.begin() + 1, result.plan.end());
-      source = "search";
-      return std::optional<Action>(result.plan.front());
-    }
+    report_.search_nodes += next.nodes;
+  }
+  if (next.action) {
+    if (next.source == "rule") ++report_.rule_actions;
+    source = next.source;
+    return next.action;
   }
   if (learning_ && condition.llm) {
     auto from_llm = action_from_llm(work);
@@ -197,7 +181,7 @@ TaskLearningAgent::Session::Flow<std::optional<Action>> TaskLearningAgent::Sessi
   }
   const Action& action = std::get<language::ActionGiven>(*heard->reply).action;
   for (ObjectId o : action.arguments())
-    if (world().universe->info(o).kind != ObjectKind::kItem) recent_place_ = o;
+    if (world().universe->info(o).kind != ObjectKind::kItem) conversation_.named_place(o);
   advice_ = apprentice::quoted(heard->text);
   return std::optional<Action>(action);
 }

@@ -21,18 +21,6 @@ namespace apprentice {
 
 namespace {
 
-// An analogy (agent/transfer.h) as a proposal: the same kind learned in
-// another context is memory; a kind near it in WordNet, analogy.
-DestinationProposal analogy_proposal(const Analogy& analogy) {
-  DestinationProposal proposal;
-  proposal.destination = *destination_of(analogy.like.literals);
-  proposal.confidence = analogy.confidence;
-  proposal.source = analogy.distance == 0 ? ProposalSource::kMemory : ProposalSource::kAnalogy;
-  proposal.evidence = {analogy.learned_as};
-  proposal.reason = "analogy: like the " + language::spoken_category(analogy.learned_as);
-  return proposal;
-}
-
 // The place a placement goal puts `object` at.
 std::optional<ObjectId> placed_at(const World& world, const Goal& goal, ObjectId object) {
   for (const Literal& l : goal.literals)
@@ -121,8 +109,6 @@ GoalSource goal_source_of(const Decision& decision) {
 
 }  // namespace
 
-const GoalProposer& TaskLearningAgent::Session::proposer() const { return proposer_; }
-
 TaskLearningAgent::Session::Flow<TaskLearningAgent::Session::ProposalAnswer>
 TaskLearningAgent::Session::answer_to_proposal(const Question& asked, ObjectId object) {
   const World& w = world();
@@ -168,7 +154,7 @@ TaskLearningAgent::Session::answer_to_proposal(const Question& asked, ObjectId o
         begin_lesson(text);
         return ProposalAnswer{true, std::nullopt};
       }
-      if (!yes_no->rest.empty()) queued_replies_.push_back(yes_no->rest);
+      if (!yes_no->rest.empty()) conversation_.answer_ahead(yes_no->rest);
       return ProposalAnswer{false, std::nullopt};
     }
     reply = std::move(*where);
@@ -184,19 +170,24 @@ TaskLearningAgent::Session::answer_to_proposal(const Question& asked, ObjectId o
 }
 
 std::vector<DestinationProposal> TaskLearningAgent::Session::proposals_for(ObjectId object) const {
-  const GoalKey key = goal_key(object);
-  std::vector<DestinationProposal> proposals = proposer_.propose(world(), key, object, said_rules_.all());
-  if (auto analogy = transfer_.analogy(world(), key, object)) proposals.push_back(analogy_proposal(*analogy));
+  GoalSources::Asking asking;
   // What other households of the store chose for this kind.
-  if (agent_.options_.fleet_prior)
-    for (DestinationProposal& p : agent_.knowledge_.fleet.propose(key))
-      if (goal_at(world(), p.destination, object)) proposals.push_back(std::move(p));
-  if (agent_.options_.condition.llm)
-    for (DestinationProposal& llm : llm_placement_proposals(object)) proposals.push_back(std::move(llm));
-  // What the teacher refused for this kind is no longer proposed.
-  for (const auto& [kind, refused] : refused_)
-    if (kind == key.category) proposals = without_destination(proposals, refused);
-  return proposals;
+  if (agent_.options_.fleet_prior) asking.fleet = &agent_.knowledge_.fleet;
+  asking.llm = agent_.options_.condition.llm;
+  return sources_.proposals_for(world(), goal_key(object), object, asking);
+}
+
+void TaskLearningAgent::Session::consult_llm(ObjectId object) {
+  if (agent_.llm_ == nullptr || !agent_.options_.condition.llm || sources_.llm_consulted()) return;
+  const World& w = world();
+  std::vector<ObjectId> things;
+  for (ObjectId o : w.universe->of_kind(ObjectKind::kItem))
+    if (o == object || still_to_come(o)) things.push_back(o);
+  std::vector<GoalKnowledge> taught;
+  for (const GoalKnowledge& g : agent_.knowledge_.goals.all())
+    if (g.key.task == progress_.task.name) taught.push_back(g);
+  sources_.consult_llm(*agent_.llm_, w, taught, things, current().places, said_scope(),
+                       agent_.understanding_.lexicon());
 }
 
 std::vector<std::pair<ObjectId, Goal>> TaskLearningAgent::Session::asked_together(ObjectId object,
@@ -208,7 +199,7 @@ std::vector<std::pair<ObjectId, Goal>> TaskLearningAgent::Session::asked_togethe
   std::vector<std::pair<double, std::pair<ObjectId, Goal>>> candidates;
   const World& w = world();
   for (ObjectId other : w.universe->of_kind(ObjectKind::kItem)) {
-    if (other == object || !still_to_come(other) || settled_.contains(other)) continue;
+    if (other == object || !still_to_come(other) || sources_.settled(other)) continue;
     if (agent_.knowledge_.goals.find(goal_key(other)) != nullptr) continue;
     std::vector<DestinationProposal> proposals = proposals_for(other);
     // What was learned for its own kind elsewhere is asked about alone.
@@ -233,10 +224,9 @@ std::vector<std::pair<ObjectId, Goal>> TaskLearningAgent::Session::asked_togethe
 
 TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session::goal_settled(ObjectId object,
                                                                                               ObjectReport& report) {
-  auto settled = settled_.find(object);
-  if (settled == settled_.end()) return std::optional<Goal>();
-  auto [goal, said] = std::move(settled->second);
-  settled_.erase(settled);
+  auto settled = sources_.take_settled(object);
+  if (!settled) return std::optional<Goal>();
+  auto [goal, said] = std::move(*settled);
   say(language::read_back_goal(world(), object, goal));
   report.goal_source = GoalSource::kInstructor;
   if (auto s = learn_goal(object, goal, "instructor: " + apprentice::quoted(said) + " (asked together)"); !s)
@@ -259,7 +249,7 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
   // It is also no independent expert then: our reading weighs 0.35 (on
   // the TidyBot development half, b-alone+llm: 0.5 gave 94.6% right and
   // 2.1% wrong, 0.35 95.7% and 2.5%, 0.25 96.1% and 2.8%).
-  if (!rules_said_.empty() && !llm_preferences_.placed_by().empty()) {
+  if (sources_.llm_placed_by_persons_rule()) {
     policy.not_disputing.push_back(ProposalSource::kPersonRule);
     policy.weights.try_emplace(ProposalSource::kPersonRule, 0.35);
   }
@@ -338,17 +328,16 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
       }
       if (answer->yes)
         for (auto& [other, its_goal] : together)
-          settled_.emplace(other, std::make_pair(std::move(its_goal), std::string("yes, with ") +
-                                                                        language::spoken_name(w, object)));
+          sources_.settle(other, std::move(its_goal), "yes, with " + language::spoken_name(w, object));
       if (answer->instead) {
         // "No, it goes in the garbage": the teacher's own goal, learned.
-        refused_.emplace_back(goal_key(object).category, *decision.destination);
+        sources_.refuse(goal_key(object).category, *decision.destination);
         report.goal_source = GoalSource::kInstructor;
         return answer->instead;
       }
       if (!answer->yes) {
         // An exception: this kind does not go there, whatever the class says.
-        refused_.emplace_back(goal_key(object).category, *decision.destination);
+        sources_.refuse(goal_key(object).category, *decision.destination);
         refused_alone = true;
         proposals = without_destination(proposals, *decision.destination);
         if (proposals.empty()) return std::optional<Goal>();

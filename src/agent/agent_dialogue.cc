@@ -38,7 +38,7 @@ language::ReplyContext TaskLearningAgent::Session::context(language::Asked asked
   language::ReplyContext c;
   c.asked = asked;
   c.object = object;
-  c.recent_place = recent_place_;
+  c.recent_place = conversation_.recent_place();
   // What "the floor next" and "same with the bucket" do: the verbs of the
   // parts taught so far.
   for (const LearnedSubtask& part : progress_.task.subtasks) c.taught_subtasks.push_back(part.verb);
@@ -75,40 +75,31 @@ language::ReplyContext TaskLearningAgent::Session::context(language::Asked asked
 }
 
 void TaskLearningAgent::Session::say(const std::string& statement, Voice voice) {
-  if (dialogue_) dialogue_->say(statement, voice);
+  conversation_.say(statement, voice);
 }
 
 Status TaskLearningAgent::Session::execute(const Action& action) {
   Status status = simulator_.execute(action);
-  if (status && dialogue_) dialogue_->observe(action, world());
+  if (status) conversation_.observe(action, world());
   return status;
 }
 
 TaskLearningAgent::Session::Flow<TaskLearningAgent::Session::Heard> TaskLearningAgent::Session::converse(
     const Question& asked, language::ReplyContext context, const Accept& accept, const Rescue& rescue) {
-  APPRENTICE_CHECK(dialogue_ != nullptr);
+  APPRENTICE_CHECK(conversation_.with_teacher());
   int unusable = 0;
   std::vector<std::string> refused;
   for (;;) {
-    // The answer said after an undo in the last reply is the reply to the
-    // question the undo brought back.
-    Result<std::string> text = std::string();
-    bool queued_step = false;
+    // What was said ahead comes first (agent/conversation.h): the answer
+    // said after an undo replies to the question the undo brought back;
+    // a step said ahead is not another instruction.
     const bool about_steps =
         context.asked == language::Asked::kTaskStep || context.asked == language::Asked::kSubtaskEnd;
-    if (!queued_replies_.empty()) {
-      text = std::move(queued_replies_.front());
-      queued_replies_.pop_front();
-    } else if (about_steps && !queued_steps_.empty()) {
-      // Said in the reply before: not another instruction.
-      text = std::move(queued_steps_.front());
-      queued_steps_.pop_front();
-      queued_step = true;
-    } else {
-      text = dialogue_->ask_uncounted(asked, world());
-    }
-    if (!text) return stop(text.error());
-    language::ReplyActs read = agent_.understanding_.acts(world(), context, *text);
+    auto said = conversation_.next_reply(asked, world(), about_steps);
+    if (!said) return stop(said.error());
+    const bool queued_step = said->said_ahead;
+    const std::string& text = said->text;
+    language::ReplyActs read = agent_.understanding_.acts(world(), context, text);
     std::optional<language::Reply> answer;
     int undos = 0;
     for (language::Reply& act : read.acts) {
@@ -117,7 +108,7 @@ TaskLearningAgent::Session::Flow<TaskLearningAgent::Session::Heard> TaskLearning
       else if (command->kind == language::Command::Kind::kUndo) ++undos;
     }
     for (const std::string& note : read.notes) say(note, Voice::kResponse);
-    if (undos > 0) queued_steps_.clear();
+    if (undos > 0) conversation_.drop_steps_ahead();
     if (undos > 0) {
       // Each undo goes one lesson back; the loop then asks that lesson's
       // question again, and the answer said with the undo replies to it.
@@ -129,7 +120,7 @@ TaskLearningAgent::Session::Flow<TaskLearningAgent::Session::Heard> TaskLearning
         undone = true;
       }
       if (undone) {
-        if (!read.after_undo.empty()) queued_replies_.push_back(read.after_undo);
+        if (!read.after_undo.empty()) conversation_.answer_ahead(read.after_undo);
         return tl::unexpected(Stop{});
       }
       if (!answer) continue;
@@ -143,19 +134,19 @@ TaskLearningAgent::Session::Flow<TaskLearningAgent::Session::Heard> TaskLearning
     if (!answer) {
       // "shut the cupboard, then do the piano": the parts said after a
       // one-off action answer the question that comes again.
-      queued_steps_.insert(queued_steps_.end(), read.then.begin(), read.then.end());
+      conversation_.steps_ahead(read.then);
       continue;
     }
     language::Reply reply = std::move(*answer);
-    if (!queued_step) dialogue_->count_reply(asked, *text);
+    if (!queued_step) conversation_.count(asked, text);
     // A reply the question's own reading takes whole ("same as the hammer,
     // and shut the drawer") is not asked "which drawer?" about.
     std::optional<language::Reply> rescued;
-    if (rescue && std::holds_alternative<language::Ambiguous>(reply)) rescued = rescue(*text);
+    if (rescue && std::holds_alternative<language::Ambiguous>(reply)) rescued = rescue(text);
     if (rescued) {
       reply = std::move(*rescued);
     } else if (const auto* ambiguous = std::get_if<language::Ambiguous>(&reply)) {
-      auto settled = settle(*ambiguous, asked, context, *text);
+      auto settled = settle(*ambiguous, asked, context, text);
       if (!settled) return tl::unexpected(settled.error());
       reply = *settled;
       // A one-off action the settled reply asked for: done, and the
@@ -166,26 +157,26 @@ TaskLearningAgent::Session::Flow<TaskLearningAgent::Session::Heard> TaskLearning
       }
     }
     if (rescue && std::holds_alternative<language::Unusable>(reply))
-      if (auto rescued = rescue(*text)) reply = std::move(*rescued);
+      if (auto rescued = rescue(text)) reply = std::move(*rescued);
     // The thing asked about called by a word nothing here is called
     // ("dummy in the top drawer", asked about the pacifier): a person is
     // asked whether that word means it.
     if (person())
-      if (auto word = other_name_of_thing(*text, reply, context)) {
-        auto meant = ask_other_name(*word, *text, asked, context);
+      if (auto word = other_name_of_thing(text, reply, context)) {
+        auto meant = ask_other_name(*word, text, asked, context);
         if (!meant) return tl::unexpected(meant.error());
         if (*meant) reply = std::move(**meant);
       }
     // A person's rule is kept whatever was asked, and the question asked
     // again (a program is asked at most max_retries times).
-    if (auto rule = rule_in_reply(*text, reply, context)) {
-      hear_rule(*rule, *text);
+    if (auto rule = rule_in_reply(text, reply, context)) {
+      hear_rule(*rule, text);
       // Asked where a thing goes, the rule may place it: the caller decides
       // again before asking.
       if (context.asked == language::Asked::kGoal && context.object && asked.kind == QuestionKind::kSubtaskStep)
-        return Heard{std::nullopt, *text, refused, true};
-      refused.push_back(apprentice::quoted(*text) + " (a rule, kept, but no answer to the question)");
-      if (!person() && ++unusable > agent_.options_.max_retries) return Heard{std::nullopt, *text, refused};
+        return Heard{std::nullopt, text, refused, true};
+      refused.push_back(apprentice::quoted(text) + " (a rule, kept, but no answer to the question)");
+      if (!person() && ++unusable > agent_.options_.max_retries) return Heard{std::nullopt, text, refused};
       continue;
     }
     std::optional<std::string> why;
@@ -198,14 +189,14 @@ TaskLearningAgent::Session::Flow<TaskLearningAgent::Session::Heard> TaskLearning
       why = accept(reply);
     }
     if (!why) {
-      queued_steps_.insert(queued_steps_.end(), read.then.begin(), read.then.end());
-      return Heard{reply, *text, refused};
+      conversation_.steps_ahead(read.then);
+      return Heard{reply, text, refused};
     }
     explain(*why, context, examples);
     std::string reason = *why;
     while (!reason.empty() && (reason.back() == '.' || reason.back() == ' ')) reason.pop_back();
-    refused.push_back(apprentice::quoted(*text) + " (" + reason + ")");
-    if (!person() && ++unusable > agent_.options_.max_retries) return Heard{std::nullopt, *text, refused};
+    refused.push_back(apprentice::quoted(text) + " (" + reason + ")");
+    if (!person() && ++unusable > agent_.options_.max_retries) return Heard{std::nullopt, text, refused};
   }
 }
 
@@ -306,7 +297,7 @@ void TaskLearningAgent::Session::status(const Question& asked) {
   doing.asking_about = asked.object;
   doing.goals = static_cast<long long>(agent_.knowledge_.goals.size());
   doing.rules = static_cast<long long>(agent_.knowledge_.rules.size());
-  doing.instructions = dialogue_->counts().instructions;
+  doing.instructions = conversation_.instructions();
   say(language::what_i_am_doing(world(), doing), Voice::kResponse);
 }
 
@@ -421,11 +412,7 @@ Status TaskLearningAgent::Session::forget(const std::string& kind) {
 }
 
 Result<bool> TaskLearningAgent::Session::forget_rule_named(const std::string& what) {
-  std::vector<ClassRule> in_use;
-  for (const ClassRule& rule : said_rules_.all())
-    if (rule.source == RuleSource::kPerson) in_use.push_back(rule);
-  for (const ClassRule& rule : proposer_.all_induced()) in_use.push_back(rule);
-  std::vector<ClassRule> named = rules_named(in_use, what);
+  std::vector<ClassRule> named = rules_named(sources_.rules_in_use(), what);
   if (named.empty()) return false;
   std::vector<std::string> said;
   for (const ClassRule& rule : named)
@@ -440,8 +427,7 @@ Result<bool> TaskLearningAgent::Session::forget_rule_named(const std::string& wh
     if (auto s = forget_rule(agent_.knowledge_, agent_.store_, rule); !s) return tl::unexpected(s.error());
     // An undo must not bring it back either.
     lessons_.forget_class_rule(rule);
-    said_rules_.remove(rule);
-    proposer_.forget(rule);
+    sources_.forget_rule(rule);
   }
   say(language::forgot_rule(said.front()), Voice::kResponse);
   return true;

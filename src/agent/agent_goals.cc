@@ -375,7 +375,7 @@ Status TaskLearningAgent::Session::learn_goal(ObjectId object, const Goal& goal,
   for (const Literal& l : goal.literals)
     if ((l.fact.predicate == world().vocabulary.in || l.fact.predicate == world().vocabulary.on) && l.fact.arity == 2 &&
         l.fact.args[0] == object)
-      recent_place_ = l.fact.args[1];
+      conversation_.named_place(l.fact.args[1]);
   auto knowledge = generalize_goal(world(), goal_key(object), object, goal, Provenance{describe_object(object), source});
   if (!knowledge) {
     // Still usable for this object, just not learnable for its category.

@@ -133,7 +133,7 @@ GoalScope TaskLearningAgent::Session::said_scope() const {
 }
 
 void TaskLearningAgent::Session::hear_rule(const language::RuleReading& rule, const std::string& text) {
-  rules_said_.push_back(text);
+  sources_.hear(text);
   // A lesson of its own: "undo" takes the rule back.
   begin_lesson(text);
   for (ClassRule& said : class_rules_of(world(), rule, RuleSource::kPerson, text, said_scope(), kPersonRuleConfidence))
@@ -144,7 +144,7 @@ void TaskLearningAgent::Session::hear_rule(const language::RuleReading& rule, co
 }
 
 Status TaskLearningAgent::Session::store_class_rule(const ClassRule& rule) {
-  said_rules_.add(rule);
+  sources_.add_rule(rule);
   return lessons_.learn_class_rule(agent_.knowledge_, rule);
 }
 
@@ -152,7 +152,7 @@ Status TaskLearningAgent::Session::keep_induced_rules_learned() {
   // Without a store there is nothing to keep: the rules are induced anew
   // from the goals whenever they are asked for.
   if (!learning_ || !agent_.store_) return {};
-  return keep_induced_rules(agent_.knowledge_, agent_.store_, concepts_);
+  return keep_induced_rules(agent_.knowledge_, agent_.store_, sources_.concepts());
 }
 
 }  // namespace apprentice

@@ -36,7 +36,7 @@ Goal difference(const State& now, const State& target) {
 }  // namespace
 
 void TaskLearningAgent::Session::begin_lesson(const std::string& reply) {
-  if (!learning_ || dialogue_ == nullptr) return;
+  if (!learning_ || !conversation_.with_teacher()) return;
   lessons_.begin(reply, progress_, agent_.knowledge_, world().state, simulator_.history().size());
 }
 
@@ -47,7 +47,7 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::undo() {
     say(language::nothing_to_undo(), Voice::kResponse);
     return {};
   }
-  for (const ClassRule& rule : (*undone)->class_rules) said_rules_.remove(rule);
+  for (const ClassRule& rule : (*undone)->class_rules) sources_.remove_rule(rule);
   say(language::forgot_last((*undone)->reply), Voice::kResponse);
   put_world_back((*undone)->world, (*undone)->history);
   return tl::unexpected(Stop{});

@@ -15,14 +15,12 @@
 #include <set>
 
 #include "agent/agent.h"
-#include "agent/concept_source.h"
-#include "agent/goal_proposals.h"
-#include "agent/lessons.h"
-#include "agent/llm_preferences.h"
+#include "agent/conversation.h"
 #include "agent/curriculum.h"
+#include "agent/goal_sources.h"
+#include "agent/lessons.h"
+#include "agent/own_actions.h"
 #include "knowledge/decision.h"
-#include "knowledge/preferences.h"
-#include "agent/transfer.h"
 #include "language/reply.h"
 
 namespace apprentice {
@@ -118,13 +116,14 @@ class TaskLearningAgent::Session {
   // Executes `action` in the simulator; once it is done, the instructor
   // sees it (Instructor::observe).
   Status execute(const Action& action);
-  bool person() const { return dialogue_ != nullptr && dialogue_->instructor_is_person(); }
+  bool person() const { return conversation_.with_person(); }
 
   // Lessons and undo (agent_undo.cc; the lessons themselves, with the
   // writes to the store they made, are agent/lessons.h). A lesson opens
   // only while a teacher teaches.
   void begin_lesson(const std::string& reply);
-  // A person's rule, kept in the knowledge and the store, and said_rules_.
+  // A person's rule, kept in the knowledge and the store, and in the
+  // sources' said rules.
   Status store_class_rule(const ClassRule& rule);
   // The rules the goals induce, kept in the store with their evidence when
   // a session that learns ends (agent/class_rule_knowledge.h).
@@ -159,15 +158,9 @@ class TaskLearningAgent::Session {
   bool was_left_as_told(ObjectId object) const;
   Status learn_goal(ObjectId object, const Goal& goal, const std::string& source);
   // Asks the LLM, the first time a thing needs it this session, for the
-  // summary of what was taught and where each thing to place goes; the
-  // summary's rules join rules_said_ (RuleSource::kLlm). Nothing without an
-  // LLM that has the preference prompts.
+  // summary of what was taught and where each thing to place goes
+  // (GoalSources::consult_llm). Nothing without an LLM in the condition.
   void consult_llm(ObjectId object);
-  // The LLM's placements of `object` as proposals for the decision: by its
-  // summary or the person's rule (ProposalSource::kLlmPlacement, surer when
-  // its summary puts the examples back where they were taught), and by the
-  // examples alone (kLlmExamples); none when it did not place it.
-  std::vector<DestinationProposal> llm_placement_proposals(ObjectId object) const;
   // Where rules said in this session apply: the task and the subtask under
   // way, and the kind of place cleared; empty fields before the task.
   GoalScope said_scope() const;
@@ -207,8 +200,8 @@ class TaskLearningAgent::Session {
   // The goal a "yes" asked with another thing settled for `object`, said
   // back and learned; nullopt when none did.
   Flow<std::optional<Goal>> goal_settled(ObjectId object, ObjectReport& report);
-  // Every source's proposals for `object`, without the destinations the
-  // teacher refused for its kind.
+  // Every source's proposals for `object` that the options ask
+  // (GoalSources::proposals_for).
   std::vector<DestinationProposal> proposals_for(ObjectId object) const;
   // The teacher's answer to a proposed goal: yes, no, or, in place of no,
   // where the thing goes instead (then learned, and read back).
@@ -220,7 +213,6 @@ class TaskLearningAgent::Session {
     std::string text = {};
   };
   Flow<ProposalAnswer> answer_to_proposal(const Question& asked, ObjectId object);
-  const GoalProposer& proposer() const;
   // "the sweater goes on the low shelf", asked about the sock, for a thing
   // of another part of the task: asked about when its turn comes. (A thing
   // still to come in this part, "same again", "same as the hammer", a class
@@ -246,16 +238,11 @@ class TaskLearningAgent::Session {
   llm::TaskContext llm_context(ObjectId object) const;
 
   // Actions (agent_actions.cc).
-  // One attempt at a goal: the rest of a plan found by search, and the
-  // state search last failed in (not searched again until it changes).
-  struct Attempt {
-    std::deque<Action> plan;
-    std::optional<State> searched_in;
-  };
   Flow<bool> achieve(InProgress& work);
-  // The next action from the agent's own sources, in order: the plan being
-  // executed, learned rules, search to the condition's depth, the LLM.
-  Flow<std::optional<Action>> own_next_action(InProgress& work, Attempt& attempt, std::string& source);
+  // The next action from the agent's own sources, in order: those of
+  // `own` (the plan being executed, learned rules, search to the
+  // condition's depth), then the LLM.
+  Flow<std::optional<Action>> own_next_action(InProgress& work, OwnActions& own, std::string& source);
   Flow<std::optional<Action>> action_from_llm(InProgress& work);
   Flow<std::optional<Action>> action_from_instructor(InProgress& work);
   Status learn_rules(const InProgress& work);
@@ -266,50 +253,29 @@ class TaskLearningAgent::Session {
 
   TaskLearningAgent& agent_;
   Simulator& simulator_;
-  Dialogue* dialogue_;  // null when performing alone
+  // The line to the teacher, with what was said ahead of its question and
+  // the place named last (agent/conversation.h); no teacher when
+  // performing alone.
+  Conversation conversation_;
   bool learning_;
   Progress progress_;
   Lessons lessons_;  // the teacher's lessons this session, and what each wrote to the store
   AgentReport report_;           // the counters of search and actions; objects come from progress_
-  std::optional<ObjectId> recent_place_;  // the place named last: what "the door" means
   std::vector<std::string> announced_;    // the kinds whose news was said, in this session
   std::string advice_;  // the words of the last action advised by the LLM or the instructor
-  // What the agent knew, in this world's words, and the analogies it offers.
-  // Constructed last: it renames the agent's knowledge when the session starts.
-  KnowledgeTransfer transfer_;
-  // What WordNet and the vectors know of kinds, and the proposals drawn
-  // from the knowledge brought into the session (after transfer_, whose
-  // renamed goals they use).
-  LexicalConcepts concepts_;
-  GoalProposer proposer_;
-  // Destinations the teacher said no to, by kind, this session.
-  std::vector<std::pair<std::string, Destination>> refused_;
-  // Goals a teacher's "yes" settled for things still to come, asked with
-  // another thing ("and the pear too?"), with what the teacher said.
-  std::map<ObjectId, std::pair<Goal, std::string>> settled_;
+  // Where a goal may come from when none is known (agent/goal_sources.h),
+  // with the person's rules said, the LLM's preferences, and what the
+  // teacher refused and settled. Constructed after the lessons: it renames
+  // the agent's knowledge into this world's words when the session starts.
+  GoalSources sources_;
   // The things an ending was asked back about ("Shall I leave them?"): a
   // second ending at the same thing, after a "no", leaves only that thing,
   // so that a teacher who keeps ending is never asked the same forever.
   std::set<ObjectId> asked_to_leave_the_rest_;
-  // The person's rules said this session, as said; those rules, and the
-  // LLM's summary's, as class rules (agent/person_rule.h); and what the LLM
-  // says of the person's preferences (asked once, when a thing first needs
-  // it).
   // Whether closing_norm_note() was said this session.
   bool closing_norm_said_ = false;
-  std::vector<std::string> rules_said_;
-  ClassRules said_rules_;
-  LlmPreferences llm_preferences_;
 
-  // --- Dialogue acts (agent_dialogue.cc): what a reply held besides its
-  // answer. The answer that followed an undo in the same reply ("oops
-  // scratch that, the wrench goes in the bottom drawer"), to be taken as
-  // the reply to the question the undo brings back.
-  std::deque<std::string> queued_replies_;
-  // The further steps of a reply about the task's steps ("clear the
-  // counter, then the table"), each the reply to the next such question.
-  std::deque<std::string> queued_steps_;
-  // The teacher's own questions and one-off actions.
+  // The teacher's own questions and one-off actions (agent_dialogue.cc).
   void answer_whats_left();
   std::string whats_left_of_task() const;
   void answer_where(const language::Command& command);
