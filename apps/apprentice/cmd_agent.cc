@@ -333,7 +333,7 @@ CommandResult run_knowledge(const KnowledgeOptions& options, const std::string& 
   // and the rules forgotten.
   Understanding understanding;
   LexicalConcepts concepts(understanding.lexicon(), understanding.vectors());
-  print_class_rules(*knowledge, concepts, out);
+  print_class_rules(*knowledge, concepts, options.all, out);
   return Outcome::kSuccess;
 }
 

@@ -85,6 +85,7 @@ struct KnowledgeOptions {
   std::string domain;  // empty: the shipped kitchen domain
   bool json = false;
   bool pddl = false;  // goals and rules in PDDL terms, not English
+  bool all = false;   // every rule induced from the goals, not only those at least even odds
 };
 CommandResult run_knowledge(const KnowledgeOptions& options, const std::string& program, std::ostream& out);
 

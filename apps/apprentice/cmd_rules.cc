@@ -28,11 +28,24 @@ nlohmann::json rule_json(const ClassRule& rule) {
 
 }  // namespace
 
-void print_class_rules(const Knowledge& knowledge, const ConceptSource& concepts, std::ostream& out) {
+// Below this, an induced rule is one guess among several for the same
+// things (the examples of a kids' room gave "placental", 11%, beside
+// "stuffed animals"): listed only when asked for.
+constexpr double kListedInducedConfidence = 0.5;
+
+void print_class_rules(const Knowledge& knowledge, const ConceptSource& concepts, bool all, std::ostream& out) {
   std::vector<ClassRule> rules = class_rules_in_use(knowledge, concepts);
-  if (!rules.empty()) {
+  std::size_t weaker = 0;
+  if (!all)
+    weaker = std::erase_if(rules, [](const ClassRule& rule) {
+      return rule.source == RuleSource::kInduced && rule.confidence < kListedInducedConfidence;
+    });
+  if (!rules.empty() || weaker > 0) {
     out << "\nFor things I was never taught, I generalize:\n";
     for (const ClassRule& rule : rules) out << "  " << say_class_rule(rule) << "\n";
+    if (weaker > 0)
+      out << "  (and " << language::count_phrase(static_cast<long long>(weaker), "weaker guess", "weaker guesses")
+          << " from the examples, less than even odds each; --all lists them)\n";
   }
   if (!knowledge.forgotten_rules.empty()) {
     out << "\nYou told me to forget these, and I do not use them:\n";

@@ -14,8 +14,10 @@ namespace apprentice::cli {
 
 // "For things I was never taught, I generalize:" and one line per rule in
 // use (agent/class_rule_knowledge.h), then the rules forgotten; nothing
-// when there are neither.
-void print_class_rules(const Knowledge& knowledge, const ConceptSource& concepts, std::ostream& out);
+// when there are neither. Of the rules induced from the goals only those
+// at least even odds sure are listed, with how many are not, unless `all`;
+// a person's and the LLM's rules always are.
+void print_class_rules(const Knowledge& knowledge, const ConceptSource& concepts, bool all, std::ostream& out);
 
 // {"class_rules": [...], "forgotten_rules": [...]}: each rule's English,
 // what it is about, where it goes, its evidence, source, sentence,

@@ -475,6 +475,8 @@ void add_knowledge_command(CLI::App& app, CommandLine& c) {
   cmd->add_option("--domain", k.domain, "PDDL domain the rules use (default: the kitchen)");
   cmd->add_flag("--json", k.json, "Machine-readable output");
   cmd->add_flag("--pddl", k.pddl, "Goals and rules in PDDL terms instead of English");
+  cmd->add_flag("--all", k.all,
+                "Every rule induced from the goals, also those I am less than even odds sure of (--json has all)");
   c.on_run(cmd, [&c, &k] { c.result = run_knowledge(k, c.program, std::cout); });
 }
 

@@ -25,6 +25,17 @@
 
 namespace apprentice {
 
+namespace {
+
+// The thing a goal puts somewhere (the first item it names).
+std::optional<ObjectId> item_placed(const World& world, const Goal& goal) {
+  for (ObjectId o : goal.objects())
+    if (world.universe->info(o).kind == ObjectKind::kItem) return o;
+  return std::nullopt;
+}
+
+}  // namespace
+
 TaskLearningAgent::TaskLearningAgent(AgentOptions options, Knowledge knowledge, Understanding understanding,
                                      KnowledgeStore* store, LlmAdvisor* llm)
     : options_(std::move(options)), knowledge_(std::move(knowledge)), understanding_(std::move(understanding)),
@@ -145,6 +156,11 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::learn_task_step() {
   auto heard = converse(asked, context(language::Asked::kTaskStep), [&](const Reply& r) -> std::optional<std::string> {
     if (std::holds_alternative<language::LoopNamed>(r) || std::holds_alternative<language::SubtaskNamed>(r))
       return std::nullopt;
+    // "the notebook goes on the bookshelf": a correction of a kind taught.
+    if (const auto* given = std::get_if<language::GoalGiven>(&r)) {
+      const std::optional<ObjectId> thing = item_placed(world(), given->goal);
+      if (thing && !goals_corrected_by(*thing).empty()) return std::nullopt;
+    }
     // "we're done" before any part of the task was taught would end the
     // lesson having learned nothing, and call the task learned.
     if (std::holds_alternative<language::Finished>(r))
@@ -170,6 +186,8 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::learn_task_step() {
     return {};
   }
   if (const auto* subtask = std::get_if<language::SubtaskNamed>(&reply)) return start_subtask(*subtask);
+  if (const auto* given = std::get_if<language::GoalGiven>(&reply))
+    return correct_goal(*item_placed(world(), given->goal), *given, heard->text);
   if (std::holds_alternative<language::Finished>(reply)) {
     progress_.finishing = true;
     say(language::read_back_task_done(progress_.current.has_value()));

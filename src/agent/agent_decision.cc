@@ -149,6 +149,13 @@ TaskLearningAgent::Session::answer_to_proposal(const Question& asked, ObjectId o
     // next question after a no.
     std::optional<language::GoalGiven> where = agent_.understanding_.goal_in_rest(w, at, *yes_no);
     if (where && !about_it(language::Reply(*where))) where.reset();
+    // "yeah, and envelopes as well": a yes, and the same for those.
+    if (where && yes_no->yes && asked.goal && where->goal == *asked.goal) {
+      begin_lesson(text);
+      const std::string source = "instructor: " + apprentice::quoted(text);
+      if (auto s = learn_goals_of_others(object, object, *where, source); !s) return stop(s.error());
+      return ProposalAnswer{true, std::nullopt};
+    }
     if (!where) {
       if (yes_no->yes) {
         begin_lesson(text);

@@ -59,6 +59,7 @@ language::ReplyContext TaskLearningAgent::Session::context(language::Asked asked
   if (progress_.current)
     for (ObjectId o : w.universe->of_kind(ObjectKind::kItem))
       if (o != object && still_to_come(o)) c.still_to_come.push_back(o);
+  c.dealt_with = progress_.evaluated_order;
   c.goal_of_kind = [this](const std::string& kind, ObjectId thing) -> std::optional<Goal> {
     const GoalKnowledge* known = nullptr;
     if (progress_.current) {

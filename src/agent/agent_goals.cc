@@ -370,13 +370,15 @@ bool TaskLearningAgent::Session::still_to_come(ObjectId item) const {
   return false;
 }
 
-Status TaskLearningAgent::Session::learn_goal(ObjectId object, const Goal& goal, const std::string& source) {
+Status TaskLearningAgent::Session::learn_goal(ObjectId object, const Goal& goal, const std::string& source,
+                                              const std::optional<GoalKey>& key) {
   // What "the door" and "close it" mean next: the place this goal names.
   for (const Literal& l : goal.literals)
     if ((l.fact.predicate == world().vocabulary.in || l.fact.predicate == world().vocabulary.on) && l.fact.arity == 2 &&
         l.fact.args[0] == object)
       conversation_.named_place(l.fact.args[1]);
-  auto knowledge = generalize_goal(world(), goal_key(object), object, goal, Provenance{describe_object(object), source});
+  auto knowledge =
+      generalize_goal(world(), key ? *key : goal_key(object), object, goal, Provenance{describe_object(object), source});
   if (!knowledge) {
     // Still usable for this object, just not learnable for its category.
     spdlog::warn("goal not learned: {}", knowledge.error().message);
@@ -385,6 +387,61 @@ Status TaskLearningAgent::Session::learn_goal(ObjectId object, const Goal& goal,
   progress_.last_goal = knowledge->key;
   ++progress_.goals_learned;
   return lessons_.learn_goal(agent_.knowledge_, *knowledge);
+}
+
+}  // namespace apprentice
+
+namespace apprentice {
+
+std::vector<GoalKey> TaskLearningAgent::Session::goals_corrected_by(ObjectId object) const {
+  const std::string& kind = world().universe->info(object).category;
+  std::vector<GoalKey> keys;
+  for (const GoalKnowledge& g : agent_.knowledge_.goals.all())
+    if (g.key.task == progress_.task.name && g.key.category == kind) keys.push_back(g.key);
+  bool dealt_with = false;
+  for (ObjectId o : progress_.evaluated) dealt_with = dealt_with || world().universe->info(o).category == kind;
+  if (!dealt_with) keys.clear();
+  return keys;
+}
+
+TaskLearningAgent::Session::Step TaskLearningAgent::Session::correct_goal(ObjectId object,
+                                                                          const language::GoalGiven& said,
+                                                                          const std::string& text) {
+  const World& w = world();
+  bool say_norm = false;
+  const language::GoalGiven given = with_doors_closed(object, said, say_norm);
+  const std::string source = "instructor: " + apprentice::quoted(text) + " (a correction)";
+  for (const GoalKey& key : goals_corrected_by(object))
+    if (auto s = learn_goal(object, given.goal, source, key); !s) return stop(s.error());
+  say(language::read_back_goal(w, object, given.goal) + (say_norm ? " " + language::closing_norm_note() : ""));
+  // The things of its kind already put away go where it now says, by the
+  // agent's own search; what was closed is closed again after.
+  const std::string& kind = w.universe->info(object).category;
+  std::vector<Literal> closed_before;
+  for (ObjectId place : w.universe->of_kind(ObjectKind::kReceptacle))
+    if (const Fact closed(w.vocabulary.closed, {place}); w.state.holds(closed)) closed_before.push_back(Literal{closed, true});
+  std::vector<Action> done;
+  for (ObjectId thing : w.universe->of_kind(ObjectKind::kItem)) {
+    if (w.universe->info(thing).category != kind || !progress_.evaluated.count(thing)) continue;
+    const GoalKnowledge* learned = nullptr;
+    for (const GoalKnowledge& g : agent_.knowledge_.goals.all())
+      if (g.key.task == progress_.task.name && g.key.category == kind) learned = &g;
+    std::optional<Goal> placed = learned ? instantiate_goal(w, *learned, thing) : std::nullopt;
+    if (!placed) continue;
+    std::vector<Literal> literals = placed->literals;
+    literals.insert(literals.end(), closed_before.begin(), closed_before.end());
+    const std::optional<Goal> goal = Goal(std::move(literals));
+    OwnActions own;
+    OwnActions::Ways ways;
+    ways.unbounded_search = true;
+    for (int steps = 0; !goal->satisfied_by(world().state) && steps < agent_.options_.max_actions_per_object; ++steps) {
+      OwnActions::Next next = own.next(world(), *goal, thing, "", ways);
+      if (!next.action || !execute(*next.action)) break;
+      done.push_back(*next.action);
+    }
+  }
+  if (!done.empty()) say(language::report_actions(w, done), Voice::kResponse);
+  return {};
 }
 
 }  // namespace apprentice

@@ -156,7 +156,18 @@ class TaskLearningAgent::Session {
                            ObjectReport& report);
   // Whether the teacher said to leave `object` where it is.
   bool was_left_as_told(ObjectId object) const;
-  Status learn_goal(ObjectId object, const Goal& goal, const std::string& source);
+  // Learns `goal` for `object`'s kind, under `key` (the kind's goal in the
+  // subtask under way when none is given).
+  Status learn_goal(ObjectId object, const Goal& goal, const std::string& source,
+                    const std::optional<GoalKey>& key = std::nullopt);
+  // A goal said at a question about the task's steps ("the notebook goes
+  // on the bookshelf", after it was put in the filing cabinet): the kinds
+  // whose goal it corrects, those learned in this task; none when no thing
+  // of its kind was dealt with yet.
+  std::vector<GoalKey> goals_corrected_by(ObjectId object) const;
+  // Learns the corrected goal for each of those keys and moves the things
+  // of the kind already dealt with to where it now says (agent_goals.cc).
+  Step correct_goal(ObjectId object, const language::GoalGiven& said, const std::string& text);
   // Asks the LLM, the first time a thing needs it this session, for the
   // summary of what was taught and where each thing to place goes
   // (GoalSources::consult_llm). Nothing without an LLM in the condition.

@@ -195,6 +195,14 @@ std::optional<VerbTaken> known_task_verb(const Lexicon& lexicon, std::string_vie
   return nearest(lexicon, verb, particle, kTaskVerbs, std::nullopt);
 }
 
+std::optional<VerbTaken> task_verb_over_everything(std::string_view verb, std::string_view particle) {
+  if (is_known(verb, kTaskVerbs)) return std::nullopt;
+  const KnownVerb& tidy = kTaskVerbs.front();
+  std::string as_said = particle.empty() ? std::string(verb) : std::string(verb) + " " + std::string(particle);
+  return VerbTaken{std::string(tidy.verb),
+                   "I took " + apprentice::quoted(as_said) + " said of everything here as " + ing_form(tidy.verb) + "."};
+}
+
 bool names_a_known_task(const Lexicon& lexicon, std::string_view verb, std::string_view particle) {
   return is_known(verb, kTaskVerbs) || known_task_verb(lexicon, verb, particle).has_value();
 }

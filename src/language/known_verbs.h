@@ -37,6 +37,11 @@ struct VerbTaken {
 // `said`: the verb and its particle as said ("clean up", "clean").
 std::optional<VerbTaken> known_task_verb(const Lexicon& lexicon, std::string_view verb, std::string_view particle);
 
+// A verb said over everything in the room ("put everything away", "get it
+// all sorted"): the task over the room the agent knows, tidying, with the
+// note the read-back says; nullopt when the verb is a known task verb.
+std::optional<VerbTaken> task_verb_over_everything(std::string_view verb, std::string_view particle);
+
 // Whether a verb said for a task is a known task verb or close to one:
 // "tidy", "clean up", "sort out"; not "get", "have" or "end".
 bool names_a_known_task(const Lexicon& lexicon, std::string_view verb, std::string_view particle);

@@ -61,6 +61,7 @@ std::string nothing_to_repeat_yet();        // "There is nothing to repeat yet."
 std::string asked_for_next_step();          // "I asked for the next step of the task: ..."
 std::string asked_whether_more_to_part();   // "I asked whether there is more to this subtask."
 
+
 // "By "dummy", do you mean the pacifier?"
 std::string ask_other_name(std::string_view word, const World& world, ObjectId object);
 // "Does the mug on the table go like the cup: in the cupboard?" (`evidence`

@@ -46,7 +46,8 @@ std::optional<Command> command(const Grounder& grounder, const World& world, std
     return Command{Command::Kind::kUndo, ""};
   if (is({"quit"}) || is({"exit"}) || is({"bye"}) || is({"goodbye"}) || is({"q"}))
     return Command{Command::Kind::kQuit, ""};
-  if (words[0] == "forget" && words.size() > 1) {
+  // ("forget it", "forget that": never mind, not a kind to forget.)
+  if (words[0] == "forget" && words.size() > 1 && !is_one_of(words[1], {"it", "that", "this"})) {
     std::vector<std::string> rest(words.begin() + 1, words.end());
     if (rest.size() > 3 && rest[0] == "what" && rest[1] == "you" && rest[2] == "know") rest.erase(rest.begin(), rest.begin() + 3);
     std::string kind = kind_named(grounder, world, rest);
@@ -299,8 +300,85 @@ void like_the_goal_referred_to(const Grounder& grounder, const World& world, con
 
 }  // namespace
 
+namespace {
+
+// The one kind of thing (an item's category) that `words` name, by its
+// name's words in turn, the last one maybe plural ("sticky notes"); none
+// when they name no kind or several.
+std::optional<std::string> the_kind_named(const World& world, const std::vector<std::string>& words) {
+  std::optional<std::string> named;
+  std::set<std::string> seen;
+  for (ObjectId o : world.universe->of_kind(ObjectKind::kItem)) {
+    const std::string& category = world.universe->info(o).category;
+    if (!seen.insert(category).second) continue;
+    const std::vector<std::string> parts = name_parts(category);
+    for (std::size_t i = 0; i + parts.size() <= words.size(); ++i) {
+      bool match = true;
+      for (std::size_t k = 0; k < parts.size() && match; ++k) {
+        const std::string& w = words[i + k];
+        match = w == parts[k] || (k + 1 == parts.size() && (w == parts[k] + "s" || w == parts[k] + "es"));
+      }
+      if (!match) continue;
+      if (named && *named != category) return std::nullopt;
+      named = category;
+      break;
+    }
+  }
+  return named;
+}
+
+// At a question about the task's steps, a reply that says where one kind
+// of thing already dealt with goes ("the notebook goes on the bookshelf",
+// "put the dinosaur in the toy chest", "move the sticky note to the
+// wastebasket"): that thing's goal, as a correction of where it was put. It must say so with
+// a verb of placing, so that "the dishes in the sink next" stays a part.
+// `dealt_with`: whether the kind must have a thing already dealt with;
+// else any thing of the kind is the one read about.
+std::optional<GoalGiven> goal_said_at_a_step(const Grounder& grounder, const World& world,
+                                             const ReplyContext& context, std::string_view text, bool dealt_with) {
+  const std::vector<std::string> words = reply_words(text);
+  if (std::none_of(words.begin(), words.end(), [](const std::string& w) {
+        return is_one_of(w, {"go", "goes", "belong", "belongs", "belonged", "put", "move", "moved", "lives", "live"});
+      }))
+    return std::nullopt;
+  std::optional<std::string> kind = the_kind_named(world, words);
+  if (!kind) return std::nullopt;
+  // A thing of that kind already dealt with: the one put somewhere the
+  // teacher now corrects. (Of a kind not dealt with yet, it is a rule or
+  // a place named, as the question's own reader reads it.)
+  std::optional<ObjectId> thing;
+  for (ObjectId o : context.dealt_with)
+    if (!thing && world.universe->info(o).category == *kind) thing = o;
+  if (!dealt_with)
+    for (ObjectId o : world.universe->of_kind(ObjectKind::kItem))
+      if (!thing && world.universe->info(o).category == *kind) thing = o;
+  if (!thing) return std::nullopt;
+  ReplyContext as_goal = context;
+  as_goal.asked = Asked::kGoal;
+  as_goal.object = thing;
+  Reply read = read_reply(grounder, world, as_goal, text);
+  const auto* given = std::get_if<GoalGiven>(&read);
+  if (given == nullptr) return std::nullopt;
+  const std::vector<ObjectId> mentioned = given->goal.objects();
+  if (std::find(mentioned.begin(), mentioned.end(), *thing) == mentioned.end()) return std::nullopt;
+  return *given;
+}
+
+}  // namespace
+
 Reply read_reply(const Grounder& grounder, const World& world, const ReplyContext& context, std::string_view text) {
+  const bool step = context.asked == Asked::kTaskStep || context.asked == Asked::kSubtaskEnd;
+  if (step)
+    if (auto corrected = goal_said_at_a_step(grounder, world, context, text, true)) return *corrected;
   Reply reply = read_reply_plain(grounder, world, context, text);
+  // Where a kind not dealt with yet goes is no part over its place ("the
+  // magazine goes on the bookshelf" is not clearing the bookshelf): the
+  // parts come first (a rule said so is kept by the agent).
+  if (step && (std::holds_alternative<SubtaskNamed>(reply) || std::holds_alternative<LoopNamed>(reply)) &&
+      goal_said_at_a_step(grounder, world, context, text, false))
+    return Unusable{"First tell me the parts of the task, such as \"" + example_replies(world, context).front() +
+                        "\"; I will ask where each thing goes when I come to it.",
+                    example_replies(world, context), std::nullopt};
   if (context.asked != Asked::kGoal) return reply;
   reply = read_goal_reply(grounder, world, context, text, std::move(reply));
   like_the_goal_referred_to(grounder, world, context, text, reply);

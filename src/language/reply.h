@@ -84,6 +84,10 @@ struct ReplyContext {
   std::optional<LastGoal> last_goal = {};
   // The things still to come in the part of the task under way, in order.
   std::vector<ObjectId> still_to_come = {};
+  // The things already dealt with this session: where one of their kinds
+  // goes, said at a question about the task's steps, corrects its goal
+  // ("the notebook goes on the bookshelf").
+  std::vector<ObjectId> dealt_with = {};
   // The goal learned for a kind of thing (a category, here or not), made
   // for `object`; nullopt when none was learned.
   std::function<std::optional<Goal>(const std::string& kind, ObjectId object)> goal_of_kind = {};

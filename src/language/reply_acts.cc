@@ -113,25 +113,55 @@ std::vector<Action> other_closings(const Grounder& grounder, const World& world,
   return actions;
 }
 
-// "pan in the sink, knife too", "sandpaper in the bottom drawer and the
-// batteries as well": the answer before the clauses that say "the same
-// for" other things, and those clauses ("knife too"); none when the answer
-// ends with no such clause.
+}  // namespace
+
 std::pair<std::string, std::vector<std::string>> without_trailing_toos(std::string_view answer) {
   const Words words = reply_words(answer);
   std::vector<std::string> toos;
+  auto says_a_place = [](const Words& clause) {
+    return std::any_of(clause.begin(), clause.end(), [](const std::string& w) {
+      return is_one_of(w, {"in", "on", "into", "onto", "inside", "there", "it", "them", "go", "goes", "put"});
+    });
+  };
+  // "no, top drawer. ruler and calculator too": a last sentence (or
+  // comma's piece) of things said too, every one of them.
+  for (std::size_t k = words.size(); k-- > 0;) {
+    if (!is_one_of(words[k], {".", ";", "!", ","})) continue;
+    Words last(words.begin() + static_cast<std::ptrdiff_t>(k + 1), words.end());
+    while (!last.empty() && is_one_of(last.back(), {".", "!"})) last.pop_back();
+    const bool too = !last.empty() && (last.back() == "too" || has(last, {"as", "well"}));
+    if (!too || says_a_place(last) || last.size() > 8) break;
+    std::erase_if(last, [](const std::string& w) { return is_one_of(w, {"too", "as", "well", "also"}); });
+    Words item;
+    bool short_items = true;
+    auto flush = [&] {
+      short_items = short_items && item.size() <= 3;
+      if (!item.empty()) toos.push_back(quoted_words(item) + " too");
+      item.clear();
+    };
+    for (const std::string& w : last)
+      if (is_one_of(w, {",", "and"})) flush();
+      else item.push_back(w);
+    flush();
+    if (toos.empty() || !short_items) {
+      toos.clear();
+      break;
+    }
+    return {quoted_words(Words(words.begin(), words.begin() + static_cast<std::ptrdiff_t>(k))), toos};
+  }
   std::size_t end = words.size();
   for (;;) {
     std::size_t cut = end;
     while (cut > 0 && !is_one_of(words[cut - 1], {",", "and"})) --cut;
-    if (cut == 0) break;
     Words clause(words.begin() + static_cast<std::ptrdiff_t>(cut), words.begin() + static_cast<std::ptrdiff_t>(end));
     const bool too = !clause.empty() && (clause.back() == "too" || has(clause, {"as", "well"}));
-    const bool says_a_place = std::any_of(clause.begin(), clause.end(), [](const std::string& w) {
-      return is_one_of(w, {"in", "on", "into", "onto", "inside", "there", "it", "them", "go", "goes", "put"});
-    });
-    if (!too || says_a_place || clause.size() > 5) break;
+    if (!too || says_a_place(clause) || clause.size() > 5) break;
     toos.insert(toos.begin(), quoted_words(clause));
+    // The whole of it said too ("the milk as well", the rest of a yes).
+    if (cut == 0) {
+      end = 0;
+      break;
+    }
     end = cut - 1;
     while (end > 0 && is_one_of(words[end - 1], {",", "and"})) --end;
   }
@@ -139,8 +169,6 @@ std::pair<std::string, std::vector<std::string>> without_trailing_toos(std::stri
   return {quoted_words(Words(words.begin(), words.begin() + static_cast<std::ptrdiff_t>(end))), toos};
 }
 
-// The goals of the things a "knife too" names, like the goal `given` the
-// thing asked about; added to its others.
 void add_the_same_for(const Grounder& grounder, const World& world, const ReplyContext& at,
                       const std::vector<std::string>& toos, GoalGiven& given) {
   if (!at.object) return;
@@ -158,6 +186,8 @@ void add_the_same_for(const Grounder& grounder, const World& world, const ReplyC
     for (const Goal& g : theirs->others) add(g);
   }
 }
+
+namespace {
 
 // The answer read without its "too"s, whose things then get the same goal;
 // nullopt when the whole reading already gives others their goals, the
@@ -199,6 +229,27 @@ ReplyActs read(const Grounder& grounder, const World& world, const ReplyContext&
     return out;
   }
   std::vector<Segment> parts = segments(text);
+  // "crayons go in the left bin no wait, the right one": a strong marker
+  // said last in a piece begins the next one, which corrects it.
+  for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+    Words& words = parts[i].words;
+    for (std::size_t k = std::min<std::size_t>(3, words.size() > 0 ? words.size() - 1 : 0); k > 0; --k) {
+      const Words tail(words.end() - static_cast<std::ptrdiff_t>(k), words.end());
+      const Marker m = marker(tail);
+      // ("ketchup in the pantry actually, we keep it there": "actually"
+      // last is no correction; "oh wait, close it" has nothing before it.)
+      if (m.length != k || !m.strong || tail.front() == "actually") continue;
+      const bool said_before = std::any_of(words.begin(), words.end() - static_cast<std::ptrdiff_t>(k),
+                                           [](const std::string& w) { return !is_marker(w) && !is_interjection(w); });
+      if (!said_before) continue;
+      Words& next = parts[i + 1].words;
+      next.insert(next.begin(), tail.begin(), tail.end());
+      parts[i + 1].text = quoted_words(next);
+      words.erase(words.end() - static_cast<std::ptrdiff_t>(k), words.end());
+      parts[i].text = quoted_words(words);
+      break;
+    }
+  }
   std::vector<Reply> before, after;  // undos; questions and one-off actions
   std::vector<const Segment*> answer, doors;
   std::deque<Segment> repaired;  // what follows a marker inside a segment
@@ -219,6 +270,12 @@ ReplyActs read(const Grounder& grounder, const World& world, const ReplyContext&
     // with a word that is also a filler is the answer.)
     const bool yes_or_no_said = context.asked == Asked::kYesNo && answer_prefix(s.words);
     if (without_interjections(s.words).empty() && answer.empty() && before.empty() && !yes_or_no_said) continue;
+    // "forget it. floor next": never mind, before more; no "forget" command.
+    if (parts.size() > 1 && (s.words == Words{"forget", "it"} || s.words == Words{"forget", "that"} ||
+                             s.words == Words{"never", "mind"} || s.words == Words{"nevermind"})) {
+      out.notes.push_back("I took " + quote(s.text) + " as never mind.");
+      continue;
+    }
     if (corrects && answer.empty() && before.empty()) {
       Marker m = marker(s.words);
       if (m.length > 0 && m.length >= s.words.size()) {

@@ -49,6 +49,16 @@ struct Marker {
 };
 Marker marker(const Words& words);
 
+// "pan in the sink, knife too", "sandpaper in the bottom drawer and the
+// batteries as well", "top drawer. ruler and calculator too": the answer
+// before the clauses that say "the same for" other things, and those
+// clauses ("knife too"); none when the answer ends with no such clause.
+std::pair<std::string, std::vector<std::string>> without_trailing_toos(std::string_view answer);
+// The goals of the things a "knife too" names, like the goal `given` the
+// thing asked about (`at.object`); added to its others.
+void add_the_same_for(const Grounder& grounder, const World& world, const ReplyContext& at,
+                      const std::vector<std::string>& toos, GoalGiven& given);
+
 // "what's left?", "where's the soap?", "why did you close it?": the
 // teacher's question, or nullopt.
 std::optional<Command> question(const Grounder& grounder, const World& world, const Words& said);

@@ -110,6 +110,10 @@ Marker marker(const Words& words) {
     }
     if (!is_marker(words[m.length]) && !is_interjection(words[m.length])) break;
     const std::string& w = words[m.length];
+    // "oops, right bin": "right" before a word of the answer is a side.
+    if (w == "right" && m.length + 1 < words.size() && !is_marker(words[m.length + 1]) &&
+        !is_interjection(words[m.length + 1]))
+      break;
     if (is_one_of(w, {"wait", "oops", "whoops", "actually", "sorry"})) m.strong = true;
     if (is_one_of(w, {"no", "nah", "nope"})) ++noes;
     ++m.length;
@@ -215,7 +219,10 @@ bool asks_for_help(const Words& said) {
     }
     return true;
   };
-  bool can_you_do = in_order({"can", "you", "do"}) || in_order({"could", "you", "do"}) || has(words, {"able", "to", "do"});
+  // "what do you do exactly?", "what does this thing do?": what the agent is for.
+  bool what_you_do = words.front() == "what" && (in_order({"do", "you", "do"}) || in_order({"does", "this", "do"}));
+  bool can_you_do = in_order({"can", "you", "do"}) || in_order({"could", "you", "do"}) ||
+                    has(words, {"able", "to", "do"}) || what_you_do;
   // "how does this work?", "how do I use you?": how the teaching goes.
   bool how_it_works = words.front() == "how" && any_of({"work", "works", "use", "start"});
   bool to_say = std::any_of(words.begin(), words.end(), [](const std::string& w) {

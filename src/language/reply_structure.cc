@@ -538,9 +538,24 @@ class StructureReader {
 // laundry" is the washing before it is a room.
 constexpr std::array<std::string_view, 3> kRoomlikeClasses{"building", "facility", "vessel"};
 
+// Whether what a task is done to is everything in the room: "everything",
+// "it all", "all the stuff in here", "all of this".
+bool names_everything_here(const Words& object) {
+  bool whole = false;
+  for (const std::string& w : object) {
+    if (is_one_of(w, {"everything", "everythin", "stuff", "things", "all"})) whole = true;
+    else if (!is_one_of(w, {"it", "of", "this", "that", "these", "in", "here", "the", "room", "place", "lot"}))
+      return false;
+  }
+  return whole;
+}
+
 TaskNamed task_named(const ReplyInput& in, const std::string& verb, const std::string& particle, bool up, Words object,
                      bool up_first) {
   Words room = split_words(to_lower(in.world.location));
+  // "put everything away": what the task is done to is the room.
+  const bool everything = names_everything_here(object);
+  if (!room.empty() && everything) object = room;
   if (!room.empty()) {
     // "after the party", "before I leave": a time, not what the task is done to.
     auto time = std::find_if(object.begin(), object.end(), [](const std::string& w) {
@@ -566,6 +581,11 @@ TaskNamed task_named(const ReplyInput& in, const std::string& verb, const std::s
       if (lexicon.has_wordnet() && !lexicon.knows(w)) return true;
       std::vector<std::string> one{w};
       if (!lexicon.kinds_under("room", one).empty()) return true;
+      // "the shop" of a workshop: the end of the location's one-word name.
+      const std::string location = to_lower(in.world.location);
+      if (w.size() >= 3 && location.size() > w.size() && location.ends_with(w) &&
+          location.find_first_of(" -") == std::string::npos)
+        return true;
       // "the laundry" in a laundry room is the washing; "the workshop" of
       // a bike workshop stays as said.
       if (names_a_thing_here(w) || names_location(w, in)) return false;
@@ -582,11 +602,16 @@ TaskNamed task_named(const ReplyInput& in, const std::string& verb, const std::s
   if (room.empty() && !object.empty() && is_one_of(object.front(), {"after", "before", "around"}) && up_first)
     name = verb + " up";
   std::string note;
-  if (!room.empty() && object == room)
-    if (auto taken = known_task_verb(in.grounder.lexicon(), verb, particle.empty() && up ? "up" : particle)) {
+  if (!room.empty() && object == room) {
+    const std::string said_particle = particle.empty() && up ? "up" : particle;
+    auto taken = known_task_verb(in.grounder.lexicon(), verb, said_particle);
+    if (!taken && everything && !names_a_known_task(in.grounder.lexicon(), verb, said_particle))
+      taken = task_verb_over_everything(verb, said_particle);
+    if (taken) {
       name = taken->verb;
       note = taken->note;
     }
+  }
   for (const std::string& w : object) name += " " + w;
   return TaskNamed{name, note};
 }

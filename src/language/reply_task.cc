@@ -103,6 +103,32 @@ std::optional<GerundTask> gerund_task(const Words& words, const ReplyInput& in) 
   return std::nullopt;
 }
 
+// "i need everything put away", "want it all cleaned up": what is wanted
+// done to something, said as the verb's form after it; before any other
+// verb's form in the reply ("the kids just finished their experiment and
+// i need everything put away" is putting away, not finishing).
+struct WantedDone {
+  std::string verb;
+  std::string particle;
+  Words object;
+};
+
+std::optional<WantedDone> wanted_done(const Words& words, const ReplyInput& in) {
+  for (std::size_t i = 0; i + 2 < words.size(); ++i) {
+    if (!is_one_of(words[i], {"need", "needs", "want", "wants", "get", "gets"})) continue;
+    for (std::size_t k = i + 1; k < words.size() && k <= i + 4; ++k) {
+      std::string base = in.vocabulary.any_verb(words[k]);
+      if (base.empty() || names_location(words[k], in) || is_determiner(words[k])) continue;
+      WantedDone out{base, k + 1 < words.size() && is_particle(words[k + 1]) ? words[k + 1] : "", {}};
+      out.object.assign(words.begin() + static_cast<std::ptrdiff_t>(i + 1), words.begin() + static_cast<std::ptrdiff_t>(k));
+      if (out.object.empty()) break;
+      for (std::size_t r = k + (out.particle.empty() ? 1 : 2); r < words.size(); ++r) out.object.push_back(words[r]);
+      return out;
+    }
+  }
+  return std::nullopt;
+}
+
 // A verb said somewhere in the reply that names a known task (tidying, or
 // a verb WordNet puts close to it), with its particle and the words after
 // it: what a request means when the verb it was read with names none. "it's
@@ -153,7 +179,14 @@ Reply read_task(const ReplyInput& in) {
   std::vector<Words> said;
   std::vector<bool> describes;
   std::vector<Words> framed;  // the pieces as said, frame and all
-  for (const Words& piece : comma_pieces(without_fillers(in.words, in.vocabulary))) {
+  for (Words piece : comma_pieces(without_fillers(in.words, in.vocabulary))) {
+    // "end of (the) day": a word before "of" is a noun, and the phrase a
+    // time, not the request.
+    if (piece.size() > 2 && piece[1] == "of") {
+      std::size_t cut = 2 + (is_determiner(piece[2]) ? 1 : 0) + 1;
+      piece.erase(piece.begin(), piece.begin() + static_cast<std::ptrdiff_t>(std::min(cut, piece.size())));
+      if (piece.empty()) continue;
+    }
     framed.push_back(piece);
     said.push_back(after_frame(piece));
     const Words& rest = said.back();
@@ -182,6 +215,8 @@ Reply read_task(const ReplyInput& in) {
   if (!words) {
     Words all;
     for (const Words& piece : said) all.insert(all.end(), piece.begin(), piece.end());
+    if (auto wanted = wanted_done(all, in))
+      return task_named(in, wanted->verb, wanted->particle, wanted->particle == "up", std::move(wanted->object), false);
     if (auto named = gerund_task(all, in)) return task_named(in, named->verb, "", false, std::move(named->object), false);
     return unusable(in, Problem{"I need the name of a task, said as what to do, such as \"" +
                                     example_replies(in.world, in.context).front() + "\".",
@@ -199,7 +234,8 @@ Reply read_task(const ReplyInput& in) {
     }
     if (is_particle(w)) {
       if (w != "up" && particle.empty()) particle = w;  // "tidy up" is "tidy"
-    } else if (!is_determiner(w)) {
+    } else if (!is_determiner(w) || (w == "all" && is_one_of((*words)[i - 1], {"it", "this", "them"}))) {
+      // ("put it all away": "all" says it is everything.)
       object.push_back(w);
     }
   }

@@ -193,6 +193,19 @@ std::optional<GoalGiven> goal_in_rest(const Grounder& grounder, const World& wor
   if (answer.rest.empty() || !context.object) return std::nullopt;
   ReplyContext at = context;
   at.asked = Asked::kGoal;
+  // "yeah, and envelopes as well", "no, top drawer. ruler and calculator
+  // too": the things said too get the same goal as the one asked about.
+  if (auto [before, toos] = acts::without_trailing_toos(answer.rest); !toos.empty()) {
+    std::optional<GoalGiven> first;
+    YesNo shorter = answer;
+    shorter.rest = before;
+    if (!trim(before).empty()) first = goal_in_rest(grounder, world, context, shorter);
+    if (!first && answer.yes && context.proposal) first = GoalGiven{*context.proposal, {}};
+    if (first) {
+      acts::add_the_same_for(grounder, world, at, toos, *first);
+      if (!first->others.empty()) return first;
+    }
+  }
   auto only_proposed = [&](const GoalGiven& given) {
     return context.proposal && holds_only_the_proposal(given, *context.proposal);
   };

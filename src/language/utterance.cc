@@ -91,6 +91,12 @@ void expand(const std::string& word, const std::string& next, std::vector<std::s
       {"whats", "what is"},     {"lets", "let us"},      {"w", "with"},           {"w/", "with"},
       {"rn", "right now"},      {"cuz", "because"},      {"bc", "because"},       {"tmrw", "tomorrow"},
   }};
+  // "ya", first in a reply, is a yes ("ya", "ya sure"); "see ya", "ya
+  // know" are you.
+  if (word == "ya" && out.empty() && next != "know") {
+    out.emplace_back("yeah");
+    return;
+  }
   for (const auto& [from, to] : kWhole) {
     if (word == from) {
       for (std::string& w : split_words(to)) out.push_back(std::move(w));

@@ -18,6 +18,13 @@ extern char** environ;
 
 namespace apprentice::testing {
 
+// What a person types: each reply on a line of its own, for Process::write.
+inline std::string typed_lines(const std::vector<std::string>& replies) {
+  std::string text;
+  for (const std::string& reply : replies) text += reply + "\n";
+  return text;
+}
+
 class Process {
  public:
   // Starts `args` (args[0] is the program's path) in the working directory

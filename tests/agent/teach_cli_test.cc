@@ -39,12 +39,6 @@ std::vector<std::string> full_script() {
           "You are done."};
 }
 
-std::string lines(const std::vector<std::string>& script) {
-  std::string text;
-  for (const std::string& line : script) text += line + "\n";
-  return text;
-}
-
 // Each test has a fresh directory of its own (testing::ScratchTest::dir_),
 // so that runs in parallel never share a store.
 class Teach : public testing::ScratchTest {
@@ -73,7 +67,7 @@ class Teach : public testing::ScratchTest {
 TEST_F(Teach, LearnsTheTaskFromAScriptOnStdinSayingWhatItUnderstoodAndDid) {
   Process teach(teach_args());
   ASSERT_TRUE(teach.started());
-  ASSERT_TRUE(teach.write(lines(full_script())));
+  ASSERT_TRUE(teach.write(testing::typed_lines(full_script())));
   int code = teach.wait();
   EXPECT_EQ(code, 0) << teach.out() << teach.err();
   EXPECT_EQ(teach.out(),
@@ -116,7 +110,7 @@ TEST_F(Teach, QuietKeepsOnlyTheQuestionsAndTheSummary) {
   std::vector<std::string> args = {APPRENTICE_BINARY, "teach", scenario_.string(), "--knowledge",
                                    knowledge().string(), "--quiet"};
   Process teach(args);
-  ASSERT_TRUE(teach.write(lines(full_script())));
+  ASSERT_TRUE(teach.write(testing::typed_lines(full_script())));
   EXPECT_EQ(teach.wait(), 0) << teach.out() << teach.err();
   EXPECT_THAT(teach.out(), Not(HasSubstr("Teaching in")));
   EXPECT_THAT(teach.out(), Not(HasSubstr("Agent: So ")));
@@ -142,7 +136,7 @@ TEST_F(Teach, TheInstructorTeachesActionsWithoutSearchAndRefusalsArePlainEnglish
                                      "Pick up the paper-plate.",
                                      "Put the paper-plate in the garbage.",
                                      "You are done."};
-  ASSERT_TRUE(teach.write(lines(script)));
+  ASSERT_TRUE(teach.write(testing::typed_lines(script)));
   EXPECT_EQ(teach.wait(), 0) << teach.out() << teach.err();
   EXPECT_THAT(teach.out(), HasSubstr("Agent: What should I do next so that the ketchup is in the fridge and the fridge "
                                      "is closed?\nInstructor: Put the ketchup in the fridge.\n"
@@ -156,7 +150,7 @@ TEST_F(Teach, HelpAndStatusAnswerThePersonAndAreNotInstructions) {
   Process teach(teach_args());
   std::vector<std::string> script = full_script();
   script.insert(script.begin() + 3, {"help", "status"});
-  ASSERT_TRUE(teach.write(lines(script)));
+  ASSERT_TRUE(teach.write(testing::typed_lines(script)));
   EXPECT_EQ(teach.wait(), 0) << teach.out() << teach.err();
   const std::string question = "Agent: Where should the ketchup on the table go?\n";
   EXPECT_THAT(teach.out(), HasSubstr(question + "Instructor: help\n"
@@ -189,7 +183,7 @@ TEST_F(Teach, UndoForgetsTheLastGoalInMemoryAndStoreAndPutsTheWorldBack) {
                                      "Repeat.",
                                      kPaperPlateGoal,
                                      "You are done."};
-  ASSERT_TRUE(teach.write(lines(script)));
+  ASSERT_TRUE(teach.write(testing::typed_lines(script)));
   EXPECT_EQ(teach.wait(), 0) << teach.out() << teach.err();
   EXPECT_THAT(teach.out(),
               HasSubstr("Agent: I put the ketchup in the garbage.\n"
@@ -214,7 +208,7 @@ TEST_F(Teach, UndoOfAStepOfTheTaskStructureAsksForItAgain) {
   Process teach(teach_args());
   std::vector<std::string> script = full_script();
   script.insert(script.begin() + 3, {"undo", "Clear an object that is on the table."});
-  ASSERT_TRUE(teach.write(lines(script)));
+  ASSERT_TRUE(teach.write(testing::typed_lines(script)));
   EXPECT_EQ(teach.wait(), 0) << teach.out() << teach.err();
   EXPECT_THAT(teach.out(), HasSubstr("Agent: Where should the ketchup on the table go?\n"
                                      "Instructor: undo\n"
@@ -229,7 +223,7 @@ TEST_F(Teach, ForgetAKindOfObjectForgetsWhereItGoes) {
   Process teach(teach_args());
   std::vector<std::string> script = {full_script()[0], full_script()[1], full_script()[2], kKetchupGoal,
                                      "forget zebra", "forget ketchups", "quit"};
-  ASSERT_TRUE(teach.write(lines(script)));
+  ASSERT_TRUE(teach.write(testing::typed_lines(script)));
   EXPECT_EQ(teach.wait(), 1) << teach.out() << teach.err();
   EXPECT_THAT(teach.out(), HasSubstr("Agent: I have not learned where to put zebra, so there is nothing to forget.\n"));
   // A plural names the kind too.
@@ -270,7 +264,7 @@ TEST_F(Teach, CtrlDMidWayStopsCleanlyAndTeachingAgainAsksOnlyWhatIsNew) {
   // Teaching again with that knowledge: the agent says it knows the task,
   // does it, and asks only about the paper plate and what comes next.
   Process again(teach_args());
-  ASSERT_TRUE(again.write(lines({"Tidy kitchen.", kPaperPlateGoal, "You are done."})));
+  ASSERT_TRUE(again.write(testing::typed_lines({"Tidy kitchen.", kPaperPlateGoal, "You are done."})));
   EXPECT_EQ(again.wait(), 0) << again.out() << again.err();
   EXPECT_THAT(again.out(), HasSubstr("Instructor: Tidy kitchen.\n"
                                      "Agent: I know how to tidy the kitchen; I will ask only about what is new.\n"
@@ -309,7 +303,7 @@ TEST_F(Teach, TheSummaryTellsLookAlikesApartByWhereTheyWereAndSaysRepeatsOnce) {
 
 TEST_F(Teach, LeaveItAndSameAsAKindNotLearnedAnswerAGoalQuestion) {
   Process teach(teach_args());
-  ASSERT_TRUE(teach.write(lines({"Tidy kitchen.", "clear the table", "same as the paper plate", "leave it", "garbage",
+  ASSERT_TRUE(teach.write(testing::typed_lines({"Tidy kitchen.", "clear the table", "same as the paper plate", "leave it", "garbage",
                                  "You are done."})));
   EXPECT_EQ(teach.wait(), 1) << teach.out() << teach.err();
   EXPECT_THAT(teach.out(), HasSubstr("Instructor: same as the paper plate\n"
@@ -322,7 +316,7 @@ TEST_F(Teach, LeaveItAndSameAsAKindNotLearnedAnswerAGoalQuestion) {
 
 TEST_F(Teach, SameAsALearnedKindTakesItsGoal) {
   Process teach(teach_args());
-  ASSERT_TRUE(teach.write(lines({"Tidy kitchen.", "clear the table", kKetchupGoal, "same as the ketchup.", "You are done."})));
+  ASSERT_TRUE(teach.write(testing::typed_lines({"Tidy kitchen.", "clear the table", kKetchupGoal, "same as the ketchup.", "You are done."})));
   EXPECT_EQ(teach.wait(), 1) << teach.out() << teach.err();
   EXPECT_THAT(teach.out(), HasSubstr("Instructor: same as the ketchup.\n"
                                      "Agent: So the paper plate goes in the fridge, and the fridge ends closed.\n"));
@@ -336,7 +330,7 @@ TEST_F(Teach, SameAsALearnedKindTakesItsGoal) {
 TEST_F(Teach, AGarageTaughtAsAPersonTalks) {
   Process teach({APPRENTICE_BINARY, "teach", "--scenario",
                  testing::source_path("data/scenarios/tidy-garage.yaml").string()});
-  ASSERT_TRUE(teach.write(lines({"the garage is a mess, let's tidy it up", "clear the workbench",
+  ASSERT_TRUE(teach.write(testing::typed_lines({"the garage is a mess, let's tidy it up", "clear the workbench",
                                  "put the hammer in the top drawer and close it",
                                  "same as the hammer, and shut the drawer afterwards", "status", "quit"})));
   EXPECT_EQ(teach.wait(), 1) << teach.out() << teach.err();
@@ -353,7 +347,7 @@ TEST_F(Teach, AGarageTaughtAsAPersonTalks) {
 // Before these readings the session stalled at the toy car.
 TEST_F(Teach, APlayroomTaughtAsAPersonTalks) {
   Process teach({APPRENTICE_BINARY, "teach", "--scenario", testing::source_path("data/scenarios/playroom.yaml").string()});
-  ASSERT_TRUE(teach.write(lines({"the kids left a mess in here. can you tidy up the playroom?",
+  ASSERT_TRUE(teach.write(testing::typed_lines({"the kids left a mess in here. can you tidy up the playroom?",
                                  "first pick up everything off the floor", "blocks go in the red bin",
                                  "the cars go into the blue one", "the teddy goes in the toy chest, and close the lid",
                                  "books belong on the bookshelf", "the sock goes in the hamper", "ok now empty the crates",
@@ -373,7 +367,7 @@ TEST_F(Teach, APlayroomTaughtAsAPersonTalks) {
 // instruction (the same playroom, 12 replies instead of 13).
 TEST_F(Teach, TwoPartsSaidInOneReplyAreDoneInTurn) {
   Process teach({APPRENTICE_BINARY, "teach", "--scenario", testing::source_path("data/scenarios/playroom.yaml").string()});
-  ASSERT_TRUE(teach.write(lines({"the kids left a mess in here. can you tidy up the playroom?",
+  ASSERT_TRUE(teach.write(testing::typed_lines({"the kids left a mess in here. can you tidy up the playroom?",
                                  "first pick up everything off the floor, then empty the crates",
                                  "blocks go in the red bin", "the cars go into the blue one",
                                  "the teddy goes in the toy chest, and close the lid", "books belong on the bookshelf",
@@ -390,7 +384,7 @@ TEST_F(Teach, TwoPartsSaidInOneReplyAreDoneInTurn) {
 // the lesson (the summary said "The task is learned" with nothing learned).
 TEST_F(Teach, DoneBeforeAnyPartOfTheTaskIsAskedAgain) {
   Process teach(teach_args());
-  ASSERT_TRUE(teach.write(lines({"Tidy kitchen.", "we're done", "quit"})));
+  ASSERT_TRUE(teach.write(testing::typed_lines({"Tidy kitchen.", "we're done", "quit"})));
   EXPECT_EQ(teach.wait(), 1) << teach.out() << teach.err();
   EXPECT_THAT(teach.out(), HasSubstr("Instructor: we're done\n"
                                      "Agent: I have not been told any part of the task yet, so it cannot be done."));
@@ -400,7 +394,7 @@ TEST_F(Teach, DoneBeforeAnyPartOfTheTaskIsAskedAgain) {
 
 TEST_F(Teach, WithoutAStoreItSaysNothingWasSavedAndHowToKeepIt) {
   Process teach({APPRENTICE_BINARY, "teach", "--scenario", scenario_.string()});
-  ASSERT_TRUE(teach.write(lines(full_script())));
+  ASSERT_TRUE(teach.write(testing::typed_lines(full_script())));
   EXPECT_EQ(teach.wait(), 0) << teach.out() << teach.err();
   EXPECT_THAT(teach.out(), EndsWith("Nothing was saved. To keep what you teach, give a knowledge store: apprentice teach --scenario " +
                                     scenario_.string() + " --knowledge FILE (for example kitchen.sqlite).\n"));
@@ -408,7 +402,7 @@ TEST_F(Teach, WithoutAStoreItSaysNothingWasSavedAndHowToKeepIt) {
 
 TEST_F(Teach, CtrlCSaysWhatWasKeptAndExits130) {
   Process teach(teach_args());
-  ASSERT_TRUE(teach.write(lines({"Tidy kitchen.", "Repeat the following tasks while an object is on the table.",
+  ASSERT_TRUE(teach.write(testing::typed_lines({"Tidy kitchen.", "Repeat the following tasks while an object is on the table.",
                                  "Clear an object that is on the table.", kKetchupGoal})));
   ASSERT_TRUE(teach.read_until("Agent: Is there more to clear on the table, or is that all?\nInstructor: "))
       << teach.out() << teach.err();
@@ -423,7 +417,7 @@ TEST_F(Teach, RepliesTheAgentCannotUseAreSaidSoWithExamplesAndAskedAgain) {
   Process teach(teach_args());
   std::vector<std::string> script = full_script();
   script.insert(script.begin() + 3, "If the object is a ketchup then the goal is that the object is in the moon.");
-  ASSERT_TRUE(teach.write(lines(script)));
+  ASSERT_TRUE(teach.write(testing::typed_lines(script)));
   EXPECT_EQ(teach.wait(), 0) << teach.out() << teach.err();
   // The agent said why, with replies that would work, and asked again; the
   // unusable reply still counts.
@@ -438,7 +432,7 @@ TEST_F(Teach, APersonIsNeverGivenUpOn) {
   Process teach(teach_args());
   std::vector<std::string> script = full_script();
   for (int i = 0; i < 6; ++i) script.insert(script.begin() + 3, "blah blah");
-  ASSERT_TRUE(teach.write(lines(script)));
+  ASSERT_TRUE(teach.write(testing::typed_lines(script)));
   EXPECT_EQ(teach.wait(), 0) << teach.out() << teach.err();
   EXPECT_THAT(teach.out(), HasSubstr("3 of 3 parts of the goal are met, after 14 instructions."));
 }
@@ -448,7 +442,7 @@ TEST_F(Teach, APersonIsNeverGivenUpOn) {
 // memory when its turn comes (the paper plate is not asked about).
 TEST_F(Teach, AGoalForAThingStillToComeIsLearnedForWhenItComes) {
   Process teach(teach_args());
-  ASSERT_TRUE(teach.write(lines({"Tidy kitchen.", "Repeat the following tasks while an object is on the table.",
+  ASSERT_TRUE(teach.write(testing::typed_lines({"Tidy kitchen.", "Repeat the following tasks while an object is on the table.",
                                  "Clear an object that is on the table.",
                                  "the goal is that the paper-plate is in the garbage.", kKetchupGoal, "You are done.",
                                  "You are done."})));
@@ -465,7 +459,7 @@ TEST_F(Teach, AGoalForAThingStillToComeIsLearnedForWhenItComes) {
 
 TEST_F(Teach, UndoForgetsAGoalSaidAhead) {
   Process teach(teach_args());
-  ASSERT_TRUE(teach.write(lines({"Tidy kitchen.", "clear the table", "the paper plate goes in the garbage", "undo",
+  ASSERT_TRUE(teach.write(testing::typed_lines({"Tidy kitchen.", "clear the table", "the paper plate goes in the garbage", "undo",
                                  kKetchupGoal, "quit"})));
   EXPECT_EQ(teach.wait(), 1) << teach.out() << teach.err();
   EXPECT_THAT(teach.out(), HasSubstr("Instructor: undo\n"
@@ -484,7 +478,7 @@ TEST_F(Teach, UndoForgetsAGoalSaidAhead) {
 TEST_F(Teach, ALaundryTaughtAsAPersonTalks) {
   const fs::path laundry = testing::source_path("data/scenarios/laundry-room.yaml");
   Process teach({APPRENTICE_BINARY, "teach", "--scenario", laundry.string(), "--knowledge", knowledge().string()});
-  ASSERT_TRUE(teach.write(lines({"let's do the laundry", "sort the baskets", "same again",
+  ASSERT_TRUE(teach.write(testing::typed_lines({"let's do the laundry", "sort the baskets", "same again",
                                  "the detergent goes on the high shelf", "the jeans go in the hamper",
                                  "towels go in the washer", "socks too", "the sweater goes on the low shelf", "toss it",
                                  "now the folding table", "clear it", "put it on the high shelf", "same again",
@@ -516,7 +510,7 @@ TEST_F(Teach, ALaundryTaughtAsAPersonTalks) {
 TEST_F(Teach, AKitchenTaughtInListsAndEllipses) {
   const fs::path kitchen = testing::source_path("data/scenarios/tidy-kitchen.yaml");
   Process teach({APPRENTICE_BINARY, "teach", "--scenario", kitchen.string(), "--knowledge", knowledge().string()});
-  ASSERT_TRUE(teach.write(lines({"hey, can you help me clean up the kitchen?", "let's start by clearing off the table",
+  ASSERT_TRUE(teach.write(testing::typed_lines({"hey, can you help me clean up the kitchen?", "let's start by clearing off the table",
                                  "plates and glasses go in the dishwasher, close it", "same for the fork",
                                  "the ketchup goes in the fridge, close the door", "milk as well",
                                  "the cereal box goes in the pantry and shut it", "same with the pop tarts",
@@ -548,7 +542,7 @@ TEST_F(Teach, AKitchenTaughtInListsAndEllipses) {
 TEST_F(Teach, ThingsTooSaidOfAnotherThingStillToComeIsLearnedAhead) {
   Process teach({APPRENTICE_BINARY, "teach", "--scenario",
                  testing::source_path("data/scenarios/tidy-kitchen.yaml").string()});
-  ASSERT_TRUE(teach.write(lines({"tidy the kitchen", "clear the table", "put it in the dishwasher and close it",
+  ASSERT_TRUE(teach.write(testing::typed_lines({"tidy the kitchen", "clear the table", "put it in the dishwasher and close it",
                                  "the milk too", "quit"})));
   EXPECT_EQ(teach.wait(), 1) << teach.out() << teach.err();
   EXPECT_THAT(teach.out(), HasSubstr("Agent: Where should the metal fork on the table go?\n"
@@ -565,7 +559,7 @@ TEST_F(Teach, ThingsTooSaidOfAnotherThingStillToComeIsLearnedAhead) {
 TEST_F(Teach, AGarageTaughtPlaceByPlace) {
   Process teach({APPRENTICE_BINARY, "teach", "--scenario",
                  testing::source_path("data/scenarios/tidy-garage.yaml").string()});
-  ASSERT_TRUE(teach.write(lines({"time to tidy the garage", "the hammer goes in the top drawer", "the workbench first",
+  ASSERT_TRUE(teach.write(testing::typed_lines({"time to tidy the garage", "the hammer goes in the top drawer", "the workbench first",
                                  "hammer and screwdrivers in the top drawer, close it",
                                  "wrench and tape measure go in the bottom drawer and close it", "paint on the shelf",
                                  "throw the rag away", "then the buckets", "empty them",
@@ -591,7 +585,7 @@ TEST_F(Teach, AGarageTaughtPlaceByPlace) {
 TEST_F(Teach, AClassOfThingsGoesTogether) {
   Process teach({APPRENTICE_BINARY, "teach", "--scenario",
                  testing::source_path("data/scenarios/tidy-garage.yaml").string()});
-  ASSERT_TRUE(teach.write(lines({"time to tidy the garage", "clear the workbench",
+  ASSERT_TRUE(teach.write(testing::typed_lines({"time to tidy the garage", "clear the workbench",
                                  "tools go in the top drawer, shut it afterwards", "quit"})));
   EXPECT_EQ(teach.wait(), 1) << teach.out() << teach.err();
   EXPECT_THAT(teach.out(), HasSubstr("Instructor: tools go in the top drawer, shut it afterwards\n"
@@ -608,7 +602,7 @@ TEST_F(Teach, AClassOfThingsGoesTogether) {
 TEST_F(Teach, AGroceryRunTaughtAsAPersonTalks) {
   Process teach({APPRENTICE_BINARY, "teach", "--scenario",
                  testing::source_path("data/scenarios/unpack-groceries.yaml").string()});
-  ASSERT_TRUE(teach.write(lines({"I just got back from the store, help me put the groceries away", "unpack the bags",
+  ASSERT_TRUE(teach.write(testing::typed_lines({"I just got back from the store, help me put the groceries away", "unpack the bags",
                                  "the catsup goes in the fridge and close it", "milk and cream too",
                                  "crackers, cereal and granola bars in the pantry, close it",
                                  "frozen stuff goes in the freezer, close it", "ice cream too",

@@ -37,19 +37,13 @@ objects:
   - {category: sponge, at: table1}
 )";
 
-std::string lines(const std::vector<std::string>& script) {
-  std::string text;
-  for (const std::string& line : script) text += line + "\n";
-  return text;
-}
-
 class TeachNorms : public testing::ScratchTest {};
 
 // Found by hand in a classroom: "the brushes go in the sink", said at the
 // paint pot's question, put the paint pot in the sink "as you said".
 TEST_F(TeachNorms, AClassRuleIsAskedNotActedOnForAThingItDoesNotName) {
   Process teach({APPRENTICE_BINARY, "teach", "--scenario", write("art-room.yaml", kArtRoom).string()});
-  ASSERT_TRUE(teach.write(lines({"tidy the classroom", "clear the table", "the sink", "the brushes go in the sink",
+  ASSERT_TRUE(teach.write(testing::typed_lines({"tidy the classroom", "clear the table", "the sink", "the brushes go in the sink",
                                  "no, it goes in the cupboard", "yes", "that is all"})));
   EXPECT_EQ(teach.wait(), 0) << teach.out() << teach.err();
   const std::string& out = teach.out();
@@ -73,7 +67,7 @@ TEST_F(TeachNorms, AClassRuleIsAskedNotActedOnForAThingItDoesNotName) {
 // neither class, is asked about.
 TEST_F(TeachNorms, AClassRuleGoesAloneToWhatWordNetPutsInIt) {
   Process teach({APPRENTICE_BINARY, "teach", "--scenario", write("art-room.yaml", kArtRoom).string()});
-  ASSERT_TRUE(teach.write(lines({"tidy the classroom", "clear the table", "brushes go in the sink, pots in the cupboard",
+  ASSERT_TRUE(teach.write(testing::typed_lines({"tidy the classroom", "clear the table", "brushes go in the sink, pots in the cupboard",
                                  "quit"})));
   teach.wait();
   const std::string& out = teach.out();
@@ -90,7 +84,7 @@ TEST_F(TeachNorms, AClassRuleGoesAloneToWhatWordNetPutsInIt) {
 // another door open; goals said with the door ("and close it") are as said.
 TEST_F(TeachNorms, ADoorOpenedToPutSomethingAwayIsClosedUnlessToldToLeaveItOpen) {
   Process teach({APPRENTICE_BINARY, "teach", "--scenario", testing::source_path("data/scenarios/tidy-kitchen.yaml").string()});
-  ASSERT_TRUE(teach.write(lines({"tidy kitchen", "clear the table", "the dishwasher", "the fridge and leave it open",
+  ASSERT_TRUE(teach.write(testing::typed_lines({"tidy kitchen", "clear the table", "the dishwasher", "the fridge and leave it open",
                                  "the pantry", "quit"})));
   teach.wait();
   const std::string& out = teach.out();
@@ -116,7 +110,7 @@ TEST_F(TeachNorms, ADoorOpenedToPutSomethingAwayIsClosedUnlessToldToLeaveItOpen)
 TEST_F(TeachNorms, SameAsAnotherButLeaveTheDoorOpenLeavesItOpen) {
   Process teach({APPRENTICE_BINARY, "teach", "--scenario", testing::source_path("data/scenarios/tidy-kitchen.yaml").string()});
   ASSERT_TRUE(teach.write(
-      lines({"tidy kitchen", "clear the table", "the dishwasher", "same as the plate but leave the door open", "quit"})));
+      testing::typed_lines({"tidy kitchen", "clear the table", "the dishwasher", "same as the plate but leave the door open", "quit"})));
   teach.wait();
   EXPECT_THAT(teach.out(), HasSubstr("Instructor: same as the plate but leave the door open\n"
                                      "Agent: So the metal fork goes in the dishwasher, and the dishwasher ends open.\n"
@@ -130,7 +124,7 @@ TEST_F(TeachNorms, SameAsAnotherButLeaveTheDoorOpenLeavesItOpen) {
 // floor.").
 TEST_F(TeachNorms, AStepWithoutItsVerbIsItsPlacesPartNotARule) {
   Process teach({APPRENTICE_BINARY, "teach", "--scenario", testing::source_path("data/scenarios/tidy-kitchen.yaml").string()});
-  ASSERT_TRUE(teach.write(lines({"tidy kitchen", "start with the stuff on the table", "quit"})));
+  ASSERT_TRUE(teach.write(testing::typed_lines({"tidy kitchen", "start with the stuff on the table", "quit"})));
   teach.wait();
   EXPECT_THAT(teach.out(), HasSubstr("Instructor: start with the stuff on the table\n"
                                      "Agent: I took \"start with the stuff on the table\" as clearing the table.\n"))
@@ -143,7 +137,7 @@ TEST_F(TeachNorms, AStepWithoutItsVerbIsItsPlacesPartNotARule) {
 // the top and the bottom drawer.
 TEST_F(TeachNorms, OpeningOneOfTwoLookAlikesAsksWhichAndOpensThatOne) {
   Process teach({APPRENTICE_BINARY, "teach", "--scenario", testing::source_path("data/scenarios/tidy-garage.yaml").string()});
-  ASSERT_TRUE(teach.write(lines({"tidy the garage", "clear the workbench", "open the drawer", "the top one", "quit"})));
+  ASSERT_TRUE(teach.write(testing::typed_lines({"tidy the garage", "clear the workbench", "open the drawer", "the top one", "quit"})));
   teach.wait();
   EXPECT_THAT(teach.out(), HasSubstr("Instructor: open the drawer\n"
                                      "Agent: Which drawer: the top drawer or the bottom drawer?\n"
@@ -161,7 +155,7 @@ TEST_F(TeachNorms, OpeningOneOfTwoLookAlikesAsksWhichAndOpensThatOne) {
 TEST_F(TeachNorms, AGoalOrAnEndingSaidAtAProposalIsTakenNotRefused) {
   const std::string world = write("art-room.yaml", kArtRoom).string();
   Process instead({APPRENTICE_BINARY, "teach", "--scenario", world});
-  ASSERT_TRUE(instead.write(lines({"tidy the classroom", "clear the table", "the sink", "the brushes go in the sink",
+  ASSERT_TRUE(instead.write(testing::typed_lines({"tidy the classroom", "clear the table", "the sink", "the brushes go in the sink",
                                    "hang on, the paint pot goes in the cupboard", "yes", "that is all"})));
   EXPECT_EQ(instead.wait(), 0) << instead.out() << instead.err();
   EXPECT_THAT(instead.out(), HasSubstr("Instructor: hang on, the paint pot goes in the cupboard\n"
@@ -170,7 +164,7 @@ TEST_F(TeachNorms, AGoalOrAnEndingSaidAtAProposalIsTakenNotRefused) {
   EXPECT_THAT(instead.out(), Not(HasSubstr("Please answer yes or no."))) << instead.out();
 
   Process ending({APPRENTICE_BINARY, "teach", "--scenario", world});
-  ASSERT_TRUE(ending.write(lines({"tidy the classroom", "clear the table", "the sink", "the brushes go in the sink",
+  ASSERT_TRUE(ending.write(testing::typed_lines({"tidy the classroom", "clear the table", "the sink", "the brushes go in the sink",
                                   "ok I'm done", "yes", "that is all"})));
   EXPECT_EQ(ending.wait(), 0) << ending.out() << ending.err();
   const std::string& out = ending.out();
@@ -190,7 +184,7 @@ TEST_F(TeachNorms, AGoalOrAnEndingSaidAtAProposalIsTakenNotRefused) {
 // place is the place proposed with that.
 TEST_F(TeachNorms, AYesThatSaysMoreOfTheDoorKeepsIt) {
   Process teach({APPRENTICE_BINARY, "teach", "--scenario", write("art-room.yaml", kArtRoom).string()});
-  ASSERT_TRUE(teach.write(lines({"tidy the classroom", "clear the table", "the cupboard",
+  ASSERT_TRUE(teach.write(testing::typed_lines({"tidy the classroom", "clear the table", "the cupboard",
                                  "the brushes go in the cupboard", "yes but leave the door open", "the sink",
                                  "that is all"})));
   EXPECT_EQ(teach.wait(), 0) << teach.out() << teach.err();
@@ -217,7 +211,7 @@ objects:
   const std::string store = (dir_ / "bedroom.sqlite").string();
   Process teach({APPRENTICE_BINARY, "teach", "--scenario", write("bedroom.yaml", kBedroom).string(), "--knowledge",
                  store});
-  ASSERT_TRUE(teach.write(lines({"tidy the bedroom", "clear the bed", "clothes go in the hamper", "that is all"})));
+  ASSERT_TRUE(teach.write(testing::typed_lines({"tidy the bedroom", "clear the bed", "clothes go in the hamper", "that is all"})));
   ASSERT_EQ(teach.wait(), 0) << teach.out() << teach.err();
   Process knowledge({APPRENTICE_BINARY, "knowledge", "--knowledge", store});
   ASSERT_EQ(knowledge.wait(), 0) << knowledge.err();
@@ -231,7 +225,7 @@ objects:
 // the question is not asked again.
 TEST_F(TeachNorms, AOneOffActionBeforeAPartIsDoneAndThePartTaken) {
   Process teach({APPRENTICE_BINARY, "teach", "--scenario", write("art-room.yaml", kArtRoom).string()});
-  ASSERT_TRUE(teach.write(lines({"tidy the classroom", "ok now open the cupboard, then clear the table", "the sink",
+  ASSERT_TRUE(teach.write(testing::typed_lines({"tidy the classroom", "ok now open the cupboard, then clear the table", "the sink",
                                  "the cupboard", "the sink", "that is all"})));
   EXPECT_EQ(teach.wait(), 0) << teach.out() << teach.err();
   const std::string& out = teach.out();
@@ -263,7 +257,7 @@ objects:
   - {category: seed-packet, at: table1}
 )";
   Process teach({APPRENTICE_BINARY, "teach", "--scenario", write("potting-room.yaml", kPottingRoom).string()});
-  ASSERT_TRUE(teach.write(lines({"tidy the greenhouse", "pots go on the right shelf", "clear the table", "no",
+  ASSERT_TRUE(teach.write(testing::typed_lines({"tidy the greenhouse", "pots go on the right shelf", "clear the table", "no",
                                  "in the bin", "that is all"})));
   EXPECT_EQ(teach.wait(), 0) << teach.out() << teach.err();
   const std::string& out = teach.out();
@@ -293,7 +287,7 @@ objects:
   - {category: rag, at: bucket1}
 )";
   Process teach({APPRENTICE_BINARY, "teach", "--scenario", write("two-surfaces.yaml", kTwoSurfaces).string()});
-  ASSERT_TRUE(teach.write(lines({"tidy the classroom", "clear the table", "the sink",
+  ASSERT_TRUE(teach.write(testing::typed_lines({"tidy the classroom", "clear the table", "the sink",
                                  "now the floor, and the bucket after that", "the cupboard", "the sink",
                                  "that is all"})));
   EXPECT_EQ(teach.wait(), 0) << teach.out() << teach.err();

@@ -19,6 +19,7 @@ namespace apprentice {
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::Not;
 using namespace apprentice::testing;
 
 struct Learned {
@@ -231,6 +232,34 @@ TEST(KnowledgeCommand, PrintsTheCeramicPlatesRulesAsLearned) {
     EXPECT_EQ(json["rules"][i]["object"], "ceramic-plate1 (ceramic-plate)");
     EXPECT_THAT(json["rules"][i]["source"].get<std::string>(), HasSubstr("instructor: "));
   }
+}
+
+// Found by a fresh user: `knowledge` listed every guess the examples
+// induce, down to "placental goes on the bed" at 11%. In English it lists
+// the rules at least even odds sure, says how many weaker guesses it left
+// out, and lists them all with --all; --json always has all.
+TEST(KnowledgeCommand, WeakerGuessesAreCountedAndListedWithAll) {
+  Learned& l = learned("inst+search4", "full");
+  ASSERT_EQ(l.exit_code, 0) << l.err;
+  ScratchDir dir;
+  Invocation json = run_cli(dir.path(), {"knowledge", "--knowledge", l.store.string(), "--json"});
+  ASSERT_EQ(json.exit_code, 0) << json.err;
+  const nlohmann::json rules = nlohmann::json::parse(json.out, nullptr, false)["class_rules"];
+  std::vector<std::string> weak, strong;
+  for (const nlohmann::json& rule : rules)
+    (rule["source"] == "induced" && rule["confidence"].get<double>() < 0.5 ? weak : strong).push_back(rule["text"]);
+  ASSERT_FALSE(weak.empty()) << "the kitchen's examples induce weaker guesses too";
+  ASSERT_FALSE(strong.empty());
+  Invocation plain = run_cli(dir.path(), {"knowledge", "--knowledge", l.store.string()});
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  for (const std::string& text : strong) EXPECT_THAT(plain.out, HasSubstr("  " + text + "\n"));
+  for (const std::string& text : weak) EXPECT_THAT(plain.out, Not(HasSubstr("  " + text + "\n")));
+  EXPECT_THAT(plain.out, HasSubstr("(and " + std::to_string(weak.size()) + " weaker guess"));
+  EXPECT_THAT(plain.out, HasSubstr("--all lists them)"));
+  Invocation all = run_cli(dir.path(), {"knowledge", "--knowledge", l.store.string(), "--all"});
+  ASSERT_EQ(all.exit_code, 0) << all.err;
+  for (const std::string& text : weak) EXPECT_THAT(all.out, HasSubstr("  " + text + "\n"));
+  EXPECT_THAT(all.out, Not(HasSubstr("weaker guess")));
 }
 
 // `knowledge` lists the class rules with their evidence and source, and

@@ -236,7 +236,11 @@ std::optional<Acts> reading_acts(const Grounder& grounder, const World& world, c
         next.asked = Asked::kGoal;
         // As the agent reads it (language::goal_in_rest), else the rest's
         // other acts ("no, leave it").
-        const std::optional<GoalGiven> goal = goal_in_rest(grounder, world, context, r);
+        std::optional<GoalGiven> goal = goal_in_rest(grounder, world, context, r);
+        // A yes that gives other things the same goal ("yes, and the
+        // sponge too"): the yes, and their goals, as the agent learns them.
+        if (goal && r.yes && context.proposal && goal->goal == *context.proposal && !goal->others.empty())
+          goal = GoalGiven{goal->others.front(), std::vector<Goal>(goal->others.begin() + 1, goal->others.end())};
         Reply rest = goal ? Reply(*goal) : read_reply(grounder, world, next, r.rest);
         if (!std::holds_alternative<Unusable>(rest) && !std::holds_alternative<Ambiguous>(rest) &&
             !std::holds_alternative<YesNo>(rest)) {

@@ -20,6 +20,36 @@ bool noted(const std::vector<std::string>& notes, std::string_view part) {
   return false;
 }
 
+// A world of a fresh corpus set, and the first act read_acts reads in it,
+// formatted ("goal (in syringe1 sharps-container1)"), for a question about
+// `about` (none: about nothing).
+class FreshRoom {
+ public:
+  FreshRoom(const char* set, const char* file)
+      : worlds_(testing::source_path(std::string("tests/language/fresh/") + set)) {
+    std::string error;
+    scenario_ = worlds_.get(file, error);
+    EXPECT_NE(scenario_, nullptr) << error;
+  }
+  bool loaded() const { return scenario_ != nullptr; }
+  const World& world() const { return scenario_->world; }
+  std::string read(Asked asked, const char* about, const char* said) const {
+    if (!loaded()) return "no world";
+    ReplyContext c;
+    c.asked = asked;
+    if (about != nullptr) {
+      c.object = world().universe->find(about);
+      if (!c.object) return std::string("no ") + about;
+    }
+    ReplyActs read = read_acts(grounder(), world(), c, said);
+    return read.acts.empty() ? std::string("nothing") : format_reply(world(), read.acts.front());
+  }
+
+ private:
+  fresh::Worlds worlds_;
+  const Scenario* scenario_ = nullptr;
+};
+
 // "leave the lid open, more stuff is going in", "leave it open so I can
 // grab it in the dark": why is no instruction; the answer stands, and the
 // read-back says how the reason was taken.
@@ -110,50 +140,69 @@ TEST_F(ReplyActsTest, ALookAlikesPropertySaidAfterItsNameOrAsAComparativeNamesIt
 // A world whose look-alikes are told apart by "upper" and "lower": "bottom
 // cupboard" is the lower one.
 TEST(ReplyActsLookAlikes, APropertySaidInItsOwnWordsOrAnothersIsTheSame) {
-  fresh::Worlds worlds(testing::source_path("tests/language/fresh/set8"));
-  std::string error;
-  const Scenario* vet = worlds.get("vet-exam-room.yaml", error);
-  ASSERT_NE(vet, nullptr) << error;
-  const World& w = vet->world;
-  ReplyContext c;
-  c.asked = Asked::kGoal;
-  c.object = w.universe->find("muzzle1");
-  ASSERT_TRUE(c.object.has_value());
-  const ObjectId lower = *w.universe->find("cabinet2");
-  ASSERT_EQ(w.universe->info(lower).properties, std::vector<std::string>{"lower"});
-  for (const char* said : {"bottom cabinet", "the bottom cupboard", "in the lower cabinet"}) {
-    const std::string read = format_reply(w, read_acts(grounder(), w, c, said).acts.front());
-    EXPECT_EQ(read, "goal (in muzzle1 " + w.universe->name(lower) + ")") << said;
-  }
+  FreshRoom vet("set8", "vet-exam-room.yaml");
+  ASSERT_TRUE(vet.loaded());
+  const ObjectId lower = *vet.world().universe->find("cabinet2");
+  ASSERT_EQ(vet.world().universe->info(lower).properties, std::vector<std::string>{"lower"});
+  for (const char* said : {"bottom cabinet", "the bottom cupboard", "in the lower cabinet"})
+    EXPECT_EQ(vet.read(Asked::kGoal, "muzzle1", said), "goal (in muzzle1 " + vet.world().universe->name(lower) + ")")
+        << said;
 }
 
 // "sharps bin", "rubbish bin": a container word said after words that
 // name one receptacle here is that receptacle, and "bin" there is no verb;
 // "bin it" still throws the thing away.
 TEST(ReplyActsContainerWords, AContainerWordAfterWhatNamesAReceptacleIsThatReceptacle) {
-  fresh::Worlds worlds(testing::source_path("tests/language/fresh/set8"));
-  std::string error;
-  auto goal_read = [&](const char* file, const char* about, const char* said) {
-    const Scenario* scenario = worlds.get(file, error);
-    if (scenario == nullptr) return "no world: " + error;
-    const World& w = scenario->world;
-    ReplyContext c;
-    c.asked = Asked::kGoal;
-    c.object = w.universe->find(about);
-    if (!c.object) return std::string("no ") + about;
-    ReplyActs read = read_acts(grounder(), w, c, said);
-    return read.acts.empty() ? std::string("nothing") : format_reply(w, read.acts.front());
-  };
-  EXPECT_EQ(goal_read("vet-exam-room.yaml", "syringe1", "sharps bin"), "goal (in syringe1 sharps-container1)");
-  EXPECT_EQ(goal_read("vet-exam-room.yaml", "syringe1", "in the sharps bin please"),
-            "goal (in syringe1 sharps-container1)");
-  EXPECT_EQ(goal_read("vet-exam-room.yaml", "glove1", "rubbish bin"), "goal (in glove1 trash-can1)");
+  FreshRoom vet("set8", "vet-exam-room.yaml"), shop("set8", "maker-space.yaml");
+  EXPECT_EQ(vet.read(Asked::kGoal, "syringe1", "sharps bin"), "goal (in syringe1 sharps-container1)");
+  EXPECT_EQ(vet.read(Asked::kGoal, "syringe1", "in the sharps bin please"), "goal (in syringe1 sharps-container1)");
+  EXPECT_EQ(vet.read(Asked::kGoal, "glove1", "rubbish bin"), "goal (in glove1 trash-can1)");
   // The maker space has a scrap bin too, and WordNet's rubbish is scrap:
   // which one is asked, never taken.
-  EXPECT_EQ(goal_read("maker-space.yaml", "coffee-cup1", "in the rubbish bin").rfind("ambiguous", 0), 0u);
-  EXPECT_EQ(goal_read("maker-space.yaml", "coffee-cup1", "just bin it"), "goal (in coffee-cup1 trash-can1)");
+  EXPECT_EQ(shop.read(Asked::kGoal, "coffee-cup1", "in the rubbish bin").rfind("ambiguous", 0), 0u);
+  EXPECT_EQ(shop.read(Asked::kGoal, "coffee-cup1", "just bin it"), "goal (in coffee-cup1 trash-can1)");
   // A word naming no receptacle before "bin" names nothing by it.
-  EXPECT_NE(goal_read("vet-exam-room.yaml", "syringe1", "stethoscope bin"), "goal (in syringe1 sharps-container1)");
+  EXPECT_NE(vet.read(Asked::kGoal, "syringe1", "stethoscope bin"), "goal (in syringe1 sharps-container1)");
+}
+
+// A word that ends the location's one-word name names the room: "the
+// shop" of a workshop.
+TEST(ReplyActsTaskNames, TheHeadOfTheLocationsNameIsTheRoom) {
+  FreshRoom shop("set8", "maker-space.yaml");
+  ASSERT_TRUE(shop.loaded());
+  ASSERT_EQ(shop.world().location, "workshop");
+  EXPECT_EQ(shop.read(Asked::kTask, nullptr, "closing time! help me tidy up the shop"), "task tidy workshop");
+  EXPECT_EQ(shop.read(Asked::kTask, nullptr, "tidy the workshop"), "task tidy workshop");
+  // A word that is the location's name's beginning is not its head.
+  EXPECT_NE(shop.read(Asked::kTask, nullptr, "tidy the work"), "task tidy workshop");
+  // What the agent is for is asked, not a task "do".
+  EXPECT_EQ(shop.read(Asked::kTask, nullptr, "hi! um what do you do exactly"), "command help");
+  EXPECT_EQ(shop.read(Asked::kTask, nullptr, "what does this thing do?"), "command help");
+}
+
+// Found by a fresh user: "crayons go in the left bin no wait, the right
+// one" took "the right one" as a remark and the left bin; a strong marker
+// said last in a piece corrects it with the next. And "right" after a
+// marker, before a word of the answer, is a side, not a filler.
+TEST(ReplyActsSelfCorrection, AMarkerSaidLastInAPieceCorrectsItWithTheNext) {
+  FreshRoom shed("set1", "garden-shed.yaml");
+  ASSERT_TRUE(shed.loaded());
+  const ObjectId bin2 = *shed.world().universe->find("bin2");
+  ASSERT_EQ(shed.world().universe->info(bin2).properties, std::vector<std::string>{"right"});
+  const std::string right = "goal (in trowel1 " + shed.world().universe->name(bin2) + ")";
+  for (const char* said : {"trowels go in the left bin no wait, the right one", "left bin oops, right bin",
+                           "no wait, right bin", "the left bin, sorry, the right bin"})
+    EXPECT_EQ(shed.read(Asked::kGoal, "trowel1", said), right) << said;
+}
+
+// Found by a fresh user: "forget it. floor next" was the command to forget
+// a kind "it floor next". "forget it" before more is never mind.
+TEST_F(ReplyActsTest, ForgetItBeforeMoreIsNeverMind) {
+  ReplyContext step;
+  step.asked = Asked::kTaskStep;
+  EXPECT_EQ(acts(step, "forget it. clear the counter"), acts(step, "clear the counter"));
+  EXPECT_TRUE(noted(notes(step, "never mind, clear the counter"), "as never mind"));
+  EXPECT_EQ(acts(goal_question("razor1"), "forget the razor").rfind("command forget", 0), 0u);
 }
 
 // Before any part is taught, "the counter, clear it and then we're done":

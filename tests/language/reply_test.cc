@@ -425,6 +425,40 @@ TEST(ReplyTask, TheVerbThatNamesATaskWinsOverOneThatNamesNone) {
   EXPECT_EQ(read(kitchen, task, "tidy the fridge"), "task tidy fridge");
 }
 
+// Set 8's task names (found on its first run): what happened before
+// ("the kids just finished their experiment") or when ("end of the day")
+// is not the task; putting everything in the room away is tidying it,
+// while putting the groceries away stays a task of its own.
+TEST(ReplyTask, WhatHappenedOrWhenIsNotTheTaskAndEverythingPutAwayIsTidying) {
+  const World& kitchen = kitchen30().world;
+  ReplyContext task = asking(Asked::kTask);
+  EXPECT_EQ(read(kitchen, task, "ok so the kids just finished their experiment and i need everything put away in here"),
+            "task tidy kitchen");
+  EXPECT_EQ(read(kitchen, task, "end of the day, can you put everything away in here?"), "task tidy kitchen");
+  EXPECT_EQ(read(kitchen, task, "put everything away"), "task tidy kitchen");
+  EXPECT_EQ(read(kitchen, task, "can you put it all away please"), "task tidy kitchen");
+  EXPECT_EQ(read(kitchen, task, "Can you put the groceries away"), "task put away groceries");
+  EXPECT_EQ(read(kitchen, task, "the dishes need washing"), "task wash dishes");
+}
+
+// Found by two fresh users: where a kind goes, said at the question about
+// the task's steps, is that kind's goal (a correction, for the agent),
+// not a part over its place; it takes a verb of placing, so that a part
+// said with a place stays a part.
+TEST(ReplyStructure, WhereAKindGoesSaidAtAStepIsItsGoal) {
+  const World& kitchen = kitchen30().world;
+  ReplyContext step = asking(Asked::kTaskStep);
+  // Before the ketchup was dealt with, it is no part over the fridge.
+  EXPECT_EQ(read(kitchen, step, "the ketchup goes in the fridge").rfind("unusable", 0), 0u);
+  EXPECT_EQ(read(kitchen, step, "put the mugs in the dish rack").rfind("unusable", 0), 0u);
+  step.dealt_with = {in(kitchen, "ketchup1"), in(kitchen, "milk1")};
+  EXPECT_EQ(read(kitchen, step, "the ketchup goes in the fridge"), "goal (in ketchup1 fridge1)");
+  EXPECT_EQ(read(kitchen, step, "put the ketchup in the fridge"), "goal (in ketchup1 fridge1)");
+  EXPECT_EQ(read(kitchen, step, "actually the milk goes in the fridge, not the pantry"), "goal (in milk1 fridge1)");
+  EXPECT_EQ(read(kitchen, step, "clear the table"), "subtask clear on table1");
+  EXPECT_EQ(read(kitchen, step, "now the counter"), "subtask clear on counter1");
+}
+
 // A part of the task said with a verb that names no step ("covered") gives
 // way to a later clause's step verb, whose "it" is the place named before.
 TEST(ReplyStructure, AStepVerbWinsOverADescriptionsVerb) {
@@ -542,6 +576,40 @@ TEST(ReplyYesNo, TheRestOfAYesSaysMoreOfThePlaceProposed) {
   auto instead = rest_of("no, it goes in the pantry");
   ASSERT_TRUE(instead);
   EXPECT_EQ(instead->goal.literals.front().fact.args[1], in(kitchen, "pantry1"));
+}
+
+// Found by two fresh users: things said too after a yes or a no at a
+// proposed goal ("yeah, and the milk as well", "no, pantry. crackers and
+// cereal too") were dropped; they get the same goal as the thing asked
+// about.
+TEST(ReplyYesNo, ThingsSaidTooAfterTheAnswerGetTheSameGoal) {
+  const World& kitchen = kitchen30().world;
+  const ObjectId ketchup = in(kitchen, "ketchup1");
+  const ObjectId fridge = in(kitchen, "fridge1");
+  ReplyContext proposed = asking(Asked::kYesNo, ketchup);
+  proposed.proposal = Goal{{Literal{Fact{kitchen.vocabulary.in, {ketchup, fridge}}, true}}};
+  proposed.still_to_come = {in(kitchen, "milk1"), in(kitchen, "cereal-box1")};
+  auto rest_of = [&](std::string_view text) -> std::optional<GoalGiven> {
+    Reply r = read_reply(grounder(), kitchen, proposed, text);
+    const auto* y = std::get_if<YesNo>(&r);
+    if (y == nullptr) return std::nullopt;
+    return goal_in_rest(grounder(), kitchen, proposed, *y);
+  };
+  auto places_of = [&](const GoalGiven& given) {
+    std::vector<std::string> out;
+    for (const Goal& g : given.others) out.push_back(format_goal(*kitchen.domain, *kitchen.universe, g));
+    return out;
+  };
+  auto yes = rest_of("yeah, and the milk as well");
+  ASSERT_TRUE(yes);
+  EXPECT_EQ(yes->goal, *proposed.proposal) << "the yes stands";
+  EXPECT_EQ(places_of(*yes), std::vector<std::string>{"(in milk1 fridge1)"});
+  auto no = rest_of("no, pantry. milk and cereal too");
+  ASSERT_TRUE(no);
+  EXPECT_EQ(no->goal.literals.front().fact.args[1], in(kitchen, "pantry1"));
+  EXPECT_EQ(places_of(*no), (std::vector<std::string>{"(in milk1 pantry1)", "(in cereal-box1 pantry1)"}));
+  // A yes with nothing said too adds nothing.
+  EXPECT_FALSE(rest_of("yes please"));
 }
 
 // --- References and reasons (issue 9) --------------------------------------------------
