@@ -7,6 +7,7 @@
 #include <algorithm>
 
 #include "agent/class_rule_knowledge.h"
+#include "agent/explanation.h"
 #include "agent/goal_proposals.h"
 #include "agent/session.h"
 #include "knowledge/goal_memory.h"
@@ -334,6 +335,20 @@ void TaskLearningAgent::Session::answer_where(const language::Command& command) 
 }
 
 void TaskLearningAgent::Session::answer_why() {
+  // The last goal learned came from the agent's own decision (a rule said,
+  // things alike), not from the teacher's last reply: say so, and from what.
+  if (progress_.last_goal && !progress_.evaluated_order.empty())
+    if (const GoalKnowledge* last = agent_.knowledge_.goals.find(*progress_.last_goal)) {
+      const std::string& source = last->provenance.source;
+      const bool decided = (source.starts_with("decision: ") || source.starts_with("analogy: ") ||
+                            source.starts_with("fleet: ")) &&
+                           !source.ends_with("(confirmed)");
+      const ObjectId placed = progress_.evaluated_order.back();
+      if (decided && world().universe->info(placed).category == last->key.category) {
+        say(language::because_i_decided(world(), placed, explain_source(source)), Voice::kResponse);
+        return;
+      }
+    }
   const std::string* last = lessons_.last_reply();
   say(last == nullptr ? language::why_without_a_reply() : language::because_of_last_reply(*last), Voice::kResponse);
 }

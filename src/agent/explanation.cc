@@ -233,6 +233,8 @@ std::string explain_rule(const Domain& domain, const Rule& rule) {
   return language::capitalize(out);
 }
 
+std::string explain_source(const std::string& source) { return spoken_source(source); }
+
 std::string explain_provenance(const Provenance& provenance) {
   return "learned on " + spoken_learned_on(provenance.object) + " from " + spoken_source(provenance.source);
 }

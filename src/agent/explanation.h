@@ -29,4 +29,8 @@ std::string explain_rule(const Domain& domain, const Rule& rule);
 // "learned on ceramic-plate1 from the instructor: "If the object ..."".
 std::string explain_provenance(const Provenance& provenance);
 
+// Where a goal or rule came from, in words: "the instructor, who said
+// "..."", "weighing what I knew: clothes go in the hamper, as said: "..."".
+std::string explain_source(const std::string& source);
+
 }  // namespace apprentice

@@ -148,13 +148,18 @@ std::size_t place_count(const World& world, std::span<const ObjectId> away_from)
 }
 
 std::string evidence_phrase(const World& world, std::span<const DestinationProposal> support) {
-  (void)world;
   std::vector<std::string> said, like;
   bool llm = false;
   const DestinationProposal* fleet = nullptr;
   for (const DestinationProposal& p : support) {
     if (p.source == ProposalSource::kPersonRule && p.rule && !p.rule->said.empty()) {
-      const std::string subject = rule_subject(*p.rule);
+      std::string subject = rule_subject(*p.rule);
+      // A kind here said in the singular ("sticky note goes in the
+      // wastebasket"): "with the sticky note".
+      std::string as_kind = subject;
+      std::replace(as_kind.begin(), as_kind.end(), ' ', '-');
+      if (!language::is_plural_category(as_kind) && !world.universe->with_category(as_kind).empty())
+        subject = "the " + subject;
       if (std::find(said.begin(), said.end(), subject) == said.end()) said.push_back(subject);
     }
     else if (p.source == ProposalSource::kFleet) fleet = fleet != nullptr ? fleet : &p;

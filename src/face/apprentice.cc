@@ -321,6 +321,9 @@ Result<SessionReport> AgentSession::perform(const std::string& task, const Scena
   end.renamed = out.agent.renamed;
   end.analogies = out.agent.analogies;
   end.help_needed = out.agent.help_needed;
+  World now = scenario.world;
+  now.state = simulator.state();
+  end.unmet = language::unmet_assertions(scenario, now);
   out.summary = language::performance_summary(end);
   return out;
 }

@@ -157,6 +157,11 @@ std::string why_without_a_reply() {
   return "I have only done what I already knew; you have not told me anything yet this session.";
 }
 
+std::string because_i_decided(const World& world, ObjectId object, std::string_view from) {
+  return with_period("Because I decided where " + spoken_name(world, object) + " goes from " + std::string(from)) +
+         " If that was wrong, tell me where it goes.";
+}
+
 std::string because_of_last_reply(std::string_view reply) {
   return with_period("Because of what you told me last: \"" + std::string(reply) + "\"") +
          " If that was wrong, say undo, or tell me what you meant.";

@@ -86,6 +86,10 @@ std::string why_without_a_reply();
 // "Because of what you told me last: "..." If that was wrong, say undo, or
 // tell me what you meant."
 std::string because_of_last_reply(std::string_view reply);
+// "why did you do that?" after the agent placed a thing by its own
+// decision: "Because I decided where the sticky note goes from weighing
+// what I knew: ... If that was wrong, tell me where it goes."
+std::string because_i_decided(const World& world, ObjectId object, std::string_view from);
 
 // --- Doing what the teacher says now ------------------------------------------
 

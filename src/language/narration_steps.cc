@@ -90,9 +90,12 @@ std::string ask_other_name(std::string_view word, const World& world, ObjectId o
 
 std::string ask_goal_proposed(const World& world, ObjectId object, const Goal& goal, std::string_view evidence,
                               const std::vector<std::string>& others) {
-  return "Does " + spoken_name_and_location(world, object) + " go " +
+  // "Do the headphones on the chair go ...: they go in ...?"
+  const bool plural = is_plural_category(world.universe->info(object).category);
+  return (plural ? "Do " : "Does ") + spoken_name_and_location(world, object) + " go " +
          (evidence.empty() ? std::string("here") : std::string(evidence)) + ": " +
-         goal_outcome(world, object, goal, "it") + (others.empty() ? "?" : ", and " + list_phrase(others) + " too?");
+         goal_outcome(world, object, goal, plural ? "they" : "it") +
+         (others.empty() ? "?" : ", and " + list_phrase(others) + " too?");
 }
 
 namespace {

@@ -69,8 +69,12 @@ std::string performance_summary(const PerformanceEnd& how) {
          count_phrase(static_cast<long long>(how.search_nodes), "search node") + ", 0 LLM calls.\n";
   for (const std::string& note : how.renamed) out += "From another world: I " + note + ".\n";
   for (const std::string& note : how.analogies) out += "By analogy: I " + note + ".\n";
-  if (how.help_needed.empty()) out += "No help was needed.\n";
   for (const std::string& help : how.help_needed) out += "Would need help: " + help + "\n";
+  for (const auto& [sentence, times] : how.unmet)
+    out += "Not done: " + sentence + (times > 1 ? " (" + std::to_string(times) + " of them)" : std::string()) + ".\n";
+  if (how.help_needed.empty())
+    out += how.unmet.empty() ? "No help was needed.\n"
+                             : "I asked for no help: what I learned says to do otherwise. Teach it again to change it.\n";
   return out;
 }
 

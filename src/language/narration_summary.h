@@ -51,12 +51,16 @@ struct PerformanceEnd {
   std::vector<std::string> renamed;     // "took 'beaker' for 'mug'" (transfer)
   std::vector<std::string> analogies;
   std::vector<std::string> help_needed;
+  // The parts of the world's intent not met, as unmet_assertions says them.
+  std::vector<std::pair<std::string, int>> unmet;
 };
 
 // "Performed with learned knowledge alone: 30 of 30 parts of the goal are
 // met (100.0%), 44 actions, 0 instructions, 0 search nodes, 0 LLM calls.", what
-// was carried over from other worlds, and where help would have been
-// needed ("No help was needed."). One line each.
+// was carried over from other worlds, where help would have been needed
+// ("No help was needed."), and a "Not done: ..." line per part of the
+// intent not met (with no help asked for, that what was learned says
+// otherwise). One line each.
 std::string performance_summary(const PerformanceEnd& how);
 
 }  // namespace apprentice::language

@@ -81,6 +81,22 @@ TEST_F(GoalSourcesTest, APersonsRuleFromAnEarlierSessionIsProposedForWhatItCover
   EXPECT_TRUE(by_rule(fresh, "sweater1").empty());
 }
 
+// Found by a fresh user: "Does the soda can go with sticky note, as you
+// said". A rule said of one kind here in the singular is named with "the";
+// a class in the plural as said.
+TEST_F(GoalSourcesTest, TheEvidenceNamesAKindSaidInTheSingularWithItsArticle) {
+  Knowledge knowledge = said_before("novel goes on the left bookcase, clothes go in the hamper.");
+  GoalSources sources(knowledge, world(), lexicon_, nullptr);
+  auto person_rule_only = [&](const char* id) {
+    std::vector<DestinationProposal> out;
+    for (DestinationProposal& p : sources.proposals_for(world(), key(id), thing(id), {}))
+      if (p.source == ProposalSource::kPersonRule) out.push_back(std::move(p));
+    return out;
+  };
+  EXPECT_EQ(evidence_phrase(world(), person_rule_only("novel1")), "with the novel, as you said");
+  EXPECT_EQ(evidence_phrase(world(), person_rule_only("jeans1")), "with clothes, as you said");
+}
+
 TEST_F(GoalSourcesTest, ADestinationRefusedForAKindIsNotProposedForItAgain) {
   Knowledge knowledge = said_before("Put clothes in the hamper.");
   GoalSources sources(knowledge, world(), lexicon_, nullptr);

@@ -33,6 +33,15 @@ objects:
   - {category: notebook, at: desk1}
   - {category: pen, at: desk1}
   - {category: magazine, at: floor1}
+task:
+  name: tidy study
+  subtasks:
+    - {verb: clear, place: desk1}
+    - {verb: clear, place: floor1}
+intent:
+  - {subtask: clear, from: desk1, category: notebook, place: bookshelf1}
+  - {subtask: clear, from: desk1, category: pen, place: wastebasket1}
+  - {subtask: clear, from: floor1, category: magazine, place: bookshelf1}
 )";
 
 class TeachCorrections : public testing::ScratchTest {};
@@ -70,6 +79,53 @@ TEST_F(TeachCorrections, AThingPutAwayIsMovedWhereTheTeacherNowSays) {
                                          "notebook on the bookshelf\" (a correction))"))
       << knowledge.out();
   EXPECT_THAT(knowledge.out(), Not(HasSubstr("the notebook goes in the filing cabinet"))) << knowledge.out();
+}
+
+// Found by a fresh user: `run` said "No help was needed." and exited 1,
+// without saying which parts of the goal were not met. It says each, and
+// that what it learned says otherwise.
+TEST_F(TeachCorrections, RunSaysWhatIsNotDoneWhenWhatItLearnedDiffers) {
+  const std::string store = (dir_ / "study.sqlite").string();
+  Process teach({APPRENTICE_BINARY, "teach", "--scenario", write("study.yaml", kStudy).string(), "--knowledge", store});
+  ASSERT_TRUE(teach.write(testing::typed_lines(
+      {"tidy the study", "clear the desk", "filing cabinet", "wastebasket", "then the floor", "bookshelf", "done"})));
+  // Taught otherwise than the world's intent: teaching ends with exit 1 too.
+  EXPECT_EQ(teach.wait(), 1) << teach.out() << teach.err();
+  Process run({APPRENTICE_BINARY, "run", "--scenario", (dir_ / "study.yaml").string(), "--knowledge", store});
+  EXPECT_EQ(run.wait(), 1) << run.out() << run.err();
+  EXPECT_THAT(run.out(), HasSubstr("Not done: the notebook should be on the bookshelf.\n")) << run.out();
+  EXPECT_THAT(run.out(), HasSubstr("I asked for no help: what I learned says to do otherwise.")) << run.out();
+  EXPECT_THAT(run.out(), Not(HasSubstr("No help was needed."))) << run.out();
+}
+
+// Found by a fresh user: "why did you do that?", after the agent placed a
+// thing by a rule said earlier, got "Because of what you told me last:
+// "yep"". It names the thing and the rule.
+TEST_F(TeachCorrections, WhyAfterAThingPlacedByARuleNamesTheRule) {
+  constexpr const char* kDesk = R"(name: letters
+domain: kitchen
+location: study
+places:
+  - {category: desk, kind: surface}
+  - {category: filing-cabinet, kind: receptacle, door: closed}
+  - {category: drawer, kind: receptacle, door: closed}
+  - {category: shelf, kind: surface}
+objects:
+  - {category: letter, at: desk1}
+  - {category: stapler, at: desk1}
+)";
+  Process teach({APPRENTICE_BINARY, "teach", "--scenario", write("letters.yaml", kDesk).string()});
+  ASSERT_TRUE(teach.write(testing::typed_lines({"tidy the study", "letters go in the filing cabinet, books on the shelf",
+                                                "clear the desk", "why did you do that?", "drawer", "why?", "quit"})));
+  teach.wait();
+  const std::string& out = teach.out();
+  EXPECT_THAT(out, HasSubstr("Instructor: why did you do that?\n"
+                             "Agent: Because I decided where the letter goes from weighing what I knew: letters go in "
+                             "the filing cabinet, as said: \"letters go in the filing cabinet, books on the shelf\". If "
+                             "that was wrong, tell me where it goes.\n"))
+      << out;
+  // After the teacher's own answer, the answer is that reply.
+  EXPECT_THAT(out, HasSubstr("Instructor: why?\nAgent: Because of what you told me last: \"drawer\".")) << out;
 }
 
 }  // namespace

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "language/narration_steps.h"
+
 #include "language_fixtures.h"
 
 namespace apprentice::language {
@@ -33,6 +35,18 @@ TEST(NarrationConversation, StatusSaysTheTaskThePartAndWhatIsKnown) {
             "know 3 goals and 1 rule, after 1 instruction this session.");
   doing.working_on.reset();
   EXPECT_NE(what_i_am_doing(w, doing).find(", asking about the milk."), std::string::npos);
+}
+
+// Found by a fresh user: "Does the headphones on the chair go ...: it goes
+// ...?". A thing named in the plural takes "do" and "they".
+TEST(NarrationConversation, AProposalAgreesWithAThingNamedInThePlural) {
+  const World& w = kitchen30().world;
+  const Goal in_pantry({Literal{Fact(w.vocabulary.in, {thing("crackers1"), thing("pantry1")}), true}});
+  EXPECT_EQ(ask_goal_proposed(w, thing("crackers1"), in_pantry, "like the cereal", {}),
+            "Do the crackers on the counter go like the cereal: they go in the pantry?");
+  const Goal in_fridge({Literal{Fact(w.vocabulary.in, {thing("ketchup1"), thing("fridge1")}), true}});
+  EXPECT_EQ(ask_goal_proposed(w, thing("ketchup1"), in_fridge, "", {}),
+            "Does the ketchup on the table go here: it goes in the fridge?");
 }
 
 TEST(NarrationConversation, WhatIsLeftOfAPartCountsTheThingsThere) {
