@@ -91,6 +91,13 @@ void expand(const std::string& word, const std::string& next, std::vector<std::s
       {"whats", "what is"},     {"lets", "let us"},      {"w", "with"},           {"w/", "with"},
       {"rn", "right now"},      {"cuz", "because"},      {"bc", "because"},       {"tmrw", "tomorrow"},
   }};
+  // "ill take it down later", "ill do it": I'll, before a verb of doing.
+  if (word == "ill" && is_one_of(next, {"take", "do", "put", "get", "deal", "sort", "move", "handle", "grab", "bring",
+                                        "be", "finish", "clean", "wash", "use", "wear", "leave", "need", "keep", "fix"})) {
+    out.emplace_back("i");
+    out.emplace_back("will");
+    return;
+  }
   // "ya", first in a reply, is a yes ("ya", "ya sure"); "see ya", "ya
   // know" are you.
   if (word == "ya" && out.empty() && next != "know") {

@@ -61,6 +61,9 @@ TEST_F(ReplyActsTest, AReasonToldAfterTheAnswerIsNoInstruction) {
   EXPECT_EQ(acts(c, "hamper. leave it open, I still need to put stuff in there"), open_hamper);
   EXPECT_EQ(acts(c, "hamper and leave it open so I can add the rest later"), open_hamper);
   EXPECT_TRUE(noted(notes(c, "hamper, and leave the lid open, more stuff is going in"), "as a reason"));
+  // Found by a fresh user: "ill" without its apostrophe, before a verb,
+  // is "I'll" ("I don't see a kitchen here" was the reply).
+  EXPECT_EQ(acts(c, "hamper, ill take it down to the kitchen later"), acts(c, "hamper"));
   // A clause that says where a thing goes is no reason.
   EXPECT_EQ(acts(c, "hamper, it goes in the hamper"), "goal (in towel1 hamper1)");
   // "ok so I want you to ...": "so" after fillers begins the reply.
