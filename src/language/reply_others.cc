@@ -161,14 +161,16 @@ std::optional<Reply> goal_like_another(const Grounder& grounder, const World& wo
   if (kinds.size() > 1 && c.last_goal)  // "the other mug": the one given last
     if (std::find(kinds.begin(), kinds.end(), kind_of(world, c.last_goal->object)) != kinds.end())
       kinds = {kind_of(world, c.last_goal->object)};
-  if (kinds.empty()) {
-    // A kind that is not here may have been taught before.
-    Words words = split_words(to_lower(same.other));
-    std::erase_if(words, [](const std::string& w) { return is_determiner(w); });
-    std::string key = join(words, "-");
-    for (std::string form : singular_forms(key))
-      if (c.goal_of_kind && c.goal_of_kind(form, *c.object)) kinds = {form};
-  }
+  // A kind not here, taught before and named whole ("like the coloring
+  // book", where only a picture book is here): that kind, not a thing here
+  // named by part of it.
+  Words words = split_words(to_lower(same.other));
+  std::erase_if(words, [](const std::string& w) { return is_determiner(w); });
+  const std::string key = join(words, "-");
+  for (std::string form : singular_forms(key))
+    if (std::find(kinds.begin(), kinds.end(), form) == kinds.end() && world.universe->with_category(form).empty() &&
+        c.goal_of_kind && c.goal_of_kind(form, *c.object))
+      kinds = {form};
   if (kinds.size() != 1) return std::nullopt;
   std::optional<Goal> goal;
   if (c.goal_of_kind) goal = c.goal_of_kind(kinds.front(), *c.object);

@@ -612,6 +612,26 @@ TEST(ReplyYesNo, ThingsSaidTooAfterTheAnswerGetTheSameGoal) {
   EXPECT_FALSE(rest_of("yes please"));
 }
 
+// Found by a fresh user: "no its like the coloring book", where only a
+// picture book was here, took the picture book's goal. A kind taught
+// before and named whole is that kind, not a thing here named by part of
+// its name.
+TEST(ReplyOthers, AKindTaughtBeforeNamedWholeIsThatKind) {
+  const World& kitchen = kitchen30().world;
+  ASSERT_TRUE(kitchen.universe->with_category("wooden-bowl").empty());
+  ReplyContext c = asking(Asked::kGoal, in(kitchen, "ketchup1"));
+  auto in_place = [&](ObjectId thing, const char* place) {
+    return Goal({Literal{Fact(kitchen.vocabulary.in, {thing, in(kitchen, place)}), true}});
+  };
+  c.goal_of_kind = [&](const std::string& kind, ObjectId thing) -> std::optional<Goal> {
+    if (kind == "wooden-bowl") return in_place(thing, "pantry1");
+    if (kind == "ceramic-bowl") return in_place(thing, "garbage1");
+    return std::nullopt;
+  };
+  EXPECT_EQ(read(kitchen, c, "same as the wooden bowl"), "goal (in ketchup1 pantry1)");
+  EXPECT_EQ(read(kitchen, c, "same as the ceramic bowl"), "goal (in ketchup1 garbage1)");
+}
+
 // --- References and reasons (issue 9) --------------------------------------------------
 
 TEST(ReplyReferences, PronounsPartialNamesAndDoors) {
