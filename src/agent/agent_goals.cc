@@ -389,10 +389,6 @@ Status TaskLearningAgent::Session::learn_goal(ObjectId object, const Goal& goal,
   return lessons_.learn_goal(agent_.knowledge_, *knowledge);
 }
 
-}  // namespace apprentice
-
-namespace apprentice {
-
 std::vector<GoalKey> TaskLearningAgent::Session::goals_corrected_by(ObjectId object) const {
   const std::string& kind = world().universe->info(object).category;
   std::vector<GoalKey> keys;
@@ -417,25 +413,26 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::correct_goal(Object
   // The things of its kind already put away go where it now says, by the
   // agent's own search; what was closed is closed again after.
   const std::string& kind = w.universe->info(object).category;
+  const GoalKnowledge* learned = nullptr;
+  for (const GoalKnowledge& g : agent_.knowledge_.goals.all())
+    if (g.key.task == progress_.task.name && g.key.category == kind) learned = &g;
+  if (learned == nullptr) return {};
   std::vector<Literal> closed_before;
   for (ObjectId place : w.universe->of_kind(ObjectKind::kReceptacle))
     if (const Fact closed(w.vocabulary.closed, {place}); w.state.holds(closed)) closed_before.push_back(Literal{closed, true});
   std::vector<Action> done;
   for (ObjectId thing : w.universe->of_kind(ObjectKind::kItem)) {
     if (w.universe->info(thing).category != kind || !progress_.evaluated.count(thing)) continue;
-    const GoalKnowledge* learned = nullptr;
-    for (const GoalKnowledge& g : agent_.knowledge_.goals.all())
-      if (g.key.task == progress_.task.name && g.key.category == kind) learned = &g;
-    std::optional<Goal> placed = learned ? instantiate_goal(w, *learned, thing) : std::nullopt;
+    std::optional<Goal> placed = instantiate_goal(w, *learned, thing);
     if (!placed) continue;
     std::vector<Literal> literals = placed->literals;
     literals.insert(literals.end(), closed_before.begin(), closed_before.end());
-    const std::optional<Goal> goal = Goal(std::move(literals));
+    const Goal goal(std::move(literals));
     OwnActions own;
     OwnActions::Ways ways;
     ways.unbounded_search = true;
-    for (int steps = 0; !goal->satisfied_by(world().state) && steps < agent_.options_.max_actions_per_object; ++steps) {
-      OwnActions::Next next = own.next(world(), *goal, thing, "", ways);
+    for (int steps = 0; !goal.satisfied_by(world().state) && steps < agent_.options_.max_actions_per_object; ++steps) {
+      OwnActions::Next next = own.next(world(), goal, thing, "", ways);
       if (!next.action || !execute(*next.action)) break;
       done.push_back(*next.action);
     }

@@ -375,10 +375,10 @@ Reply read_reply(const Grounder& grounder, const World& world, const ReplyContex
   // magazine goes on the bookshelf" is not clearing the bookshelf): the
   // parts come first (a rule said so is kept by the agent).
   if (step && (std::holds_alternative<SubtaskNamed>(reply) || std::holds_alternative<LoopNamed>(reply)) &&
-      goal_said_at_a_step(grounder, world, context, text, false))
-    return Unusable{"First tell me the parts of the task, such as \"" + example_replies(world, context).front() +
-                        "\"; I will ask where each thing goes when I come to it.",
-                    example_replies(world, context), std::nullopt};
+      goal_said_at_a_step(grounder, world, context, text, false)) {
+    std::vector<std::string> examples = example_replies(world, context);
+    return Unusable{parts_come_first(examples.front()), std::move(examples), std::nullopt};
+  }
   if (context.asked != Asked::kGoal) return reply;
   reply = read_goal_reply(grounder, world, context, text, std::move(reply));
   like_the_goal_referred_to(grounder, world, context, text, reply);

@@ -91,6 +91,12 @@ std::vector<std::vector<std::string>> comma_pieces(const std::vector<std::string
 // task's verb.
 bool names_location(const std::string& word, const ReplyInput& in);
 
+// Why a reply at a question about the task's steps names no part:
+// "First tell me the parts of the task, such as "clear the table"; I will
+// ask where each thing goes when I come to it." (`example`: the first
+// reply that would work there).
+std::string parts_come_first(std::string_view example);
+
 // The finished expressions of task-structure questions.
 bool says_finished(const std::vector<std::string>& words, const ReplyInput& in);
 // Whether the reply says only that something ends ("I'm done", "that's it

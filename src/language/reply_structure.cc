@@ -14,6 +14,11 @@
 namespace apprentice::language {
 
 // Splits at "," only.
+std::string parts_come_first(std::string_view example) {
+  return "First tell me the parts of the task, such as \"" + std::string(example) +
+         "\"; I will ask where each thing goes when I come to it.";
+}
+
 std::vector<std::vector<std::string>> comma_pieces(const std::vector<std::string>& words) {
   std::vector<std::vector<std::string>> out(1);
   for (const std::string& w : words) {
@@ -222,9 +227,7 @@ class StructureReader {
                                    "if there is more to it.",
                                    std::nullopt});
     if (item_named_)
-      return unusable(in_, Problem{"First tell me the parts of the task, such as \"" + first_example() +
-                                       "\"; I will ask where each thing goes when I come to it.",
-                                   std::nullopt});
+      return unusable(in_, Problem{parts_come_first(first_example()), std::nullopt});
     // A place and no verb: "the table first".
     if (named) {
       // Its own example first: the generic ones may name other places. Of
@@ -234,8 +237,7 @@ class StructureReader {
         return unusable(in_, Problem{"There is nothing " +
                                          std::string(relation(named->objects.front()) == Relation::kOn ? "on " : "in ") +
                                          spoken_places(in_.world, named->objects) +
-                                         " now. First tell me the parts of the task, such as \"" + first_example() +
-                                         "\"; I will ask where each thing goes when I come to it.",
+                                         " now. " + parts_come_first(first_example()),
                                      std::nullopt});
       std::string place = topic.size() == 1 ? distinct_noun_for(in_.world, topic.front())
                                             : spoken_places(in_.world, topic);
