@@ -132,15 +132,39 @@ GoalScope TaskLearningAgent::Session::said_scope() const {
   return scope;
 }
 
-void TaskLearningAgent::Session::hear_rule(const language::RuleReading& rule, const std::string& text) {
+TaskLearningAgent::Session::Step TaskLearningAgent::Session::hear_rule(language::RuleReading rule,
+                                                                      const std::string& text) {
   sources_.hear(text);
   // A lesson of its own: "undo" takes the rule back.
   begin_lesson(text);
+  for (language::RuleClause& clause : rule.clauses)
+    if (auto chosen = which_place_of(clause); !chosen) return tl::unexpected(chosen.error());
+    else if (*chosen) clause.places = {**chosen};
   for (ClassRule& said : class_rules_of(world(), rule, RuleSource::kPerson, text, said_scope(), kPersonRuleConfidence))
     if (auto kept = store_class_rule(said); !kept) spdlog::warn("{}", kept.error().message);
   say(language::read_back_rule(world(), rule));
   if (!rule.not_understood.empty()) say(language::rule_parts_not_followed(rule.not_understood));
   spdlog::info("a person's rule: {}", language::read_back_rule(world(), rule));
+  return {};
+}
+
+TaskLearningAgent::Session::Flow<std::optional<ObjectId>> TaskLearningAgent::Session::which_place_of(
+    const language::RuleClause& clause) {
+  const std::optional<std::string> which = language::ask_which_place_of(world(), clause);
+  if (!which || !person()) return std::optional<ObjectId>();
+  Question q = question(QuestionKind::kWhich, *which);
+  q.choices = clause.places;
+  language::ReplyContext context = this->context(language::Asked::kWhich);
+  context.choices = clause.places;
+  auto heard = converse(q, context, [&](const language::Reply& r) -> std::optional<std::string> {
+    if (const auto* chosen = std::get_if<language::Chosen>(&r))
+      if (std::find(clause.places.begin(), clause.places.end(), chosen->object) != clause.places.end())
+        return std::nullopt;
+    return language::asked_which_one();
+  });
+  if (!heard) return tl::unexpected(heard.error());
+  if (!heard->reply) return std::optional<ObjectId>();
+  return std::optional<ObjectId>(std::get<language::Chosen>(*heard->reply).object);
 }
 
 Status TaskLearningAgent::Session::store_class_rule(const ClassRule& rule) {

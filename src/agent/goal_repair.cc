@@ -126,23 +126,28 @@ std::vector<ObjectId> destinations(const World& world, const Goal& goal, ObjectI
 
 // Whether goals learned so far for receptacles of `category` end closed:
 // true if one does, false if some put things into it and none closes it,
-// nothing if none is about it.
+// nothing if none is about it. A goal that says to leave it open ("the
+// umbrella goes in the closet, leave it open so it can dry") is that
+// kind's own exception, and says nothing of other kinds.
 std::optional<bool> learned_closing(const World& world, const GoalMemory& learned, std::string_view category) {
   const std::string& in = world.domain->predicates[world.vocabulary.in].name;
   const std::string& closed = world.domain->predicates[world.vocabulary.closed].name;
   std::optional<bool> verdict;
   for (const GoalKnowledge& knowledge : learned.all()) {
-    bool into = false, closes = false;
+    bool into = false, closes = false, left_open = false;
     for (const GoalTemplateLiteral& literal : knowledge.literals) {
-      if (!literal.positive) continue;
+      const bool its_door = literal.predicate == closed && literal.arguments.size() == 1 &&
+                            literal.arguments[0].category == category;
+      if (!literal.positive) {
+        left_open = left_open || its_door;
+        continue;
+      }
       if (literal.predicate == in && literal.arguments.size() == 2 && literal.arguments[1].category == category)
         into = true;
-      if (literal.predicate == closed && literal.arguments.size() == 1 &&
-          literal.arguments[0].category == category)
-        closes = true;
+      closes = closes || its_door;
     }
     if (closes) return true;
-    if (into) verdict = false;
+    if (into && !left_open) verdict = false;
   }
   return verdict;
 }

@@ -191,8 +191,13 @@ class TaskLearningAgent::Session {
   Flow<std::optional<language::Reply>> ask_other_name(const std::string& word, const std::string& text,
                                                       const Question& asked, const language::ReplyContext& context);
   // Keeps a rule the person said, and says what was understood of it and
-  // what was not.
-  void hear_rule(const language::RuleReading& rule, const std::string& text);
+  // what was not. A clause whose place fits look-alikes is asked which
+  // first.
+  Step hear_rule(language::RuleReading rule, const std::string& text);
+  // Of the look-alikes a clause's place fits ("legos in the bin", with two
+  // bins), the one a person chose when asked; nullopt with one place, or
+  // with no person to ask.
+  Flow<std::optional<ObjectId>> which_place_of(const language::RuleClause& clause);
   // Deciding where a thing goes that no goal is known for
   // (agent_decision.cc): the sources' proposals combined
   // (knowledge/decision.h); acted on alone when confident, else offered to
@@ -290,7 +295,16 @@ class TaskLearningAgent::Session {
   void answer_whats_left();
   std::string whats_left_of_task() const;
   void answer_where(const language::Command& command);
-  void answer_why();
+  // "why did you do that?": the last lesson, or the agent's own decision.
+  // With things named ("why did you put the glove in the right basket?",
+  // "why is the closet still open?"): the goal of the first that has one
+  // and where it came from, or why a door named is as it is.
+  void answer_why(const std::vector<ObjectId>& named);
+  // Says why about one thing or door; false when there is nothing to say.
+  bool answer_why_about(ObjectId named);
+  // The goal known for things of `kind` like `thing`: the current part's,
+  // else this task's, else any.
+  const GoalKnowledge* goal_known_for(const std::string& kind, ObjectId thing) const;
   void do_now(const std::vector<Action>& actions);
 };
 

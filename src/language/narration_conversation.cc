@@ -167,6 +167,27 @@ std::string because_of_last_reply(std::string_view reply) {
          " If that was wrong, say undo, or tell me what you meant.";
 }
 
+std::string because_goal_from(const World& world, ObjectId thing, const Goal& goal, std::string_view from) {
+  return capitalize(goal_outcome(world, thing, goal, spoken_name(world, thing))) + ": I learned that from " +
+         with_period(std::string(from)) + " If that was wrong, tell me where it goes.";
+}
+
+std::string left_as_told(const World& world, ObjectId thing) {
+  return "You told me to leave " + spoken_name(world, thing) + " where it is.";
+}
+
+std::string why_door_is(const World& world, ObjectId place, bool closed,
+                        const std::optional<std::pair<ObjectId, std::string>>& left_open_for) {
+  const std::string name = spoken_name(world, place);
+  if (closed) return capitalize(name) + " is closed: I close what I open.";
+  if (left_open_for)
+    return with_period(capitalize(name) + " is open because " + spoken_name(world, left_open_for->first) +
+                       " goes there with it left open; I learned that from " + left_open_for->second) +
+           " Say \"close " + name + "\" to close it now.";
+  return capitalize(name) + " is open: nothing I learned says to close it. Say \"close " + name +
+         "\" to close it now.";
+}
+
 std::string already_open_or_closed(const World& world, ObjectId thing, bool closed) {
   return capitalize(spoken_name(world, thing)) + " is already " + (closed ? "closed" : "open") + ".";
 }

@@ -86,6 +86,18 @@ std::string why_without_a_reply();
 // "Because of what you told me last: "..." If that was wrong, say undo, or
 // tell me what you meant."
 std::string because_of_last_reply(std::string_view reply);
+// "The glove goes in the right basket: I learned that from the instructor,
+// who said "gloves in the right one". If that was wrong, tell me where it
+// goes." `from` is where the goal came from, in words.
+std::string because_goal_from(const World& world, ObjectId thing, const Goal& goal, std::string_view from);
+// "You told me to leave the coffee mug where it is."
+std::string left_as_told(const World& world, ObjectId thing);
+// Why a door is open or closed: "The closet is open because the umbrella's
+// goal leaves it open, from the instructor, who said "..."", "The closet is
+// open: nothing I learned says to close it; say "close the closet" if it
+// should be.", "The closet is closed: I close what I open."
+std::string why_door_is(const World& world, ObjectId place, bool closed,
+                        const std::optional<std::pair<ObjectId, std::string>>& left_open_for);
 // "why did you do that?" after the agent placed a thing by its own
 // decision: "Because I decided where the sticky note goes from weighing
 // what I knew: ... If that was wrong, tell me where it goes."

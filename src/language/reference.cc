@@ -134,14 +134,9 @@ bool has_property(const ObjectInfo& info, const std::string& word, const Lexicon
 std::pair<std::vector<std::string>, std::string> split_properties(const std::string& phrase, const World& world,
                                                                   const Lexicon& lexicon) {
   std::vector<std::string> words = split_words(phrase);
-  auto is_property_here = [&](const std::string& word) {
-    const auto& objects = world.universe->objects();
-    return std::any_of(objects.begin(), objects.end(),
-                       [&](const ObjectInfo& info) { return has_property(info, word, lexicon); });
-  };
   std::vector<std::string> properties;
   std::size_t i = 0;
-  while (i + 1 < words.size() && is_property_here(words[i])) properties.push_back(words[i++]);
+  while (i + 1 < words.size() && names_property_here(words[i], world, lexicon)) properties.push_back(words[i++]);
   return {properties, join(std::vector<std::string>(words.begin() + static_cast<std::ptrdiff_t>(i), words.end()), " ")};
 }
 
@@ -314,6 +309,14 @@ std::variant<Candidates, GroundingFailure> candidates(const NounPhrase& np, Role
   if (np.words.size() == 1)
     if (auto id = context.world.universe->find(phrase))
       return Candidates{{*id}, ReferenceMethod::kCategory, "'" + phrase + "' is the id of " + phrase};
+  // A look-alike's property said after its name, last: "the bin on the
+  // left" is the left bin.
+  if (const auto& w = np.words; w.size() >= 4 && is_one_of(w[w.size() - 3], {"on", "at", "to"}) &&
+                                w[w.size() - 2] == "the" && names_property_here(w.back(), context.world, context.lexicon)) {
+    NounPhrase property_first{np.article, {w.back()}};
+    property_first.words.insert(property_first.words.end(), w.begin(), w.end() - 3);
+    return candidates(property_first, role, context);
+  }
   // A whole name wins, unless it names only things of the other role and
   // the phrase also reads as properties of things of this one: "the paper
   // bag" a thing is taken out of is the bag with the property paper, not
@@ -382,6 +385,13 @@ std::optional<ObjectId> only_one_at(const ReferenceContext& context, const std::
 }
 
 }  // namespace
+
+bool names_property_here(const std::string& word, const World& world, const Lexicon& lexicon) {
+  const auto& objects = world.universe->objects();
+  return std::any_of(objects.begin(), objects.end(),
+                     [&](const ObjectInfo& info) { return has_property(info, word, lexicon); });
+}
+
 
 std::variant<CandidateSet, GroundingFailure> candidates_for(const NounPhrase& phrase, Role role,
                                                             const ReferenceContext& context) {

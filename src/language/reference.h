@@ -78,6 +78,8 @@ std::string not_seen_message(std::string_view phrase, const World& world);
 // one scale of position or size ("upper" and "higher" for top, "lower"
 // for bottom, "large" for big, "little" for small).
 bool says_property(std::string_view word, std::string_view property, const Lexicon& lexicon);
+// Whether `word` says a property of some object here ("top", "lower").
+bool names_property_here(const std::string& word, const World& world, const Lexicon& lexicon);
 
 Resolution resolve(const NounPhrase& phrase, Role role, const ReferenceContext& context);
 

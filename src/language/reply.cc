@@ -305,26 +305,52 @@ namespace {
 // The one kind of thing (an item's category) that `words` name, by its
 // name's words in turn, the last one maybe plural ("sticky notes"); none
 // when they name no kind or several.
+// A name said in part counts when no kind is named whole: its last words
+// ("the leash" for the dog leash), when they fit one kind only.
 std::optional<std::string> the_kind_named(const World& world, const std::vector<std::string>& words) {
-  std::optional<std::string> named;
-  std::set<std::string> seen;
-  for (ObjectId o : world.universe->of_kind(ObjectKind::kItem)) {
-    const std::string& category = world.universe->info(o).category;
-    if (!seen.insert(category).second) continue;
-    const std::vector<std::string> parts = name_parts(category);
-    for (std::size_t i = 0; i + parts.size() <= words.size(); ++i) {
-      bool match = true;
-      for (std::size_t k = 0; k < parts.size() && match; ++k) {
-        const std::string& w = words[i + k];
-        match = w == parts[k] || (k + 1 == parts.size() && (w == parts[k] + "s" || w == parts[k] + "es"));
+  // The kinds whose names' parts from `first` on are said in a row.
+  auto named_from = [&](std::size_t first) {
+    std::set<std::string> named;
+    for (ObjectId o : world.universe->of_kind(ObjectKind::kItem)) {
+      const std::string& category = world.universe->info(o).category;
+      const std::vector<std::string> whole = name_parts(category);
+      if (first >= whole.size() || named.count(category)) continue;
+      const std::vector<std::string> parts(whole.begin() + static_cast<std::ptrdiff_t>(first), whole.end());
+      for (std::size_t i = 0; i + parts.size() <= words.size(); ++i) {
+        bool match = true;
+        for (std::size_t k = 0; k < parts.size() && match; ++k) {
+          const std::string& w = words[i + k];
+          match = w == parts[k] || (k + 1 == parts.size() && (w == parts[k] + "s" || w == parts[k] + "es"));
+        }
+        if (match) {
+          named.insert(category);
+          break;
+        }
       }
-      if (!match) continue;
-      if (named && *named != category) return std::nullopt;
-      named = category;
-      break;
     }
+    return named;
+  };
+  for (std::size_t first = 0; first < 3; ++first) {
+    const std::set<std::string> named = named_from(first);
+    if (named.size() == 1) return *named.begin();
+    if (named.size() > 1) return std::nullopt;
   }
-  return named;
+  return std::nullopt;
+}
+
+// The words without each "not in ...", "not on ..." to the end of its
+// clause: "the magazine goes on the shelf not in the recycling bin, i
+// haven't read it" -> "the magazine goes on the shelf, i haven't read it".
+std::vector<std::string> without_places_said_not(const std::vector<std::string>& words) {
+  std::vector<std::string> kept;
+  for (std::size_t i = 0; i < words.size(); ++i) {
+    if (words[i] == "not" && i + 1 < words.size() && is_one_of(words[i + 1], {"in", "on", "into", "onto", "inside"})) {
+      while (i + 1 < words.size() && words[i + 1] != ",") ++i;
+      continue;
+    }
+    kept.push_back(words[i]);
+  }
+  return kept;
 }
 
 // At a question about the task's steps, a reply that says where one kind
@@ -357,6 +383,15 @@ std::optional<GoalGiven> goal_said_at_a_step(const Grounder& grounder, const Wor
   as_goal.asked = Asked::kGoal;
   as_goal.object = thing;
   Reply read = read_reply(grounder, world, as_goal, text);
+  // "the magazine goes on the shelf not in the recycling bin": where it
+  // does not go says nothing more here.
+  if (std::holds_alternative<Unusable>(read))
+    if (auto shorter = without_places_said_not(words); shorter.size() < words.size())
+      read = read_reply(grounder, world, as_goal, quoted_words(shorter));
+  // Where the thing is already, with its door said otherwise ("the hoodie
+  // goes in the wardrobe, close it"): the goal, not "leave it there".
+  if (const auto* left = std::get_if<Finished>(&read); left && !left->ending)
+    read = read_reply_plain(grounder, world, as_goal, text);
   const auto* given = std::get_if<GoalGiven>(&read);
   if (given == nullptr) return std::nullopt;
   const std::vector<ObjectId> mentioned = given->goal.objects();
@@ -374,7 +409,9 @@ Reply read_reply(const Grounder& grounder, const World& world, const ReplyContex
   // Where a kind not dealt with yet goes is no part over its place ("the
   // magazine goes on the bookshelf" is not clearing the bookshelf): the
   // parts come first (a rule said so is kept by the agent).
-  if (step && (std::holds_alternative<SubtaskNamed>(reply) || std::holds_alternative<LoopNamed>(reply)) &&
+  if (step &&
+      (std::holds_alternative<SubtaskNamed>(reply) || std::holds_alternative<LoopNamed>(reply) ||
+       (std::holds_alternative<Unusable>(reply) && !std::get<Unusable>(reply).topic_places.empty())) &&
       goal_said_at_a_step(grounder, world, context, text, false)) {
     std::vector<std::string> examples = example_replies(world, context);
     return Unusable{parts_come_first(examples.front()), std::move(examples), std::nullopt};
@@ -477,7 +514,7 @@ std::string format_reply(const World& world, const Reply& reply) {
         case Command::Kind::kQuit: return "command quit";
         case Command::Kind::kWhatsLeft: return "command whats-left";
         case Command::Kind::kWhere: return "command where " + r.argument;
-        case Command::Kind::kWhy: return "command why";
+        case Command::Kind::kWhy: return "command why" + (r.things.empty() ? "" : " about " + list(r.things));
         case Command::Kind::kDo: {
           std::string out = "command do";
           for (const Action& a : r.actions) out += " " + format_action(*world.domain, u, a);

@@ -172,7 +172,10 @@ struct Command {
   enum class Kind { kHelp, kStatus, kUndo, kForget, kQuit, kWhatsLeft, kWhere, kWhy, kDo };
   Kind kind = Kind::kHelp;
   std::string argument;  // kForget: the kind of object ("ketchup"); kWhere: the thing as said
-  std::vector<ObjectId> things = {};  // kWhere: what the words may name
+  // kWhere: what the words may name. kWhy: the things and places the
+  // question names ("why did you put the glove in the right basket": the
+  // gloves, then the right basket), none for "why did you do that".
+  std::vector<ObjectId> things = {};
   std::vector<Action> actions = {};   // kDo: in order
 };
 

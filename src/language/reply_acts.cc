@@ -271,8 +271,9 @@ ReplyActs read(const Grounder& grounder, const World& world, const ReplyContext&
     const bool yes_or_no_said = context.asked == Asked::kYesNo && answer_prefix(s.words);
     if (without_interjections(s.words).empty() && answer.empty() && before.empty() && !yes_or_no_said) continue;
     // "forget it. floor next": never mind, before more; no "forget" command.
-    if (parts.size() > 1 && (s.words == Words{"forget", "it"} || s.words == Words{"forget", "that"} ||
-                             s.words == Words{"never", "mind"} || s.words == Words{"nevermind"})) {
+    const Words said = without_interjections(s.words);
+    if (parts.size() > 1 && (said == Words{"forget", "it"} || said == Words{"forget", "that"} ||
+                             said == Words{"never", "mind"} || said == Words{"nevermind"})) {
       out.notes.push_back("I took " + quote(s.text) + " as never mind.");
       continue;
     }
@@ -323,7 +324,7 @@ ReplyActs read(const Grounder& grounder, const World& world, const ReplyContext&
     // "leave the sweater, I'll wear it", "close the cabinet, it's been
     // open all day": why, told after an answer or an action.
     const bool about_a_thing = context.asked == Asked::kGoal || context.asked == Asked::kYesNo;
-    if (about_a_thing && (!answer.empty() || !doors.empty()) && says_why(grounder, world, s.words)) {
+    if (((about_a_thing && !answer.empty()) || !doors.empty()) && says_why(grounder, world, s.words)) {
       out.notes.push_back("I took " + quote(s.text) + " as a reason, not an instruction.");
       continue;
     }

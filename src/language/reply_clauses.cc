@@ -317,9 +317,8 @@ class ClauseReader {
     // "the shelf on the right", "the cabinet up top", "the drawer at the
     // bottom": a look-alike's property said after its name, last in the
     // phrase ("on the top shelf" names another place).
-    auto ends_phrase = [&](std::size_t k) { return at(k).empty() || is_one_of(at(k), {",", "and", "then", "please"}); };
     if (!out.words.empty()) {
-      if (is_one_of(at(0), {"on", "at", "to"}) && at(1) == "the" && v_.is_property(at(2)) && ends_phrase(3)) {
+      if (property_said_after_name(0)) {
         out.words.insert(out.words.begin(), std::string(at(2)));
         i_ += 3;
       } else if (at(0) == "up" && v_.is_property(at(1)) && ends_phrase(2)) {
@@ -330,6 +329,16 @@ class ClauseReader {
     // "this one", "that one": the thing asked about.
     if (out.words.empty() && is_one_of(out.determiner, {"this", "that", "these", "those"})) out.pronoun = true;
     return located(std::move(out));
+  }
+
+  // Whether the word at k ends a noun phrase (or there is none).
+  bool ends_phrase(std::size_t k) const { return at(k).empty() || is_one_of(at(k), {",", "and", "then", "please"}); }
+
+  // Whether the words at k say a look-alike's property after its name, last
+  // in the phrase: "on the left" in "the bin on the left" (not a place of
+  // its own).
+  bool property_said_after_name(std::size_t k) const {
+    return is_one_of(at(k), {"on", "at", "to"}) && at(k + 1) == "the" && v_.is_property(at(k + 2)) && ends_phrase(k + 3);
   }
 
   // Whether the word at k is a noun ("that one", "this mug"), not a verb
@@ -401,7 +410,8 @@ class ClauseReader {
       // place follows ("put the mug from the rack in the cupboard").
       bool another_follows = false;
       for (std::size_t k = after; k < w_.size(); ++k)
-        if (auto q = preposition_at(w_, k); q && q->second != Preposition::kFrom && q->second != Preposition::kOther)
+        if (auto q = preposition_at(w_, k); q && q->second != Preposition::kFrom && q->second != Preposition::kOther &&
+                                            !property_said_after_name(k - i_))
           another_follows = true;
       if ((before_verb && !noun.empty()) || relative || another_follows || inside_other_ ||
           p->second == Preposition::kFrom) {
@@ -485,6 +495,9 @@ bool ReplyVocabulary::compound_noun(std::string_view first, std::string_view sec
   if (first.empty() || second.empty() || first == "," || second == ",") return false;
   std::string pair = std::string(first) + " " + std::string(second);
   if (names_.count(std::string(first) + "-" + std::string(second))) return true;
+  // "goes on the shelf": WordNet's "go-on" is no noun here; a preposition
+  // after a word starts a phrase, unless a name here says otherwise.
+  if (preposition_of(second)) return false;
   return lexicon_.has_noun(pair) || !lexicon_.variants(pair).empty();
 }
 

@@ -18,7 +18,9 @@ bool is_interjection(std::string_view w) {
   return is_one_of(w, {"um", "umm", "ummm", "uh", "uhh", "er", "erm", "ugh", "hmm", "hmmm", "hm", "mm", "mmm", "ok", "so", "oh",
                        "lol", "haha", "well", "hey", "hi", "hiya", "hello", "btw", "alright", "and", "also", "plus",
                        "please", "right", "anyway", "yeah", "ah", "aha", "ooh", "argh", "gosh", "jeez", "omg", "idk",
-                       "lemme", "see", "thanks", "thank", "you", "cheers", "sorry", "mate", "buddy", "kk"});
+                       "lemme", "see", "thanks", "thank", "you", "cheers", "sorry", "mate", "buddy", "kk", "ew", "eww",
+                       "ewww", "yuck", "ick", "god", "geez", "wow", "damn", "duh", "obv", "obviously", "dude", "pfft",
+                       "meh", "ha", "lmao", "tho", "though"});
 }
 
 // The words of a correction's marker: "no wait", "oops", "nah", "wait what"
@@ -129,10 +131,55 @@ Marker marker(const Words& words) {
 
 // "what's left?", "how many things are left on the table?", "is anything
 // still in the bags?", "where's the soap?", "why did you close it?".
+namespace {
+
+// The things, then the places, a why-question names by their names' words
+// ("why did you put the glove in the right basket": the gloves, then the
+// right basket; "why is the closet still open": the closet). Each noun
+// phrase is the run of words that may belong to names here.
+std::vector<ObjectId> things_asked_why(const Grounder& grounder, const World& world, const Words& words) {
+  ReferenceContext context{world, grounder.lexicon(), std::nullopt};
+  context.partial_names = true;
+  std::vector<ObjectId> items, places;
+  Words phrase;
+  auto flush = [&] {
+    if (phrase.empty()) return;
+    auto found = candidates_for(NounPhrase{"", phrase}, Role::kAny, context);
+    if (const auto* set = std::get_if<CandidateSet>(&found))
+      for (ObjectId id : set->objects)
+        (world.universe->info(id).kind == ObjectKind::kItem ? items : places).push_back(id);
+    phrase.clear();
+  };
+  for (std::size_t i = 1; i < words.size(); ++i) {
+    const std::string& w = words[i];
+    const bool function_word = is_determiner(w) || is_object_pronoun(w) || is_copula(w) || is_auxiliary(w) ||
+                               is_particle(w) || is_clause_break(w) || is_negation(w) ||
+                               is_one_of(w, {"in", "on", "into", "onto", "to", "at", "from", "with", "you", "i", "did", "do", "does", "put", "throw",
+                                                                     "out", "away", "still", "so", "before", "now",
+                                                                     "there", "here", "that", "go", "goes", "my"});
+    if (function_word) flush();
+    else phrase.push_back(w);
+  }
+  flush();
+  items.insert(items.end(), places.begin(), places.end());
+  return items;
+}
+
+}  // namespace
+
 std::optional<Command> question(const Grounder& grounder, const World& world, const Words& said) {
   Words words = said;
-  while (!words.empty() && (is_interjection(words.front()) || is_marker(words.front())) && words.front() != "what")
-    words.erase(words.begin());
+  for (;;) {
+    // ("hang on why did you ...": a marker of two words.)
+    const Marker m = marker(words);
+    if (m.length > 0 && m.length < words.size() && words.front() != "what") {
+      words.erase(words.begin(), words.begin() + static_cast<std::ptrdiff_t>(m.length));
+    } else if (!words.empty() && (is_interjection(words.front()) || is_marker(words.front())) && words.front() != "what") {
+      words.erase(words.begin());
+    } else {
+      break;
+    }
+  }
   // "tell me what's left", "can you tell me where the soap is".
   for (std::size_t i = 0; i + 2 < words.size() && i < 3; ++i)
     if (is_one_of(words[i], {"tell", "show"}) && words[i + 1] == "me" &&
@@ -142,7 +189,7 @@ std::optional<Command> question(const Grounder& grounder, const World& world, co
     }
   if (words.empty()) return std::nullopt;
   const std::string& first = words.front();
-  if (first == "why") return Command{Command::Kind::kWhy, "", {}, {}};
+  if (first == "why") return Command{Command::Kind::kWhy, join(words, " "), things_asked_why(grounder, world, words), {}};
   if (first == "where" && words.size() > 1 &&
       is_one_of(words[1], {"is", "are", "did", "does", "do", "has", "have", "was", "were"})) {
     Words thing;
@@ -247,14 +294,53 @@ std::size_t what_someone_did_from(const Words& words) {
 
 // "close the top drawer", "shut both drawers", "open the compost bin
 // first": the actions, or nullopt when the segment is not such a command.
+namespace {
+
+bool says_door_state(const std::string& word) { return is_one_of(word, {"open", "opened", "closed", "shut"}); }
+
+}  // namespace
+
 std::optional<std::vector<Action>> door_action(const Grounder& grounder, const World& world,
                                                const ReplyContext& context, const Words& said) {
   Words words = without_interjections(said);
   // "first shut the fridge", "please close it": an order word or a
   // courtesy before the verb.
-  while (!words.empty() && (is_connective(words.front()) ||
+  // ("no just shut the door", "actually close the wardrobe": a marker
+  // before the command, with no answer before it to correct.)
+  while (!words.empty() && (is_connective(words.front()) || is_marker(words.front()) ||
                             is_one_of(words.front(), {"can", "could", "would", "you", "also", "just", "first", "please"})))
     words.erase(words.begin());
+  // "open the drawer and leave it open": the second part only says the
+  // first again.
+  for (std::size_t i = 1; i + 1 < words.size(); ++i)
+    if (words[i] == "and" && is_one_of(words[i + 1], {"leave", "keep"})) {
+      const Words rest(words.begin() + static_cast<std::ptrdiff_t>(i) + 2, words.end());
+      if (rest.size() <= 3 && !rest.empty() && is_object_pronoun(rest.front()) && says_door_state(rest.back())) {
+        words.resize(i);
+        break;
+      }
+    }
+  // "leave the cabinet open", "keep the closet shut", asked about the task's
+  // steps (where it can be no goal's door): the door as said, now.
+  const bool about_steps = context.asked == Asked::kTaskStep || context.asked == Asked::kSubtaskEnd;
+  // So is a door's state said with "should be" ("the wardrobe should be
+  // closed", "the closet needs to be shut").
+  if (about_steps && words.size() >= 3 && says_door_state(words.back())) {
+    const bool open_said = is_one_of(words.back(), {"open", "opened"});
+    Words object;
+    if (is_one_of(words.front(), {"leave", "keep"})) {
+      object = Words(words.begin() + 1, words.end() - 1);
+    } else if (words[words.size() - 2] == "be") {
+      auto modal = std::find_if(words.begin(), words.end(), [](const std::string& w) {
+        return is_one_of(w, {"should", "must", "needs", "need", "has", "have", "ought", "can"});
+      });
+      if (modal != words.end() && modal != words.begin()) object = Words(words.begin(), modal);
+    }
+    if (!object.empty()) {
+      words = std::move(object);
+      words.insert(words.begin(), open_said ? "open" : "close");
+    }
+  }
   // "lock it": the domain has no locks; a locked door is a closed one.
   // ("lock it in the cabinet" puts it there: no door action.)
   if (words.empty() || !is_one_of(words.front(), {"close", "shut", "lock", "open"})) return std::nullopt;
@@ -276,12 +362,17 @@ std::optional<std::vector<Action>> door_action(const Grounder& grounder, const W
   });
   if (object.empty()) return std::nullopt;
   bool every = is_one_of(object.front(), {"both", "all", "every", "each"}) || object.back().ends_with("s");
-  // "close it", "shut the lid": the place named last, part of an answer.
+  // "close it", "shut the lid": the place named last, part of an answer;
+  // asked about the task's steps, where no answer has a place, the place
+  // named last in the conversation ("open the cabinet", then "close it").
   if (!every && (is_object_pronoun(object.back()) || is_door_word(object.back()))) {
     std::size_t named = std::count_if(object.begin(), object.end(), [](const std::string& w) {
       return !is_determiner(w) && !is_object_pronoun(w) && !is_door_word(w);
     });
-    if (named == 0) return std::nullopt;
+    if (named == 0 && about_steps && context.recent_place && openable(world, *context.recent_place))
+      object = {world.universe->name(*context.recent_place)};
+    else if (named == 0)
+      return std::nullopt;
   }
   ReplyContext as_action = context;
   as_action.asked = Asked::kAction;

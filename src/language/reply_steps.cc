@@ -114,12 +114,14 @@ std::optional<std::pair<Reply, std::vector<std::string>>> several_steps(const Gr
     if (part.empty()) return std::nullopt;
     // "ok now shut the cupboard, then do the piano": a one-off door action
     // first, done now, and the parts after it read in turn.
-    if (i == 0)
-      if (auto actions = door_action(grounder, world, at, part)) {
-        first = Command{Command::Kind::kDo, "", {}, *actions};
-        at.asked = Asked::kTaskStep;
-        continue;
-      }
+    if (auto actions = door_action(grounder, world, at, part)) {
+      // ("that's all, leave the cabinet open": a one-off action said after
+      // a part is the reply's acts' to read.)
+      if (i > 0) return std::nullopt;
+      first = Command{Command::Kind::kDo, "", {}, *actions};
+      at.asked = Asked::kTaskStep;
+      continue;
+    }
     // ("the folding table, clear it": "it" is the place of the part before.)
     const bool pronoun = std::any_of(part.begin(), part.end(), [](const std::string& w) { return is_object_pronoun(w); });
     at.topic_places = pronoun && !last_places.empty() ? last_places : context.topic_places;

@@ -191,7 +191,9 @@ class StructureReader {
     // clearing a bucket, may not be what was meant.
     std::optional<Places> named;
     if (!problem_ && !ambiguous_ && !item_named_) named = first_places(clauses);
-    if (named && !in_.context.taught_subtasks.empty()) {
+    // (Not where a verb of placing or going says a thing goes: "the leash
+    // goes on the bottom hook" is no part over the hook rack.)
+    if (named && !in_.context.taught_subtasks.empty() && !says_where_a_thing_goes(clauses)) {
       std::vector<ObjectId> holding = holding_items(named->objects);
       const std::string& last = in_.context.taught_subtasks.back();
       if (!holding.empty() && last == clearing_verb(in_.world.universe->info(holding.front()).kind))
@@ -375,6 +377,16 @@ class StructureReader {
     return std::nullopt;
   }
 
+  static bool says_where_a_thing_goes(const std::vector<Clause>& clauses) {
+    return std::any_of(clauses.begin(), clauses.end(), [](const Clause& c) {
+      const bool placing = c.verb_class() == VerbClass::kBe || c.verb_class() == VerbClass::kPlace;
+      return placing && std::any_of(c.phrases.begin(), c.phrases.end(), [](const PrepPhrase& p) {
+               return p.preposition == Preposition::kIn || p.preposition == Preposition::kOn ||
+                      p.preposition == Preposition::kTo;
+             });
+    });
+  }
+
   static bool has_place_pronoun(const Clause& c) {
     auto there = [](const std::optional<Chunk>& chunk) { return chunk && chunk->place_pronoun; };
     return there(c.subject) || there(c.object) ||
@@ -411,7 +423,14 @@ class StructureReader {
       if (!found || problem_ || ambiguous_) return std::nullopt;
       std::vector<ObjectId> holding = holding_items(found->objects);
       if (holding.empty()) return std::nullopt;
-      return subtask(c, holding);
+      // A verb said apart from its place names a part when it is a step
+      // verb, or is done to what is there ("now the counter, put all that
+      // stuff away"): "wait" in "oh wait, the magazine goes on the shelf"
+      // is none.
+      SubtaskNamed named = subtask(c, holding);
+      const bool over_the_things = c.object && (c.object->pronoun || !specific(*c.object));
+      if (!names_a_step(named) && !over_the_things) return std::nullopt;
+      return named;
     }
     return std::nullopt;
   }
@@ -419,10 +438,15 @@ class StructureReader {
   // "clear the table", "store the things on the counter", "put the stuff on
   // the counter away", "the dishes in the dish rack need to be unloaded".
   // Verbs that say when or how, not what: no subtask is named by them.
+  // Nor verbs that say where things go ("the magazine goes on the shelf"),
+  // what not to do ("leave", "forget"), or what the teacher thinks, and
+  // "I'm done", which ends.
   static bool names_no_subtask(const Clause& c) {
-    return c.verb.empty() || c.adjective() ||
+    return c.verb.empty() || c.adjective() || c.verb_class() == VerbClass::kBe || (c.copula && c.verb_word == "done") ||
            is_one_of(c.verb, {"be", "repeat", "keep", "continue", "go", "finish", "end", "stop", "start", "begin",
-                              "move", "come", "think", "know", "want", "need", "let", "say", "mean", "see", "look"});
+                              "move", "come", "think", "know", "want", "need", "let", "say", "mean", "see", "look",
+                              "leave", "forget", "wait", "belong", "thank", "hate", "like", "love", "read", "tell",
+                              "ask", "mind", "hold", "guess", "wish", "hope", "forgive"});
   }
 
   // Whether a part of the task read is said with a step verb the agent
@@ -523,100 +547,6 @@ class StructureReader {
   std::vector<ObjectId> named_before_;
 };
 
-// The task named by its verb and what it is done to. The task's place is
-// the world's location: said ("clean up the bathroom after my shower",
-// "tidy the garden shed"), pointed at ("tidy up in here", "this room",
-// "it" for the room), said as another name for a room ("the lounge", "the
-// kids room"), or said as a time ("clean up after the party"); never a
-// filler or a word no one knows. What the task is done to is kept when it
-// is neither ("put the groceries away", "do the laundry"). A task over the
-// room said with another verb than the agent's ("clean up", "straighten")
-// is the agent's task verb WordNet puts closest (known_verbs.h), with a
-// note for the read-back. `up_first`: "up" said right after the verb.
-// WordNet's classes of the places a task is done in, besides rooms:
-// "shed", "greenhouse" (buildings), "station", "gym" (facilities), "boat"
-// (vessels). Not "establishment": "the office" of a study stays as said. Not
-// "structure" or "area": a cupboard is both; nor "workplace": "the
-// laundry" is the washing before it is a room.
-constexpr std::array<std::string_view, 3> kRoomlikeClasses{"building", "facility", "vessel"};
-
-// Whether what a task is done to is everything in the room: "everything",
-// "it all", "all the stuff in here", "all of this".
-bool names_everything_here(const Words& object) {
-  bool whole = false;
-  for (const std::string& w : object) {
-    if (is_one_of(w, {"everything", "everythin", "stuff", "things", "all"})) whole = true;
-    else if (!is_one_of(w, {"it", "of", "this", "that", "these", "in", "here", "the", "room", "place", "lot"}))
-      return false;
-  }
-  return whole;
-}
-
-TaskNamed task_named(const ReplyInput& in, const std::string& verb, const std::string& particle, bool up, Words object,
-                     bool up_first) {
-  Words room = split_words(to_lower(in.world.location));
-  // "put everything away": what the task is done to is the room.
-  const bool everything = names_everything_here(object);
-  if (!room.empty() && everything) object = room;
-  if (!room.empty()) {
-    // "after the party", "before I leave": a time, not what the task is done to.
-    auto time = std::find_if(object.begin(), object.end(), [](const std::string& w) {
-      return is_one_of(w, {"after", "before", "around", "for", "at", "when", "while", "until", "since"});
-    });
-    bool when = time == object.begin() && !object.empty();
-    object.erase(time, object.end());
-    auto at = std::search(object.begin(), object.end(), room.begin(), room.end());
-    const Lexicon& lexicon = in.grounder.lexicon();
-    // A word for a room or a building that no thing of the world is
-    // called ("the potting shed" of a greenhouse, "the station" of the
-    // nurses' station) names the room the agent is in: the task is over
-    // the world's location, never over a room the agent cannot see.
-    auto names_a_thing_here = [&](const std::string& w) {
-      return std::any_of(in.world.universe->objects().begin(), in.world.universe->objects().end(),
-                         [&](const ObjectInfo& o) {
-                           const std::vector<std::string> parts = name_parts(o.category);
-                           return std::find(parts.begin(), parts.end(), w) != parts.end();
-                         });
-    };
-    auto roomlike = [&](const std::string& w) {
-      if (is_one_of(w, {"in", "here", "this", "room", "place", "it", "ugh", "um", "lol", "hmm", "oh", "so"})) return true;
-      if (lexicon.has_wordnet() && !lexicon.knows(w)) return true;
-      std::vector<std::string> one{w};
-      if (!lexicon.kinds_under("room", one).empty()) return true;
-      // "the shop" of a workshop: the end of the location's one-word name.
-      const std::string location = to_lower(in.world.location);
-      if (w.size() >= 3 && location.size() > w.size() && location.ends_with(w) &&
-          location.find_first_of(" -") == std::string::npos)
-        return true;
-      // "the laundry" in a laundry room is the washing; "the workshop" of
-      // a bike workshop stays as said.
-      if (names_a_thing_here(w) || names_location(w, in)) return false;
-      return std::any_of(kRoomlikeClasses.begin(), kRoomlikeClasses.end(),
-                         [&](std::string_view c) { return !lexicon.kinds_under(c, one).empty(); });
-    };
-    bool pointed = object.empty() || std::any_of(object.begin(), object.end(), roomlike);
-    if (at != object.end() || pointed || when) object = room;
-  }
-  std::string name = verb_name(verb, particle);
-  if (particle == "off" || particle == "down" || particle == "over" || particle == "aside") name = verb + " " + particle;
-  // "clean up after the party": "up" stays before a preposition, whose
-  // object is the task's.
-  if (room.empty() && !object.empty() && is_one_of(object.front(), {"after", "before", "around"}) && up_first)
-    name = verb + " up";
-  std::string note;
-  if (!room.empty() && object == room) {
-    const std::string said_particle = particle.empty() && up ? "up" : particle;
-    auto taken = known_task_verb(in.grounder.lexicon(), verb, said_particle);
-    if (!taken && everything && !names_a_known_task(in.grounder.lexicon(), verb, said_particle))
-      taken = task_verb_over_everything(verb, said_particle);
-    if (taken) {
-      name = taken->verb;
-      note = taken->note;
-    }
-  }
-  for (const std::string& w : object) name += " " + w;
-  return TaskNamed{name, note};
-}
 
 }  // namespace
 

@@ -14,6 +14,7 @@
 #include "language/narration.h"
 #include "language/reference.h"
 #include "language/reply_acts_parts.h"
+#include "language/utterance.h"
 #include "util/text.h"
 
 namespace apprentice::language {
@@ -55,6 +56,7 @@ std::vector<Words> sentences_of(std::string_view text) {
   }
   flush();
   if (sentences.back().empty()) sentences.pop_back();
+  for (Words& sentence : sentences) expand_shorthand(sentence);  // "pls", "u", as the reply reader reads them
   return sentences;
 }
 
@@ -76,7 +78,8 @@ std::size_t skip_opening(const Words& words, std::size_t at) {
       {"generally"}, {"usually"}, {"always"}, {"just"}, {"i", "want", "you", "to"}, {"i'd", "like", "you", "to"},
       {"i", "would", "like", "you", "to"}, {"could", "you"}, {"can", "you"}, {"would", "you"}, {"you", "should"},
       {"you", "can"}, {"go", "ahead", "and"}, {"make", "sure"}, {"i", "like", "to"}, {"i", "prefer", "to"},
-      {"we"}, {"i"}, {"first"}, {"finally"}, {"lastly"}, {"next"}, {","}};
+      {"we"}, {"i"}, {"first"}, {"finally"}, {"lastly"}, {"next"}, {"from", "now", "on"}, {"in", "the", "future"},
+      {"in", "future"}, {"going", "forward"}, {"for", "future", "reference"}, {","}};
   static const std::vector<std::vector<std::string_view>> kVerbs = {
       {"throw", "away"}, {"throw", "out"}, {"hang", "up"}, {"put", "away"}, {"put"}, {"place"}, {"store"},
       {"keep"}, {"move"}, {"throw"}, {"toss"}, {"leave"}, {"hang"}, {"set"}, {"stack"}, {"file"}, {"arrange"},
@@ -234,14 +237,20 @@ RuleClass class_of(const Lexicon& lexicon, const ClassWords& said, const RuleCla
 }
 
 // The classes of a clause's first part: "books and magazines", "oil,
-// vinegar and spices", "pillows and other small items".
+// vinegar and spices", "pillows and other small items". Examples said
+// with a class are classes too: "gadgets like chargers and headphones" is
+// gadgets, chargers and headphones.
 std::vector<Words> split_classes(const Words& words) {
   std::vector<Words> parts(1);
-  for (const std::string& w : words) {
-    if (w == "and" || w == "or" || w == "," || w == "&" || w == "plus") {
+  for (std::size_t i = 0; i < words.size(); ++i) {
+    const std::string& w = words[i];
+    const bool such_as = w == "such" && i + 1 < words.size() && words[i + 1] == "as";
+    if (such_as) ++i;
+    if (w == "and" || w == "or" || w == "," || w == "&" || w == "plus" || such_as ||
+        ((w == "like" || w == "including") && !parts.back().empty())) {
       if (!parts.back().empty()) parts.emplace_back();
     } else {
-      parts.back().push_back(w);
+      parts.back().push_back(words[i]);
     }
   }
   if (parts.back().empty()) parts.pop_back();
@@ -292,8 +301,12 @@ class SentenceReader {
     // No place: what is left is not a clause.
     const Words rest(words.begin() + static_cast<long>(start), words.end());
     Words meaningful;
+    // ("lol no. books go on the shelf": a yes or no, or a filler, said
+    // with a rule is no part of it left unread.)
     for (const std::string& w : rest)
-      if (!is_separator(w) && !is_linking_word(w)) meaningful.push_back(w);
+      if (!is_separator(w) && !is_linking_word(w) && !is_filler(w) &&
+          !is_one_of(w, {"yes", "no", "yeah", "yep", "yup", "nope", "nah", "lol", "sure", "right", "oh"}))
+        meaningful.push_back(w);
     if (!meaningful.empty()) reading_.not_understood.push_back(join(rest, " "));
     return words.size();
   }
@@ -319,8 +332,12 @@ class SentenceReader {
   std::vector<ObjectId> ground_place(const Words& words) {
     std::vector<ObjectId> places = candidates(words);
     // "light ones on the right": the place of the clause before, by its
-    // properties alone.
-    if (places.empty() && last_place_ && !words.empty()) {
+    // properties alone (not "put the lid back on after").
+    const bool properties_alone = std::all_of(words.begin(), words.end(), [&](const std::string& w) {
+      return is_determiner(w) || is_one_of(w, {"one", "ones", "side", "please"}) ||
+             names_property_here(w, world_, lexicon_);
+    });
+    if (places.empty() && last_place_ && !words.empty() && properties_alone) {
       Words with_category = words;
       for (const std::string& w : split_words(spoken_category(world_, *last_place_))) with_category.push_back(w);
       places = candidates(with_category);
@@ -334,6 +351,7 @@ class SentenceReader {
     std::size_t at = 0;
     if (at < words.size() && is_determiner(words[at])) phrase.article = words[at++] == "the" ? "the" : "";
     phrase.words.assign(words.begin() + static_cast<long>(at), words.end());
+    while (!phrase.words.empty() && phrase.words.back() == "please") phrase.words.pop_back();  // "... on the left pls"
     if (phrase.words.empty()) return {};
     ReferenceContext context{world_, lexicon_, std::nullopt, std::nullopt, true};
     auto found = candidates_for(phrase, Role::kPlace, context);
@@ -415,26 +433,52 @@ std::string say_rule_class(const RuleClass& rule_class) {
   return (rule_class.rest ? "other " : "") + rule_class.phrase;
 }
 
+namespace {
+
+// The things a clause is about, as said ("toys", "books and magazines", "the
+// sweater"), and whether they take a verb in the singular ("food goes").
+std::pair<std::string, bool> clause_subject(const World& world, const RuleClause& clause) {
+  std::vector<std::string> classes;
+  if (clause.thing) classes.push_back(spoken_name(world, *clause.thing));
+  else
+    for (const RuleClass& c : clause.classes) classes.push_back(say_rule_class(c));
+  const RuleClass& first = clause.classes.front();
+  const std::string last = first.phrase.empty() ? "" : split_words(first.phrase).back();
+  const bool singular = first.phrase.empty() || (last == first.head && !last.ends_with("s"));
+  const bool one = clause.thing || (classes.size() == 1 && singular);
+  return {say_alternatives(classes, "and"), one};
+}
+
+bool on_a_surface(const World& world, ObjectId place) {
+  return world.universe->info(place).kind == ObjectKind::kSurface;
+}
+
+}  // namespace
+
 std::string read_back_rule(const World& world, const RuleReading& reading) {
   std::vector<std::string> parts;
   for (const RuleClause& clause : reading.clauses) {
-    std::vector<std::string> classes, places;
-    if (clause.thing) classes.push_back(spoken_name(world, *clause.thing));
-    else
-      for (const RuleClass& c : clause.classes) classes.push_back(say_rule_class(c));
+    std::vector<std::string> places;
     for (ObjectId place : clause.places) places.push_back(noun_for(world, place));
-    const bool surface = world.universe->info(clause.places.front()).kind == ObjectKind::kSurface;
-    // "food goes", "toys go": one class said in the singular, or a thing.
-    const RuleClass& first = clause.classes.front();
-    const std::string last = first.phrase.empty() ? "" : split_words(first.phrase).back();
-    const bool singular = first.phrase.empty() || (last == first.head && !last.ends_with("s"));
-    const bool one = clause.thing || (classes.size() == 1 && singular);
-    parts.push_back(say_alternatives(classes, "and") + (one ? " goes " : " go ") + (surface ? "on " : "in ") +
+    const auto [subject, one] = clause_subject(world, clause);
+    parts.push_back(subject + (one ? " goes " : " go ") + (on_a_surface(world, clause.places.front()) ? "on " : "in ") +
                     say_alternatives(places, "or"));
   }
   if (parts.empty()) return "";
   std::string out = "So " + (parts.size() == 1 ? parts.front() : say_alternatives(parts, "and"));
   return out + ".";
+}
+
+std::optional<std::string> ask_which_place_of(const World& world, const RuleClause& clause) {
+  if (clause.places.size() < 2) return std::nullopt;
+  const std::string& category = world.universe->info(clause.places.front()).category;
+  for (ObjectId place : clause.places)
+    if (world.universe->info(place).category != category) return std::nullopt;
+  std::vector<std::string> places;
+  for (ObjectId place : clause.places) places.push_back(distinct_noun_for(world, place, clause.places));
+  const auto [subject, one] = clause_subject(world, clause);
+  return "Which " + spoken_category(world, clause.places.front()) + (one ? " does " : " do ") + subject + " go " +
+         (on_a_surface(world, clause.places.front()) ? "on" : "in") + ": " + say_alternatives(places, "or") + "?";
 }
 
 }  // namespace apprentice::language

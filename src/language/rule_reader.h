@@ -78,5 +78,10 @@ std::string say_rule_class(const RuleClass& rule_class);
 // and fruits go on the coffee table." Clauses with several places say
 // them with "or".
 std::string read_back_rule(const World& world, const RuleReading& reading);
+// A clause whose place fits look-alikes ("legos in the bin", where a left
+// and a right bin stand): which of them, as a question ("Which bin do legos
+// go in: the left bin or the right bin?"); nullopt when the clause names one
+// place, or places of different kinds.
+std::optional<std::string> ask_which_place_of(const World& world, const RuleClause& clause);
 
 }  // namespace apprentice::language

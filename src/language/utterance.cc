@@ -81,16 +81,18 @@ bool starts_a_predicate(std::string_view next) {
                           "for", "over", "empty", "clear", "clean", "next", "okay", "ok", "good", "enough"});
 }
 
+// Shorthand and contractions written out, as whole words.
+const std::array<std::pair<std::string_view, std::string_view>, 28> kShorthand{{
+    {"can't", "can not"},     {"cannot", "can not"},   {"won't", "will not"},   {"ain't", "is not"},
+    {"let's", "let us"},      {"gonna", "going to"},   {"wanna", "want to"},    {"gotta", "got to"},
+    {"lemme", "let me"},      {"pls", "please"},       {"plz", "please"},       {"thx", "thanks"},
+    {"okay", "ok"},           {"k", "ok"},             {"u", "you"},            {"ya", "you"},
+    {"dont", "do not"},       {"doesnt", "does not"},  {"isnt", "is not"},      {"thats", "that is"},
+    {"whats", "what is"},     {"lets", "let us"},      {"w", "with"},           {"w/", "with"},
+    {"rn", "right now"},      {"cuz", "because"},      {"bc", "because"},       {"tmrw", "tomorrow"},
+}};
+
 void expand(const std::string& word, const std::string& next, std::vector<std::string>& out) {
-  static const std::array<std::pair<std::string_view, std::string_view>, 28> kWhole{{
-      {"can't", "can not"},     {"cannot", "can not"},   {"won't", "will not"},   {"ain't", "is not"},
-      {"let's", "let us"},      {"gonna", "going to"},   {"wanna", "want to"},    {"gotta", "got to"},
-      {"lemme", "let me"},      {"pls", "please"},       {"plz", "please"},       {"thx", "thanks"},
-      {"okay", "ok"},           {"k", "ok"},             {"u", "you"},            {"ya", "you"},
-      {"dont", "do not"},       {"doesnt", "does not"},  {"isnt", "is not"},      {"thats", "that is"},
-      {"whats", "what is"},     {"lets", "let us"},      {"w", "with"},           {"w/", "with"},
-      {"rn", "right now"},      {"cuz", "because"},      {"bc", "because"},       {"tmrw", "tomorrow"},
-  }};
   // "ill take it down later", "ill do it": I'll, before a verb of doing.
   if (word == "ill" && is_one_of(next, {"take", "do", "put", "get", "deal", "sort", "move", "handle", "grab", "bring",
                                         "be", "finish", "clean", "wash", "use", "wear", "leave", "need", "keep", "fix"})) {
@@ -104,7 +106,7 @@ void expand(const std::string& word, const std::string& next, std::vector<std::s
     out.emplace_back("yeah");
     return;
   }
-  for (const auto& [from, to] : kWhole) {
+  for (const auto& [from, to] : kShorthand) {
     if (word == from) {
       for (std::string& w : split_words(to)) out.push_back(std::move(w));
       return;
@@ -148,6 +150,20 @@ void expand(const std::string& word, const std::string& next, std::vector<std::s
 }
 
 }  // namespace
+
+void expand_shorthand(std::vector<std::string>& words) {
+  std::vector<std::string> out;
+  out.reserve(words.size());
+  for (std::string& word : words) {
+    const auto* written = std::find_if(kShorthand.begin(), kShorthand.end(), [&](const auto& entry) { return entry.first == word; });
+    if (written == kShorthand.end()) {
+      out.push_back(std::move(word));
+    } else {
+      for (std::string& w : split_words(written->second)) out.push_back(std::move(w));
+    }
+  }
+  words = std::move(out);
+}
 
 std::vector<std::string> reply_words(std::string_view text) {
   std::vector<std::string> raw = raw_words(ascii(text.substr(0, std::min(text.size(), kMaxSentenceBytes))));

@@ -23,6 +23,10 @@ namespace apprentice::language {
 // "close", "it"}; "the fridge's door" -> {"the", "fridge", "door"}.
 std::vector<std::string> reply_words(std::string_view text);
 
+// Writes out shorthand said as whole words, in place: "pls" -> "please",
+// "can't" -> "can not", "u" -> "you" (the table reply_words uses).
+void expand_shorthand(std::vector<std::string>& words);
+
 // Replaces every run of words that spells a category of `universe` whose
 // name holds a function word (in, on, and, of, the, a, to, with...) by the
 // category itself: {"the", "walk", "in", "pantry"} -> {"the",

@@ -197,5 +197,64 @@ TEST_F(RuleReader, AClassMayHoldAPrepositionOfItsOwn) {
   EXPECT_EQ(say_rule_class(rest), "everything else");
 }
 
+
+// Found by fresh users (stop 37): a look-alike's property said after its
+// name, with "pls" ("legos in the bin on the left pls"), kept both bins;
+// "put the lid back on after" became the class "lid" in the basket named
+// before; "gadgets like chargers and headphones" was one class; "from now
+// on" and "lol no" were parts not understood.
+TEST_F(RuleReader, APropertyAfterThePlaceAndShorthandNameOnePlace) {
+  auto rule = read("sweaters on the shelf on the left pls and bananas in the drawer at the bottom");
+  ASSERT_TRUE(rule);
+  ASSERT_EQ(rule->clauses.size(), 2u);
+  EXPECT_THAT(rule->clauses[0].places, ElementsAre(id("shelf1")));
+  EXPECT_THAT(rule->clauses[1].places, ElementsAre(id("drawer2")));
+  EXPECT_THAT(rule->not_understood, IsEmpty());
+}
+
+TEST_F(RuleReader, WhatNamesNoPlaceIsNoPlaceOfTheClauseBefore) {
+  auto rule = read("all the dirty clothes go in the storage box, put the lid back on after");
+  ASSERT_TRUE(rule);
+  ASSERT_EQ(rule->clauses.size(), 1u);
+  EXPECT_EQ(rule->clauses[0].classes.at(0).head, "clothes");
+  // ("light ones on the right" still takes the shelf named before.)
+  auto by_property = read("heavy items on the left shelf, light ones on the right");
+  ASSERT_TRUE(by_property);
+  ASSERT_EQ(by_property->clauses.size(), 2u);
+  EXPECT_THAT(by_property->clauses[1].places, ElementsAre(id("shelf2")));
+}
+
+TEST_F(RuleReader, ExamplesSaidWithAClassAreClassesToo) {
+  auto rule = read("gadgets like chargers and headphones belong in the top drawer");
+  ASSERT_TRUE(rule);
+  ASSERT_EQ(rule->clauses.size(), 1u);
+  EXPECT_THAT(heads(rule->clauses[0]), ElementsAre("gadgets", "chargers", "headphones"));
+  auto such_as = read("snacks such as chips in the storage box");
+  ASSERT_TRUE(such_as);
+  ASSERT_EQ(such_as->clauses.size(), 1u);
+  EXPECT_THAT(heads(such_as->clauses[0]), ElementsAre("snacks", "chips"));
+}
+
+TEST_F(RuleReader, FramesAndAnswersSaidWithARuleAreNoPartsLeftUnread) {
+  auto rule = read("lol no. from now on electronics go in the bottom drawer");
+  ASSERT_TRUE(rule);
+  ASSERT_EQ(rule->clauses.size(), 1u);
+  EXPECT_THAT(heads(rule->clauses[0]), ElementsAre("electronics"));
+  EXPECT_THAT(rule->not_understood, IsEmpty());
+}
+
+// Look-alikes a clause's place fits are asked about by name, with the
+// verb agreeing with the class.
+TEST_F(RuleReader, WhichOfTheLookAlikesIsAskedByName) {
+  auto rule = read("toys go on the shelf and food goes in the drawer and shoes on the rack");
+  ASSERT_TRUE(rule);
+  ASSERT_EQ(rule->clauses.size(), 3u);
+  EXPECT_EQ(ask_which_place_of(world(), rule->clauses[0]),
+            std::optional<std::string>("Which shelf do toys go on: the left shelf or the right shelf?"));
+  EXPECT_EQ(ask_which_place_of(world(), rule->clauses[1]),
+            std::optional<std::string>("Which drawer does food go in: the top drawer or the bottom drawer?"));
+  EXPECT_EQ(ask_which_place_of(world(), rule->clauses[2]), std::nullopt);
+}
+
 }  // namespace
 }  // namespace apprentice::language

@@ -1,0 +1,202 @@
+// Two fresh users taught rooms of their own on 2026-12-07 (stop 37), with
+// `apprentice teach` in a terminal, after reading only the README and the
+// docs: a mudroom and a dorm room (tests/agent/data/fresh-users, their own
+// worlds). Of 107 replies, 18 were acted on wrongly. Each test here types
+// the replies that went wrong, as they typed them, into the real binary,
+// and asserts what a person meant. Each failed on the code before the fix.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "common/paths.h"
+#include "common/scratch.h"
+#include "process.h"
+
+namespace apprentice {
+namespace {
+
+using testing::Process;
+using ::testing::HasSubstr;
+using ::testing::Not;
+
+std::string world(const char* file) { return testing::source_path(std::string("tests/agent/data/fresh-users/") + file); }
+
+class FreshUsers : public testing::ScratchTest {
+ protected:
+  // Teaches `file` with `replies` typed in turn, keeping what was taught in
+  // `store` (here); the whole transcript.
+  std::string teach(const char* file, std::vector<std::string> replies, const char* store = "store.sqlite") {
+    Process run({APPRENTICE_BINARY, "teach", "--scenario", world(file), "--knowledge", (dir_ / store).string()});
+    EXPECT_TRUE(run.write(testing::typed_lines(replies)));
+    run.wait();
+    return run.out();
+  }
+};
+
+// The mudroom's first parts, as its teacher taught them.
+std::vector<std::string> mudroom_start() {
+  return {"ugh the mudroom is a disaster again, can you help me tidy it up",
+          "well start with the stuff on the floor i guess",
+          "shoes go in the shoe cabinet, boots too",
+          "hmm hang it on the bottom hook",
+          "now the bench",
+          "coats and jackets go on the top hooks, scarf in the left basket, gloves in the right one",
+          "its a coat?? top hooks",
+          "helmet on the shelf",
+          "leash goes on the top hook"};
+}
+
+// A thing put away, corrected at the question about the task's next step,
+// named by the last word of its name ("the leash" for the dog leash), with
+// a marker before and a reason after; and "move X to Y". Before: "So I
+// clear what is on the bottom hook rack, one thing at a time."
+TEST_F(FreshUsers, ACorrectionNamesTheThingByPartOfItsName) {
+  std::vector<std::string> replies = mudroom_start();
+  replies.insert(replies.end(), {"no wait, actually the leash goes on the bottom hook, the kids cant reach the top",
+                                 "move the helmet to the left basket", "that's all"});
+  const std::string out = teach("mudroom.yaml", replies);
+  EXPECT_THAT(out, HasSubstr("the kids cant reach the top\nAgent: I left out \"no wait\": you corrected it.\n"
+                             "Agent: So the dog leash goes on the bottom hook rack.\n"
+                             "Agent: I put the dog leash on the bottom hook rack.\n"))
+      << out;
+  EXPECT_THAT(out, HasSubstr("Instructor: move the helmet to the left basket\n"
+                             "Agent: So the bike helmet goes in the left basket.\n"))
+      << out;
+  EXPECT_THAT(out, Not(HasSubstr("So I clear what is on the bottom hook rack"))) << out;
+  EXPECT_THAT(out, Not(HasSubstr("What should I do with the things in the left basket"))) << out;
+}
+
+// One-off doors at the next-step question, said with "leave ... open",
+// "should be closed", a marker or a reason; and an ending with one. Before:
+// "So I leave what is in the shoe cabinet, one thing at a time."
+TEST_F(FreshUsers, OneOffDoorsAreDoneNotMadePartsOfTheTask) {
+  std::vector<std::string> replies = mudroom_start();
+  replies.insert(replies.end(), {"open the shoe cabinet and leave it open, it needs to air out", "close it",
+                                 "hmm ok actually close the shoe cabinet, my roommate hates when its open",
+                                 "the shoe cabinet should be open", "thats all, leave the cabinet open"});
+  const std::string out = teach("mudroom.yaml", replies);
+  EXPECT_THAT(out, HasSubstr("Instructor: open the shoe cabinet and leave it open, it needs to air out\n"
+                             "Agent: I took \"it needs to air out\" as a reason, not an instruction.\n"
+                             "Agent: I opened the shoe cabinet.\n"))
+      << out;
+  // "it": the place of the one-off action before.
+  EXPECT_THAT(out, HasSubstr("Instructor: close it\nAgent: I closed the shoe cabinet.\n")) << out;
+  EXPECT_THAT(out, HasSubstr("Instructor: hmm ok actually close the shoe cabinet, my roommate hates when its open\n"
+                             "Agent: I took \"my roommate hates when its open\" as a reason, not an instruction.\n"
+                             "Agent: The shoe cabinet is already closed.\n"))
+      << out;
+  EXPECT_THAT(out, HasSubstr("Instructor: the shoe cabinet should be open\nAgent: I opened the shoe cabinet.\n")) << out;
+  // The ending ends the task; the cabinet is already open as asked.
+  EXPECT_THAT(out, HasSubstr("Instructor: thats all, leave the cabinet open\n"
+                             "Agent: The shoe cabinet is already open.\nAgent: So the task is done.\n"))
+      << out;
+  EXPECT_THAT(out, Not(HasSubstr("So I leave what is"))) << out;
+}
+
+// "why ...?" about a thing or a door named is answered about it, not about
+// the last reply. Before: "Because of what you told me last: ..." about the
+// umbrella, asked about the gloves.
+TEST_F(FreshUsers, WhyAboutAThingOrADoorNamedIsAnsweredAboutIt) {
+  std::vector<std::string> replies = mudroom_start();
+  replies.insert(replies.end(), {"ok now the table by the door", "keys in the bowl obviously",
+                                 "thats just junk mail, recycle it. newspaper too", "i just said, recycling",
+                                 "umbrella goes in the closet but leave the closet open so it can dry",
+                                 "hmm why did you put the glove in the right basket", "why is the closet still open?",
+                                 "why did you put the key in the bowl", "that's all"});
+  const std::string out = teach("mudroom.yaml", replies);
+  EXPECT_THAT(out, HasSubstr("Instructor: hmm why did you put the glove in the right basket\n"
+                             "Agent: The glove goes in the right basket: I learned that from the instructor, who said "
+                             "\"coats and jackets go on the top hooks, scarf in the left basket, gloves in the right "
+                             "one\"."))
+      << out;
+  EXPECT_THAT(out, HasSubstr("Instructor: why is the closet still open?\n"
+                             "Agent: The closet is open because the umbrella goes there with it left open; I learned "
+                             "that from the instructor, who said \"umbrella goes in the closet but leave the closet "
+                             "open so it can dry\". Say \"close the closet\" to close it now.\n"))
+      << out;
+  EXPECT_THAT(out, HasSubstr("Instructor: why did you put the key in the bowl\nAgent: The key goes in the key bowl: "))
+      << out;
+}
+
+// A door left open for one kind ("so it can dry") is that kind's
+// exception: the next kind put in the closet has it closed after, by the
+// norm. Before: the flashlight left the closet open, and the read-back
+// said nothing of the door.
+TEST_F(FreshUsers, ADoorLeftOpenForOneKindIsClosedForTheNext) {
+  std::vector<std::string> first = mudroom_start();
+  first.insert(first.end(), {"ok now the table by the door", "keys in the bowl obviously",
+                             "thats just junk mail, recycle it. newspaper too", "i just said, recycling",
+                             "umbrella goes in the closet but leave the closet open so it can dry", "that's all"});
+  const std::string taught = teach("mudroom.yaml", first);
+  ASSERT_THAT(taught, HasSubstr("So the umbrella goes in the closet, and the closet ends open.")) << taught;
+  const std::string out = teach("mudroom2.yaml", {"tidy the mudroom", "right basket", "shelf", "yes", "left basket",
+                                                  "key bowl", "flashlight in the closet, sunglasses too", "no",
+                                                  "that's all"});
+  EXPECT_THAT(out, HasSubstr("Instructor: flashlight in the closet, sunglasses too\n"
+                             "Agent: So the flashlight goes in the closet, and the closet ends closed."))
+      << out;
+  EXPECT_THAT(out, HasSubstr("put the flashlight in it, and closed it.")) << out;
+}
+
+// The dorm room: a rule said with a "no" to a proposal answers it, and
+// "put the lid back on after" is no class going in the basket. Before: "I
+// did not follow "lol no"", the same proposal again, and the rule "lid
+// goes in the laundry basket".
+TEST_F(FreshUsers, ARuleSaidWithANoAnswersTheProposal) {
+  const std::string out =
+      teach("dorm.yaml", {"ok so my room is a disaster after finals, can you help me clean it up",
+                          "um start with the floor i guess, pick everything up",
+                          "all the dirty clothes go in the laundry basket, put the lid back on after",
+                          "no, shoes go in the wardrobe", "the desk next",
+                          "lol no. books and notebooks go on the shelf and trash goes in the wastebasket"});
+  EXPECT_THAT(out, Not(HasSubstr("lid goes in"))) << out;
+  EXPECT_THAT(out, HasSubstr("Instructor: lol no. books and notebooks go on the shelf and trash goes in the "
+                             "wastebasket\nAgent: So books and notebooks go on the bookshelf and trash goes in the "
+                             "wastebasket.\nAgent: Where should the textbook on the desk go?"))
+      << out;
+  EXPECT_THAT(out, Not(HasSubstr("I did not follow \"lol no\""))) << out;
+}
+
+// At the next-step question "forget it" and "wait" are no parts, and "i'm
+// done, thanks" ends the task. Before: "So I forget what is in the
+// wardrobe", "So I clear what is in the wardrobe".
+TEST_F(FreshUsers, NeverMindAndEndingsAtTheNextStepAreNoParts) {
+  const std::string out =
+      teach("dorm.yaml", {"ok so my room is a disaster after finals, can you help me clean it up",
+                          "um start with the floor i guess, pick everything up",
+                          "all the dirty clothes go in the laundry basket, put the lid back on after",
+                          "no, shoes go in the wardrobe",
+                          "ok forget it. the sneaker goes in the wardrobe and close it",
+                          "oh wait, the towel goes on the bed not in the basket, its clean", "ok i'm done, thanks"});
+  EXPECT_THAT(out, HasSubstr("Instructor: ok forget it. the sneaker goes in the wardrobe and close it\n"
+                             "Agent: I took \"ok forget it\" as never mind.\n"))
+      << out;
+  EXPECT_THAT(out, HasSubstr("Instructor: oh wait, the towel goes on the bed not in the basket, its clean\n"))
+      << out;
+  EXPECT_THAT(out, HasSubstr("So the towel goes on the bed.")) << out;
+  EXPECT_THAT(out, HasSubstr("Instructor: ok i'm done, thanks\nAgent: So the task is done.")) << out;
+  EXPECT_THAT(out, Not(HasSubstr("So I forget what"))) << out;
+  EXPECT_THAT(out, Not(HasSubstr("So I wait what"))) << out;
+}
+
+// A rule whose place fits look-alikes is asked which, once, by name;
+// "the bin on the left pls" is the left bin. Before: "legos go in the left
+// bin or the right bin", kept as it was, and the lego brick asked about.
+TEST_F(FreshUsers, ARulesLookAlikePlaceIsAskedWhich) {
+  const std::string out = teach("kidsroom.yaml", {"tidy the kids room", "clear the rug",
+                                                  "stuffed animals go on the bed and legos in the bin", "the left one"});
+  EXPECT_THAT(out, HasSubstr("Instructor: stuffed animals go on the bed and legos in the bin\n"
+                             "Agent: Which bin do legos go in: the left bin or the right bin?\n"
+                             "Instructor: the left one\n"
+                             "Agent: So stuffed animals go on the bed and legos go in the left bin.\n"
+                             "Agent: The lego brick on the rug goes in the left bin, with legos, as you said.\n"))
+      << out;
+  const std::string said = teach("kidsroom.yaml", {"tidy the kids room", "clear the rug",
+                                                   "legos in the bin on the left pls"},
+                                 "another.sqlite");
+  EXPECT_THAT(said, HasSubstr("Instructor: legos in the bin on the left pls\n"
+                              "Agent: So the lego brick goes in the left bin.\n"))
+      << said;
+}
+
+}  // namespace
+}  // namespace apprentice
