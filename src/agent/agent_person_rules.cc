@@ -79,7 +79,15 @@ std::optional<language::RuleReading> TaskLearningAgent::Session::rule_in_reply(
     const std::string& text, const language::Reply& reply, const language::ReplyContext& context) const {
   // The thing asked about called by another word is not a class.
   if (other_name_of_thing(text, reply, context)) return std::nullopt;
-  auto rule = language::read_rule(world(), agent_.understanding_.lexicon(), text, context.object);
+  // "there": the place named last, or the place a proposal asked about
+  // ("yep. hats and caps go there too").
+  std::optional<ObjectId> there = context.recent_place;
+  if (context.proposal && context.object)
+    for (const Literal& l : context.proposal->literals)
+      if (l.positive && l.fact.arity == 2 && l.fact.args[0] == *context.object &&
+          (l.fact.predicate == world().vocabulary.in || l.fact.predicate == world().vocabulary.on))
+        there = l.fact.args[1];
+  auto rule = language::read_rule(world(), agent_.understanding_.lexicon(), text, context.object, there);
   if (!rule || !rule->has_class_clause()) return std::nullopt;
   const auto* unusable = std::get_if<language::Unusable>(&reply);
   const bool understood = unusable == nullptr;
@@ -118,7 +126,13 @@ std::optional<language::RuleReading> TaskLearningAgent::Session::rule_in_reply(
   // ("start with the stuff on the floor": "What should I do with the things
   // on the floor?") is understood as far as it goes: a step, not a rule.
   if (unusable != nullptr && !unusable->topic_places.empty()) return std::nullopt;
-  if (understood && class_clauses < 2 && !rest) return std::nullopt;
+  // (A yes or a no whose rest is no goal of the thing asked about takes no
+  // class: "yep. hats go there too" is a rule; "no, shoes go in the
+  // wardrobe", asked about the sneaker, is the sneaker's goal.)
+  const auto* yes_no = std::get_if<language::YesNo>(&reply);
+  const bool rest_answers =
+      yes_no == nullptr || (context.object && agent_.understanding_.goal_in_rest(world(), context, *yes_no));
+  if (understood && class_clauses < 2 && !rest && rest_answers) return std::nullopt;
   return rule;
 }
 

@@ -76,6 +76,13 @@ std::string capitalize(std::string text) {
 
 std::string_view article_for(std::string_view word) {
   if (word.empty()) return "a";
+  // Spelled with a vowel, said with a consonant: "a unicorn", "a
+  // ukulele", "a euro coin", "a one-way valve".
+  for (std::string_view sound : {"uni", "use", "usu", "uten", "uku", "eu", "ewe", "one", "once"})
+    if (word.starts_with(sound)) return "a";
+  // Spelled with a consonant, said with a vowel: "an hour", "an honest".
+  for (std::string_view sound : {"hour", "honest", "honor", "honour", "heir"})
+    if (word.starts_with(sound)) return "an";
   char c = word.front();
   return (c == 'a' || c == 'e' || c == 'i' || c == 'o' || c == 'u') ? "an" : "a";
 }

@@ -3,6 +3,7 @@
 #include <map>
 
 #include "language/narration.h"
+#include "language/reference.h"
 #include "util/text.h"
 
 namespace apprentice::language {
@@ -136,7 +137,12 @@ std::string whats_left_of_task(const World& w, std::span<const PartLearned> part
 }
 
 std::vector<std::string> where_things_are(const World& w, std::string_view phrase, std::span<const ObjectId> things) {
-  if (things.empty()) return {"I don't see " + std::string(phrase) + " here."};
+  if (things.empty()) {
+    std::string said(phrase);
+    for (std::string_view article : {"the ", "a ", "an ", "my "})
+      if (said.starts_with(article)) said = said.substr(article.size());
+    return {not_seen_message(said, w)};
+  }
   std::vector<std::string> said;
   for (ObjectId o : things) {
     if (said.size() == 3) break;

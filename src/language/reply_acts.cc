@@ -192,9 +192,11 @@ namespace {
 // The answer read without its "too"s, whose things then get the same goal;
 // nullopt when the whole reading already gives others their goals, the
 // answer says several places, or the "too"s add no goal. `notes` gets the
-// notes of that reading.
+// notes of that reading; `whole_kept` is set when the whole reading stood
+// for the words before the "too"s (its notes stand).
 std::optional<Reply> with_the_toos(const Grounder& grounder, const World& world, const ReplyContext& at,
-                                   const std::string& answer, const Reply& whole, std::vector<std::string>& notes) {
+                                   const std::string& answer, const Reply& whole, std::vector<std::string>& notes,
+                                   bool& whole_kept) {
   const auto* whole_goal = std::get_if<GoalGiven>(&whole);
   if (whole_goal != nullptr && !whole_goal->others.empty()) return std::nullopt;
   auto [before_toos, toos] = without_trailing_toos(answer);
@@ -204,6 +206,11 @@ std::optional<Reply> with_the_toos(const Grounder& grounder, const World& world,
   });
   if (toos.empty() || trim(before_toos).empty() || places_said > 1) return std::nullopt;
   Reply first = read_answer(grounder, world, at, before_toos, notes);
+  // ("thats just junk mail, recycle it. newspaper too": read alone, the
+  // words before the "too"s keep the remark the whole reading left out;
+  // that reading, which gave no other thing a goal, is theirs.)
+  whole_kept = !std::holds_alternative<GoalGiven>(first) && whole_goal != nullptr;
+  if (whole_kept) first = whole;
   auto* given = std::get_if<GoalGiven>(&first);
   if (given == nullptr || !given->others.empty()) return std::nullopt;
   add_the_same_for(grounder, world, at, toos, *given);
@@ -479,10 +486,13 @@ ReplyActs read(const Grounder& grounder, const World& world, const ReplyContext&
   // one "too" repeats is not guessed.)
   if (answered && at.asked == Asked::kGoal && at.object) {
     std::vector<std::string> notes;
-    if (auto with_toos = with_the_toos(grounder, world, at, answer_text, reply, notes)) {
+    bool whole_kept = false;
+    if (auto with_toos = with_the_toos(grounder, world, at, answer_text, reply, notes, whole_kept)) {
       reply = std::move(*with_toos);
-      out.notes.resize(notes_before_answer);
-      out.notes.insert(out.notes.end(), notes.begin(), notes.end());
+      if (!whole_kept) {
+        out.notes.resize(notes_before_answer);
+        out.notes.insert(out.notes.end(), notes.begin(), notes.end());
+      }
     }
   }
   // "it goes in the bin, not in the recycling bin", where the recycling

@@ -191,16 +191,21 @@ std::optional<Command> question(const Grounder& grounder, const World& world, co
   const std::string& first = words.front();
   if (first == "why") return Command{Command::Kind::kWhy, join(words, " "), things_asked_why(grounder, world, words), {}};
   if (first == "where" && words.size() > 1 &&
-      is_one_of(words[1], {"is", "are", "did", "does", "do", "has", "have", "was", "were"})) {
+      is_one_of(words[1], {"is", "are", "did", "does", "do", "has", "have", "was", "were", "would", "had"})) {
     Words thing;
     for (std::size_t i = 2; i < words.size(); ++i)
-      if (!is_one_of(words[i], {"you", "it", "go", "put", "gone", "now", "end", "up", "the", "my", "other", "did"}))
+      if (!is_one_of(words[i], {"you", "it", "go", "put", "gone", "now", "end", "up", "the", "my", "other", "did",
+                                "would", "had"}))
         thing.push_back(words[i]);
     if (thing.empty()) return std::nullopt;
     std::string phrase = join(thing, " ");
     ReferenceContext context{world, grounder.lexicon(), std::nullopt};
     context.partial_names = true;
     auto found = candidates_for(NounPhrase{"", thing}, Role::kItem, context);
+    // ("where'd you put the dogs ball": a word nothing is called, before a
+    // name's last word, leaves that word to name the thing.)
+    if (!std::holds_alternative<CandidateSet>(found) && thing.size() > 1)
+      found = candidates_for(NounPhrase{"", {thing.back()}}, Role::kItem, context);
     std::vector<ObjectId> named;
     if (const auto* set = std::get_if<CandidateSet>(&found)) named = set->objects;
     return Command{Command::Kind::kWhere, phrase, named, {}};

@@ -260,8 +260,9 @@ std::vector<Words> split_classes(const Words& words) {
 class SentenceReader {
  public:
   SentenceReader(const World& world, const Lexicon& lexicon, std::optional<ObjectId> object_of_interest,
+                 std::optional<ObjectId> there,
                  RuleReading& reading)
-      : world_(world), lexicon_(lexicon), object_(object_of_interest), reading_(reading) {}
+      : world_(world), lexicon_(lexicon), object_(object_of_interest), there_(there), reading_(reading) {}
 
   void read(const Words& words) {
     std::size_t at = skip_opening(words, 0);
@@ -277,8 +278,12 @@ class SentenceReader {
   std::size_t read_clause(const Words& words, std::size_t start) {
     for (std::size_t p = start; p < words.size(); ++p) {
       Relation relation = Relation::kIn;
-      const std::size_t length = preposition_at(words, p, relation);
-      if (length == 0) continue;
+      std::size_t length = preposition_at(words, p, relation);
+      // "hats and caps go there too": "there" after the verb is the place
+      // named last, with no preposition.
+      const bool there = length == 0 && there_ && words[p] == "there" && p > start && is_linking_word(words[p - 1]);
+      if (there) relation = world_.universe->info(*there_).kind == ObjectKind::kSurface ? Relation::kOn : Relation::kIn;
+      if (length == 0 && !there) continue;
       std::size_t end = p + length;
       while (end < words.size() && !is_separator(words[end])) ++end;
       const Words place_words(words.begin() + static_cast<long>(p + length), words.begin() + static_cast<long>(end));
@@ -330,6 +335,9 @@ class SentenceReader {
   }
 
   std::vector<ObjectId> ground_place(const Words& words) {
+    // "hats go there too": the place named last.
+    if (there_ && (words == Words{"there"} || words == Words{"there", "too"} || words == Words{"over", "there"}))
+      return {*there_};
     std::vector<ObjectId> places = candidates(words);
     // "light ones on the right": the place of the clause before, by its
     // properties alone (not "put the lid back on after").
@@ -406,13 +414,14 @@ class SentenceReader {
   std::optional<ObjectId> object_;
   RuleReading& reading_;
   std::optional<ObjectId> last_place_;
+  std::optional<ObjectId> there_;  // what "there" names
   std::vector<RuleClass> clauses_classes_;  // every class read so far: what "ones" refers to
 };
 
 }  // namespace
 
 std::optional<RuleReading> read_rule(const World& world, const Lexicon& lexicon, std::string_view text,
-                                     std::optional<ObjectId> object_of_interest) {
+                                     std::optional<ObjectId> object_of_interest, std::optional<ObjectId> there) {
   RuleReading reading;
   for (const Words& sentence : sentences_of(text)) {
     // "If the object is a dress then the goal is that the object is in the
@@ -421,7 +430,7 @@ std::optional<RuleReading> read_rule(const World& world, const Lexicon& lexicon,
     for (std::size_t i = 0; i + 2 < sentence.size(); ++i)
       goal_statement = goal_statement || starts_with(sentence, i, {"the", "goal", "is"});
     if (goal_statement) continue;
-    SentenceReader reader(world, lexicon, object_of_interest, reading);
+    SentenceReader reader(world, lexicon, object_of_interest, there, reading);
     reader.read(sentence);
   }
   if (reading.clauses.empty()) return std::nullopt;

@@ -68,9 +68,11 @@ struct RuleReading {
 // clause at all (a plain answer such as "in the basket" or "yes"). Never
 // throws. `lexicon` gives base forms of words and relations between place
 // names ("the bin" for the trash can), as in the rest of the reader;
-// `object_of_interest` is what "it" and "this" name.
+// `object_of_interest` is what "it" and "this" name; `there`, the place
+// "there" names (the place named last).
 std::optional<RuleReading> read_rule(const World& world, const Lexicon& lexicon, std::string_view text,
-                                     std::optional<ObjectId> object_of_interest = std::nullopt);
+                                     std::optional<ObjectId> object_of_interest = std::nullopt,
+                                     std::optional<ObjectId> there = std::nullopt);
 
 // The class as a person says it: "other toys", "heavy items", "everything else".
 std::string say_rule_class(const RuleClass& rule_class);

@@ -82,6 +82,12 @@ TEST(Generation, TaskStructure) {
   EXPECT_EQ(say_answer(false), "no.");
   EXPECT_EQ(article_for("apple-juice"), "an");
   EXPECT_EQ(article_for("ketchup"), "a");
+  // By sound, not spelling: "a unicorn", "a used cup", "a euro coin", "an hour glass".
+  EXPECT_EQ(article_for("unicorn"), "a");
+  EXPECT_EQ(article_for("used-cup"), "a");
+  EXPECT_EQ(article_for("euro-coin"), "a");
+  EXPECT_EQ(article_for("hourglass"), "an");
+  EXPECT_EQ(article_for("umbrella"), "an");
 }
 
 // What the generators say parses and grounds back to what they were given.

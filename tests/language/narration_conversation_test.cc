@@ -58,7 +58,7 @@ TEST(NarrationConversation, WhatIsLeftOfAPartCountsTheThingsThere) {
 
 TEST(NarrationConversation, WhereThingsAreSaysEachOrWhyNot) {
   const World& w = kitchen30().world;
-  EXPECT_EQ(where_things_are(w, "the unicorn", {}), std::vector<std::string>{"I don't see the unicorn here."});
+  EXPECT_EQ(where_things_are(w, "the unicorn", {}), std::vector<std::string>{"I don't see a unicorn here."});
   const std::vector<ObjectId> ketchup = {thing("ketchup1")};
   EXPECT_EQ(where_things_are(w, "the ketchup", ketchup), std::vector<std::string>{"The ketchup is on the table."});
   // At most three things are said, however many the phrase named.
