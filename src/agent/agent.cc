@@ -25,17 +25,6 @@
 
 namespace apprentice {
 
-namespace {
-
-// The thing a goal puts somewhere (the first item it names).
-std::optional<ObjectId> item_placed(const World& world, const Goal& goal) {
-  for (ObjectId o : goal.objects())
-    if (world.universe->info(o).kind == ObjectKind::kItem) return o;
-  return std::nullopt;
-}
-
-}  // namespace
-
 TaskLearningAgent::TaskLearningAgent(AgentOptions options, Knowledge knowledge, Understanding understanding,
                                      KnowledgeStore* store, LlmAdvisor* llm)
     : options_(std::move(options)), knowledge_(std::move(knowledge)), understanding_(std::move(understanding)),
@@ -137,7 +126,15 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::learn_task_name() {
     return stop(Error{ErrorCode::kInvalidInput,
                       "the instructor's replies could not be understood: " + apprentice::quoted(heard->text)});
   begin_lesson(heard->text);
-  const std::string name = std::get<language::TaskNamed>(*heard->reply).name;
+  std::string name = std::get<language::TaskNamed>(*heard->reply).name;
+  // "tidy the office" in a home office, where "tidy home office" is known:
+  // the room named by the last word of its name is the room.
+  const std::string location = to_lower(world().location);
+  if (const auto space = location.rfind(' '); !agent_.knowledge_.find_task(name) && space != std::string::npos)
+    if (const std::string last = location.substr(space); name.ends_with(last)) {
+      const std::string whole = name.substr(0, name.size() - last.size()) + " " + location;
+      if (agent_.knowledge_.find_task(whole)) name = whole;
+    }
   if (const TaskKnowledge* known = agent_.knowledge_.find_task(name)) {
     progress_.task = *known;
     progress_.known_to_do.assign(known->subtasks.begin(), known->subtasks.end());
@@ -157,10 +154,7 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::learn_task_step() {
     if (std::holds_alternative<language::LoopNamed>(r) || std::holds_alternative<language::SubtaskNamed>(r))
       return std::nullopt;
     // "the notebook goes on the bookshelf": a correction of a kind taught.
-    if (const auto* given = std::get_if<language::GoalGiven>(&r)) {
-      const std::optional<ObjectId> thing = item_placed(world(), given->goal);
-      if (thing && !goals_corrected_by(*thing).empty()) return std::nullopt;
-    }
+    if (thing_corrected(r)) return std::nullopt;
     // "we're done" before any part of the task was taught would end the
     // lesson having learned nothing, and call the task learned.
     if (std::holds_alternative<language::Finished>(r))
@@ -187,7 +181,7 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::learn_task_step() {
   }
   if (const auto* subtask = std::get_if<language::SubtaskNamed>(&reply)) return start_subtask(*subtask);
   if (const auto* given = std::get_if<language::GoalGiven>(&reply))
-    return correct_goal(*item_placed(world(), given->goal), *given, heard->text);
+    if (const std::optional<ObjectId> thing = thing_corrected(reply)) return correct_goal(*thing, *given, heard->text);
   if (std::holds_alternative<language::Finished>(reply)) {
     progress_.finishing = true;
     say(language::read_back_task_done(progress_.current.has_value()));

@@ -8,6 +8,7 @@
 
 #include "agent/class_rule_knowledge.h"
 #include "agent/explanation.h"
+#include "agent/teacher_questions.h"
 #include "agent/goal_proposals.h"
 #include "agent/session.h"
 #include "knowledge/goal_memory.h"
@@ -62,26 +63,13 @@ language::ReplyContext TaskLearningAgent::Session::context(language::Asked asked
       if (o != object && still_to_come(o)) c.still_to_come.push_back(o);
   c.dealt_with = progress_.evaluated_order;
   c.goal_of_kind = [this](const std::string& kind, ObjectId thing) -> std::optional<Goal> {
-    const GoalKnowledge* known = goal_known_for(kind, thing);
+    const GoalKnowledge* known = goal_known_for(so_far(), kind);
     if (known == nullptr) return std::nullopt;
     return instantiate_goal(world(), *known, thing);
   };
   return c;
 }
 
-const GoalKnowledge* TaskLearningAgent::Session::goal_known_for(const std::string& kind, ObjectId thing) const {
-  const GoalKnowledge* known = nullptr;
-  if (progress_.current) {
-    GoalKey key = goal_key(thing);
-    key.category = kind;
-    known = agent_.knowledge_.goals.find(key);
-  }
-  for (const GoalKnowledge& g : agent_.knowledge_.goals.all())
-    if (known == nullptr && g.key.category == kind && g.key.task == progress_.task.name) known = &g;
-  for (const GoalKnowledge& g : agent_.knowledge_.goals.all())
-    if (known == nullptr && g.key.category == kind) known = &g;
-  return known;
-}
 
 void TaskLearningAgent::Session::say(const std::string& statement, Voice voice) {
   conversation_.say(statement, voice);
@@ -292,7 +280,7 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::obey(const language
     case language::Command::Kind::kQuit: return stop(Error{ErrorCode::kCancelled, "the instructor quit"});
     case language::Command::Kind::kWhatsLeft: answer_whats_left(); return {};
     case language::Command::Kind::kWhere: answer_where(command); return {};
-    case language::Command::Kind::kWhy: answer_why(command.things); return {};
+    case language::Command::Kind::kWhy: say(answer_why(so_far(), command.things), Voice::kResponse); return {};
     case language::Command::Kind::kDo: do_now(command.actions); return {};
   }
   return {};
@@ -349,65 +337,8 @@ void TaskLearningAgent::Session::answer_where(const language::Command& command) 
     say(line, Voice::kResponse);
 }
 
-bool TaskLearningAgent::Session::answer_why_about(ObjectId named) {
-  const World& w = world();
-  const ObjectInfo& info = w.universe->info(named);
-  if (info.kind == ObjectKind::kItem) {
-    if (was_left_as_told(named)) {
-      say(language::left_as_told(w, named), Voice::kResponse);
-      return true;
-    }
-    const GoalKnowledge* known = goal_known_for(info.category, named);
-    std::optional<Goal> goal = known ? instantiate_goal(w, *known, named) : std::nullopt;
-    if (!goal) return false;
-    const std::string& source = known->provenance.source;
-    const bool decided = (source.starts_with("decision: ") || source.starts_with("analogy: ") ||
-                          source.starts_with("fleet: ")) &&
-                         !source.ends_with("(confirmed)");
-    say(decided ? language::because_i_decided(w, named, explain_source(source))
-                : language::because_goal_from(w, named, *goal, explain_source(source)),
-        Voice::kResponse);
-    return true;
-  }
-  if (!w.state.holds(Fact(w.vocabulary.openable, {named}))) return false;
-  // A door: open because a goal of a thing in it says to leave it so.
-  const bool closed = w.state.holds(Fact(w.vocabulary.closed, {named}));
-  std::optional<std::pair<ObjectId, std::string>> left_open;
-  for (ObjectId thing : w.universe->of_kind(ObjectKind::kItem)) {
-    if (closed || left_open || language::place_of(w, thing) != named) continue;
-    const GoalKnowledge* known = goal_known_for(w.universe->info(thing).category, thing);
-    if (known == nullptr) continue;
-    std::optional<Goal> goal = instantiate_goal(w, *known, thing);
-    if (goal && std::any_of(goal->literals.begin(), goal->literals.end(), [&](const Literal& l) {
-          return !l.positive && l.fact == Fact(w.vocabulary.closed, {named});
-        }))
-      left_open = std::make_pair(thing, explain_source(known->provenance.source));
-  }
-  say(language::why_door_is(w, named, closed, left_open), Voice::kResponse);
-  return true;
-}
-
-void TaskLearningAgent::Session::answer_why(const std::vector<ObjectId>& named) {
-  // "why did you put the glove in the right basket": the first thing named
-  // that the agent knows a goal of (or a door named) is the answer's.
-  for (ObjectId thing : named)
-    if (answer_why_about(thing)) return;
-  // The last goal learned came from the agent's own decision (a rule said,
-  // things alike), not from the teacher's last reply: say so, and from what.
-  if (progress_.last_goal && !progress_.evaluated_order.empty())
-    if (const GoalKnowledge* last = agent_.knowledge_.goals.find(*progress_.last_goal)) {
-      const std::string& source = last->provenance.source;
-      const bool decided = (source.starts_with("decision: ") || source.starts_with("analogy: ") ||
-                            source.starts_with("fleet: ")) &&
-                           !source.ends_with("(confirmed)");
-      const ObjectId placed = progress_.evaluated_order.back();
-      if (decided && world().universe->info(placed).category == last->key.category) {
-        say(language::because_i_decided(world(), placed, explain_source(source)), Voice::kResponse);
-        return;
-      }
-    }
-  const std::string* last = lessons_.last_reply();
-  say(last == nullptr ? language::why_without_a_reply() : language::because_of_last_reply(*last), Voice::kResponse);
+TeachingSoFar TaskLearningAgent::Session::so_far() const {
+  return TeachingSoFar{world(), agent_.knowledge_.goals, progress_, lessons_.last_reply()};
 }
 
 void TaskLearningAgent::Session::do_now(const std::vector<Action>& actions) {

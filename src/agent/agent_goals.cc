@@ -172,11 +172,26 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
   // sock): that goal is learned for its kind, and the question comes again.
   for (;;) {
     std::optional<ObjectId> ahead;
+    // "actually the kneeling pad should hang on the left hook", asked about
+    // another thing: a correction of a thing already dealt with, made, and
+    // the question asked again.
+    std::optional<ObjectId> corrected;
     auto heard = converse(
         asked, context(language::Asked::kGoal, object),
-        [&](const language::Reply& r) { return why_not_a_goal_for(object, r, ahead); },
+        [&](const language::Reply& r) -> std::optional<std::string> {
+          corrected = thing_corrected(r);
+          if (corrected && *corrected != object) return std::nullopt;
+          corrected.reset();
+          return why_not_a_goal_for(object, r, ahead);
+        },
         [&](const std::string& text) { return goal_for_another(object, text); });
     if (!heard) return tl::unexpected(heard.error());
+    if (corrected && heard->reply) {
+      begin_lesson(heard->text);
+      if (auto s = correct_goal(*corrected, std::get<language::GoalGiven>(*heard->reply), heard->text); !s)
+        return tl::unexpected(s.error());
+      continue;
+    }
     if (heard->rule_heard) {
       // A person's rule said instead of where this thing goes: it is
       // weighed with the other sources first (it may place the thing, or
@@ -398,6 +413,15 @@ std::vector<GoalKey> TaskLearningAgent::Session::goals_corrected_by(ObjectId obj
   for (ObjectId o : progress_.evaluated) dealt_with = dealt_with || world().universe->info(o).category == kind;
   if (!dealt_with) keys.clear();
   return keys;
+}
+
+std::optional<ObjectId> TaskLearningAgent::Session::thing_corrected(const language::Reply& reply) const {
+  const auto* given = std::get_if<language::GoalGiven>(&reply);
+  if (given == nullptr) return std::nullopt;
+  for (ObjectId o : given->goal.objects())
+    if (world().universe->info(o).kind == ObjectKind::kItem)
+      return goals_corrected_by(o).empty() ? std::nullopt : std::optional<ObjectId>(o);
+  return std::nullopt;
 }
 
 TaskLearningAgent::Session::Step TaskLearningAgent::Session::correct_goal(ObjectId object,

@@ -20,6 +20,7 @@
 #include "agent/goal_sources.h"
 #include "agent/lessons.h"
 #include "agent/own_actions.h"
+#include "agent/teacher_questions.h"
 #include "knowledge/decision.h"
 #include "language/reply.h"
 
@@ -165,6 +166,9 @@ class TaskLearningAgent::Session {
   // whose goal it corrects, those learned in this task; none when no thing
   // of its kind was dealt with yet.
   std::vector<GoalKey> goals_corrected_by(ObjectId object) const;
+  // The thing already dealt with whose goal `reply` corrects ("the notebook
+  // goes on the bookshelf"), or nullopt.
+  std::optional<ObjectId> thing_corrected(const language::Reply& reply) const;
   // Learns the corrected goal for each of those keys and moves the things
   // of the kind already dealt with to where it now says (agent_goals.cc).
   Step correct_goal(ObjectId object, const language::GoalGiven& said, const std::string& text);
@@ -295,16 +299,8 @@ class TaskLearningAgent::Session {
   void answer_whats_left();
   std::string whats_left_of_task() const;
   void answer_where(const language::Command& command);
-  // "why did you do that?": the last lesson, or the agent's own decision.
-  // With things named ("why did you put the glove in the right basket?",
-  // "why is the closet still open?"): the goal of the first that has one
-  // and where it came from, or why a door named is as it is.
-  void answer_why(const std::vector<ObjectId>& named);
-  // Says why about one thing or door; false when there is nothing to say.
-  bool answer_why_about(ObjectId named);
-  // The goal known for things of `kind` like `thing`: the current part's,
-  // else this task's, else any.
-  const GoalKnowledge* goal_known_for(const std::string& kind, ObjectId thing) const;
+  // What the teacher's "why?" reads (agent/teacher_questions.h).
+  TeachingSoFar so_far() const;
   void do_now(const std::vector<Action>& actions);
 };
 

@@ -306,15 +306,20 @@ namespace {
 // name's words in turn, the last one maybe plural ("sticky notes"); none
 // when they name no kind or several.
 // A name said in part counts when no kind is named whole: its last words
-// ("the leash" for the dog leash), when they fit one kind only.
+// ("the leash" for the dog leash). Of several kinds named, the one named
+// first ("the stapler belongs in the bottom drawer with the headset").
 std::optional<std::string> the_kind_named(const World& world, const std::vector<std::string>& words) {
-  // The kinds whose names' parts from `first` on are said in a row.
-  auto named_from = [&](std::size_t first) {
+  for (std::size_t first = 0; first < 3; ++first) {
+    // Where each kind's name, from its part `first` on, is first said; the
+    // longest name wins where two begin at one word.
+    std::optional<std::size_t> at;
+    std::size_t longest = 0;
     std::set<std::string> named;
+    std::set<std::string> seen;
     for (ObjectId o : world.universe->of_kind(ObjectKind::kItem)) {
       const std::string& category = world.universe->info(o).category;
       const std::vector<std::string> whole = name_parts(category);
-      if (first >= whole.size() || named.count(category)) continue;
+      if (first >= whole.size() || !seen.insert(category).second) continue;
       const std::vector<std::string> parts(whole.begin() + static_cast<std::ptrdiff_t>(first), whole.end());
       for (std::size_t i = 0; i + parts.size() <= words.size(); ++i) {
         bool match = true;
@@ -322,16 +327,17 @@ std::optional<std::string> the_kind_named(const World& world, const std::vector<
           const std::string& w = words[i + k];
           match = w == parts[k] || (k + 1 == parts.size() && (w == parts[k] + "s" || w == parts[k] + "es"));
         }
-        if (match) {
+        if (!match) continue;
+        if (!at || i < *at || (i == *at && parts.size() > longest)) {
+          at = i;
+          longest = parts.size();
+          named = {category};
+        } else if (i == *at && parts.size() == longest) {
           named.insert(category);
-          break;
         }
+        break;
       }
     }
-    return named;
-  };
-  for (std::size_t first = 0; first < 3; ++first) {
-    const std::set<std::string> named = named_from(first);
     if (named.size() == 1) return *named.begin();
     if (named.size() > 1) return std::nullopt;
   }
@@ -363,10 +369,15 @@ std::vector<std::string> without_places_said_not(const std::vector<std::string>&
 std::optional<GoalGiven> goal_said_at_a_step(const Grounder& grounder, const World& world,
                                              const ReplyContext& context, std::string_view text, bool dealt_with) {
   const std::vector<std::string> words = reply_words(text);
-  if (std::none_of(words.begin(), words.end(), [](const std::string& w) {
-        return is_one_of(w, {"go", "goes", "belong", "belongs", "belonged", "put", "move", "moved", "lives", "live"});
-      }))
-    return std::nullopt;
+  // ("the mug should be on the desk", "the pad should hang on the left
+  // hook": "be" after a modal, and verbs of resting, place too.)
+  bool placing = false;
+  for (std::size_t i = 0; i < words.size(); ++i)
+    placing = placing ||
+              is_one_of(words[i], {"go", "goes", "belong", "belongs", "belonged", "put", "move", "moved", "lives", "live",
+                                   "hang", "hangs", "sit", "sits", "stay", "stays"}) ||
+              (words[i] == "be" && i > 0 && is_one_of(words[i - 1], {"should", "must", "to", "can", "could", "would"}));
+  if (!placing) return std::nullopt;
   std::optional<std::string> kind = the_kind_named(world, words);
   if (!kind) return std::nullopt;
   // A thing of that kind already dealt with: the one put somewhere the
@@ -382,6 +393,7 @@ std::optional<GoalGiven> goal_said_at_a_step(const Grounder& grounder, const Wor
   ReplyContext as_goal = context;
   as_goal.asked = Asked::kGoal;
   as_goal.object = thing;
+  as_goal.dealt_with.clear();  // read as the thing's own goal, never as another correction
   Reply read = read_reply(grounder, world, as_goal, text);
   // "the magazine goes on the shelf not in the recycling bin": where it
   // does not go says nothing more here.
@@ -419,6 +431,10 @@ Reply read_reply(const Grounder& grounder, const World& world, const ReplyContex
   if (context.asked != Asked::kGoal) return reply;
   reply = read_goal_reply(grounder, world, context, text, std::move(reply));
   like_the_goal_referred_to(grounder, world, context, text, reply);
+  // "actually the kneeling pad should hang on the left hook", asked about
+  // another thing: where a thing already dealt with now goes.
+  if (std::holds_alternative<Unusable>(reply) && !context.dealt_with.empty())
+    if (auto corrected = goal_said_at_a_step(grounder, world, context, text, true)) return *corrected;
   return reply;
 }
 

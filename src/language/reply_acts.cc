@@ -277,6 +277,10 @@ ReplyActs read(const Grounder& grounder, const World& world, const ReplyContext&
     // with a word that is also a filler is the answer.)
     const bool yes_or_no_said = context.asked == Asked::kYesNo && answer_prefix(s.words);
     if (without_interjections(s.words).empty() && answer.empty() && before.empty() && !yes_or_no_said) continue;
+    // "fair enough", "got it", "makes sense": an acknowledgement, no answer.
+    if (is_one_of(quoted_words(without_interjections(s.words)), {"fair enough", "got it", "makes sense", "sounds good",
+                                                                   "no problem", "all good", "my bad"}))
+      continue;
     // "forget it. floor next": never mind, before more; no "forget" command.
     const Words said = without_interjections(s.words);
     if (parts.size() > 1 && (said == Words{"forget", "it"} || said == Words{"forget", "that"} ||
@@ -347,7 +351,14 @@ ReplyActs read(const Grounder& grounder, const World& world, const ReplyContext&
     // not part of the answer. A marker said last corrects nothing.
     if (!answer.empty() || !doors.empty()) {
       Marker m = marker(s.words);
-      if (m.length > 0 && m.strong && (m.length < s.words.size() || i + 1 < parts.size())) {
+      // ("top drawer. sorry, typo": a marker with nothing after it but
+      // words that carry nothing corrects nothing.)
+      const bool said_after =
+          m.length < s.words.size() || std::any_of(parts.begin() + static_cast<std::ptrdiff_t>(i) + 1, parts.end(),
+                                                   [](const Segment& later) {
+                                                     return !without_interjections(later.words).empty();
+                                                   });
+      if (m.length > 0 && m.strong && said_after) {
         // ("first shut the top drawer... no wait it's already shut": the
         // action said before the marker is taken back too.)
         std::vector<const Segment*> left_out = doors;
@@ -430,9 +441,24 @@ ReplyActs read(const Grounder& grounder, const World& world, const ReplyContext&
     const bool names_asked =
         context.object && world.universe->info(*context.object).category != world.universe->info(last).category &&
         names(*context.object);
-    if (names_asked && !names(last) && !(last_place && names(*last_place))) {
+    // ("actually the gloves should hang on the right hook", asked about
+    // the hose after the twine: about a third thing already dealt with,
+    // which the reply's reading takes as its own correction.)
+    // (By the last word of its name, "the gloves" for gardening gloves:
+    // the words of "half and half" are no name alone.)
+    bool names_another = false;
+    for (ObjectId o : context.dealt_with) {
+      const std::string& kind = world.universe->info(o).category;
+      const std::string head = name_parts(kind).back();
+      const bool said = std::find(all.begin(), all.end(), head) != all.end() ||
+                        std::find(all.begin(), all.end(), head + "s") != all.end();
+      if (kind != world.universe->info(last).category &&
+          (!context.object || kind != world.universe->info(*context.object).category) && said)
+        names_another = true;
+    }
+    if ((names_asked || names_another) && !names(last) && !(last_place && names(*last_place))) {
       correcting = false;
-      weak = true;
+      weak = names_asked;  // the marker said of a third thing needs no note
     }
   }
   if (weak && !correcting && !marker_said.empty()) out.notes.push_back("I took " + quote(marker_said) + " as a filler.");

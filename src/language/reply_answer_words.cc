@@ -132,13 +132,22 @@ Reply read_answer(const Grounder& grounder, const World& world, const ReplyConte
   }
   if (!usable(reply)) {
     // "in the cupbord": asked back with the name it may be a slip of.
+    // ("filing cabnet with the papers", "top drawr": the reader may fail
+    // elsewhere first; any word no one knows that is a slip of a name here
+    // is asked about.)
     const auto* u = std::get_if<Unusable>(&first);
-    if (u != nullptr && u->failure && u->failure->kind == FailureKind::kUnknownWord)
-      if (std::string name = slip_of(world, u->failure->detail); !name.empty()) {
-        Unusable asked = *u;
-        asked.reason = "I do not know the word " + quote(u->failure->detail) + ". Did you mean " + quote(name) + "?";
-        return asked;
-      }
+    if (u != nullptr) {
+      std::vector<std::string> said = {};
+      if (u->failure && u->failure->kind == FailureKind::kUnknownWord) said.push_back(u->failure->detail);
+      for (const std::string& w : reply_words(text))
+        if (grounder.lexicon().has_wordnet() && !grounder.lexicon().knows(w)) said.push_back(w);
+      for (const std::string& word : said)
+        if (std::string name = slip_of(world, word); !name.empty()) {
+          Unusable asked = *u;
+          asked.reason = "I do not know the word " + quote(word) + ". Did you mean " + quote(name) + "?";
+          return asked;
+        }
+    }
     return first;
   }
   for (const std::string& word : skipped) notes.push_back("I took " + quote(word) + " as a filler.");

@@ -67,7 +67,10 @@ class EventReader {
             if (failure) return as_events(std::move(*failure));
             events.push_back(same);
           }
-          events.push_back(*event);
+          // ("rake and shovel, they all go on the lower shelf": "they" is
+          // the things waiting, not the thing asked about.)
+          const bool pronoun = (clause.subject && clause.subject->pronoun) || (clause.object && clause.object->pronoun);
+          if (waiting.empty() || !pronoun || event->item_named) events.push_back(*event);
           if (!waiting.empty()) unplaced_ = unplaced_before_waiting;  // "put the plates" has its place now
           waiting.clear();
         }
@@ -127,13 +130,22 @@ class EventReader {
       failure = Problem{"Which thing do you mean? Please name it.", std::nullopt};
       return std::nullopt;
     }
+    // "the candy wrapper is trash, it goes in the wastebasket": "it" after
+    // another thing was named is that thing.
+    if (chunk->pronoun && chunk->words.empty() && other_named_) {
+      named = true;
+      return other_named_;
+    }
     Choice choice = resolver_.choose(*chunk, Role::kItem);
     if (const auto* id = std::get_if<ObjectId>(&choice); id && (*id == in_.context.object || !in_.context.object))
       return *id;
     // A name that fits the object asked about in other words ("the paper"
     // for the newspaper) is about it.
     if (in_.context.asked == Asked::kGoal && resolver_.fits_asked(*chunk)) return *in_.context.object;
-    if (const auto* id = std::get_if<ObjectId>(&choice)) return *id;
+    if (const auto* id = std::get_if<ObjectId>(&choice)) {
+      if (!chunk->pronoun) other_named_ = *id;
+      return *id;
+    }
     // A goal names the object asked about; look-alikes of another kind do
     // not make the reply ambiguous, only not about it.
     if (const auto* ambiguous = std::get_if<Ambiguous>(&choice); ambiguous && in_.context.asked == Asked::kGoal)
@@ -366,6 +378,9 @@ class EventReader {
   const Clause* clause_ = nullptr;
   std::vector<std::string> unknown_verbs_;
   bool unplaced_ = false;
+  // The last thing named that is not the one asked about: what "it" names
+  // after it.
+  std::optional<ObjectId> other_named_;
 };
 
 std::string said(const ReplyInput& in) { return quoted_words(in.words); }

@@ -172,6 +172,16 @@ std::optional<Reply> goal_like_another(const Grounder& grounder, const World& wo
         c.goal_of_kind && c.goal_of_kind(form, *c.object))
       kinds = {form};
   if (kinds.size() != 1) return std::nullopt;
+  // "the highlighter goes with the pens", asked about the folder: what
+  // becomes of another thing, not of this one.
+  if (!same.subject.empty() && !is_one_of(same.subject, {"it", "this", "that", "this one", "that one", "they", "these"})) {
+    const std::vector<ObjectId> said = may_name(grounder, world, same.subject);
+    if (!said.empty() && std::none_of(said.begin(), said.end(), [&](ObjectId o) {
+          return kind_of(world, o) == kind_of(world, *c.object);
+        }))
+      return asked_back(world, c, "That says what becomes of " + spoken_name(world, said.front()) +
+                                      ", but I asked about " + spoken_name_and_location(world, *c.object) + ".");
+  }
   std::optional<Goal> goal;
   if (c.goal_of_kind) goal = c.goal_of_kind(kinds.front(), *c.object);
   if (!goal && c.last_goal && kind_of(world, c.last_goal->object) == kinds.front()) goal = given_last_for(c, *c.object);

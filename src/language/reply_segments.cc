@@ -20,7 +20,7 @@ bool is_interjection(std::string_view w) {
                        "please", "right", "anyway", "yeah", "ah", "aha", "ooh", "argh", "gosh", "jeez", "omg", "idk",
                        "lemme", "see", "thanks", "thank", "you", "cheers", "sorry", "mate", "buddy", "kk", "ew", "eww",
                        "ewww", "yuck", "ick", "god", "geez", "wow", "damn", "duh", "obv", "obviously", "dude", "pfft",
-                       "meh", "ha", "lmao", "tho", "though"});
+                       "meh", "ha", "lmao", "tho", "though", "typo", "typos", "autocorrect", "huh", "hmph"});
 }
 
 // The words of a correction's marker: "no wait", "oops", "nah", "wait what"
@@ -330,16 +330,24 @@ std::optional<std::vector<Action>> door_action(const Grounder& grounder, const W
   const bool about_steps = context.asked == Asked::kTaskStep || context.asked == Asked::kSubtaskEnd;
   // So is a door's state said with "should be" ("the wardrobe should be
   // closed", "the closet needs to be shut").
-  if (about_steps && words.size() >= 3 && says_door_state(words.back())) {
-    const bool open_said = is_one_of(words.back(), {"open", "opened"});
+  // What follows the state says when or why ("leave the cabinet open for
+  // now", "keep the cupboard open this time i'm gonna put stuff in it").
+  const auto state = std::find_if(words.begin() + (words.empty() ? 0 : 1), words.end(),
+                                  [](const std::string& w) { return says_door_state(w); });
+  const bool when_or_why_after =
+      state != words.end() &&
+      (state + 1 == words.end() || is_one_of(*(state + 1), {"for", "this", "now", "till", "until", "so", "because",
+                                                            "cause", "i", "we", "while", "as", "today", "please"}));
+  if (about_steps && words.size() >= 3 && when_or_why_after) {
+    const bool open_said = is_one_of(*state, {"open", "opened"});
     Words object;
     if (is_one_of(words.front(), {"leave", "keep"})) {
-      object = Words(words.begin() + 1, words.end() - 1);
-    } else if (words[words.size() - 2] == "be") {
-      auto modal = std::find_if(words.begin(), words.end(), [](const std::string& w) {
+      object = Words(words.begin() + 1, state);
+    } else if (*(state - 1) == "be") {
+      auto modal = std::find_if(words.begin(), state, [](const std::string& w) {
         return is_one_of(w, {"should", "must", "needs", "need", "has", "have", "ought", "can"});
       });
-      if (modal != words.end() && modal != words.begin()) object = Words(words.begin(), modal);
+      if (modal != state && modal != words.begin()) object = Words(words.begin(), modal);
     }
     if (!object.empty()) {
       words = std::move(object);

@@ -79,7 +79,9 @@ std::size_t skip_opening(const Words& words, std::size_t at) {
       {"i", "would", "like", "you", "to"}, {"could", "you"}, {"can", "you"}, {"would", "you"}, {"you", "should"},
       {"you", "can"}, {"go", "ahead", "and"}, {"make", "sure"}, {"i", "like", "to"}, {"i", "prefer", "to"},
       {"we"}, {"i"}, {"first"}, {"finally"}, {"lastly"}, {"next"}, {"from", "now", "on"}, {"in", "the", "future"},
-      {"in", "future"}, {"going", "forward"}, {"for", "future", "reference"}, {","}};
+      {"in", "future"}, {"going", "forward"}, {"for", "future", "reference"}, {"as", "a", "general", "rule"},
+      {"as", "a", "rule"}, {"rule", "of", "thumb"}, {"in", "general"}, {"on", "second", "thought"},
+      {"fair", "enough"}, {","}, {":"}};
   static const std::vector<std::vector<std::string_view>> kVerbs = {
       {"throw", "away"}, {"throw", "out"}, {"hang", "up"}, {"put", "away"}, {"put"}, {"place"}, {"store"},
       {"keep"}, {"move"}, {"throw"}, {"toss"}, {"leave"}, {"hang"}, {"set"}, {"stack"}, {"file"}, {"arrange"},
@@ -145,7 +147,8 @@ bool is_linking_word(const std::string& word) {
                           "should", "must", "can", "could", "will", "would", "be", "are", "is", "get", "gets",
                           "kept", "stored", "placed", "put", "stay", "stays", "live", "lives", "belong", "belongs",
                           "need", "needs", "to", "sit", "sits", "do", "does", "also", "too", "all", "both",
-                          "away", "up", "down", "back", "neatly", "only", "please"});
+                          "away", "up", "down", "back", "neatly", "only", "please", "hang", "hangs", "sit", "lie",
+                          "lies"});
 }
 
 std::string base_form(const Lexicon& lexicon, const std::string& word) {
@@ -285,7 +288,12 @@ class SentenceReader {
       if (there) relation = world_.universe->info(*there_).kind == ObjectKind::kSurface ? Relation::kOn : Relation::kIn;
       if (length == 0 && !there) continue;
       std::size_t end = p + length;
-      while (end < words.size() && !is_separator(words[end])) ++end;
+      while (end < words.size() && !is_separator(words[end]) && words[end] != "not") ++end;
+      // "in the wastebasket not the filing cabinet": where it does not go
+      // is no place of the clause, nor a clause of its own.
+      std::size_t next = end;
+      if (next < words.size() && words[next] == "not")
+        while (next < words.size() && !is_separator(words[next])) ++next;
       const Words place_words(words.begin() + static_cast<long>(p + length), words.begin() + static_cast<long>(end));
       if (place_words.empty()) continue;
       std::vector<ObjectId> places = ground_place(place_words);
@@ -301,7 +309,7 @@ class SentenceReader {
       } else {
         add_clause(class_part, relation, std::move(places), text);
       }
-      return end;
+      return next;
     }
     // No place: what is left is not a clause.
     const Words rest(words.begin() + static_cast<long>(start), words.end());
@@ -371,12 +379,17 @@ class SentenceReader {
     return places;
   }
 
-  void add_clause(const Words& class_part, Relation relation, std::vector<ObjectId> places, const std::string& text) {
+  void add_clause(const Words& said_part, Relation relation, std::vector<ObjectId> places, const std::string& text) {
     RuleClause clause;
     clause.text = text;
     clause.relation = relation;
     clause.places = std::move(places);
-    const std::vector<Words> parts = split_classes(class_part);
+    const std::optional<Words> class_part = class_phrase(said_part);
+    if (!class_part) {
+      reading_.not_understood.push_back(text);
+      return;
+    }
+    const std::vector<Words> parts = split_classes(*class_part);
     if (parts.size() == 1) clause.thing = particular_thing(parts.front());
     for (const Words& part : parts) {
       ClassWords said = strip_class(part);
@@ -391,8 +404,47 @@ class SentenceReader {
       reading_.not_understood.push_back(text);
       return;
     }
-    if (clause.classes.empty()) clause.classes.push_back(RuleClass{join(class_part, " "), "", {}, false});
+    if (clause.classes.empty()) clause.classes.push_back(RuleClass{join(*class_part, " "), "", {}, false});
     reading_.clauses.push_back(std::move(clause));
+  }
+
+  // The words that name the clause's things, without what people say
+  // before them ("hmm the mug", "noo the folder", "i already said the hoe",
+  // "now fix the candy wrapper": the mug, the folder, the hoe, the candy
+  // wrapper); nullopt when they hold a pronoun after a verb ("coil it"),
+  // which names no class.
+  static std::optional<Words> class_phrase(Words words) {
+    // "fix the candy wrapper, it goes ...": "it" after a comma is what was
+    // named before it.
+    for (std::size_t i = 0; i + 1 < words.size(); ++i)
+      if (words[i] == "," && is_one_of(words[i + 1], {"it", "they", "them", "that", "those"})) {
+        words.resize(i);
+        break;
+      }
+    auto drop_front = [&](std::size_t n) { words.erase(words.begin(), words.begin() + static_cast<long>(n)); };
+    for (bool more = true; more && !words.empty();) {
+      more = false;
+      // "i already said", "i meant", "i think": what the teacher says of
+      // their words, within the first few.
+      for (std::size_t i = 0; i < std::min<std::size_t>(words.size(), 3); ++i)
+        if (is_one_of(words[i], {"said", "mean", "meant", "think", "guess"}) && i + 1 < words.size()) {
+          drop_front(i + 1);
+          more = true;
+          break;
+        }
+      if (!words.empty() && words.size() > 1 && !is_determiner(words.front()) && names_no_class(words.front())) {
+        drop_front(1);
+        more = true;
+      }
+    }
+    // "fix the candy wrapper": a verb before a determiner.
+    if (words.size() > 2 && !is_determiner(words[0]) && !is_one_of(words[0], {"all", "both", "half", "rest"}) &&
+        is_one_of(words[1], {"the", "my", "this", "that", "these", "those", "your", "our"}))
+      drop_front(1);
+    const bool pronoun_after = std::any_of(words.begin() + (words.empty() ? 0 : 1), words.end(),
+                                           [](const std::string& w) { return is_one_of(w, {"it", "them"}); });
+    if (words.empty() || pronoun_after) return std::nullopt;
+    return words;
   }
 
   // "it", "this", "the sweater" (one thing here of that name): a particular

@@ -49,6 +49,7 @@ bool names_no_kind(std::string_view phrase) {
 SameAs read_same_as(std::string_view reply) {
   std::string said = plain_reply(reply);
   std::string other;
+  std::string subject;
   // "with the stapler", "in with the pens", "put it with the mugs": where
   // that thing went, said by the thing.
   for (std::string_view lead : {"with ", "in with ", "on with ", "put it with ", "put it in with ", "put them with ",
@@ -59,6 +60,17 @@ SameAs read_same_as(std::string_view reply) {
     std::size_t at = said.find(marker);
     if (at == std::string::npos) continue;
     other = said.substr(at + marker.size());
+    if (marker == "goes with " || marker == "go with ") {
+      subject = std::string(trim(said.substr(0, at)));
+    } else if (marker == "like " || marker == "just like ") {
+      // "leaves go in the trash like the weeds": what goes, before its verb.
+      const std::string before = " " + said.substr(0, at);
+      for (std::string_view verb : {" goes ", " go ", " belong ", " belongs ", " should ", " need ", " needs "})
+        if (std::size_t v = before.find(verb); v != std::string::npos) {
+          subject = std::string(trim(std::string_view(before).substr(0, v)));
+          break;
+        }
+    }
     break;
   }
   std::size_t cut = other.size();
@@ -71,7 +83,7 @@ SameAs read_same_as(std::string_view reply) {
     if (more.starts_with(lead)) more = std::string(trim(more.substr(lead.size())));
   for (std::string_view tail : {" goes", " go", " went", " did", " does"})
     if (other.size() > tail.size() && other.ends_with(tail)) other.resize(other.size() - tail.size());
-  return {without_article(std::move(other)), more};
+  return {without_article(std::move(other)), more, without_article(std::move(subject))};
 }
 
 std::optional<std::string> read_same_again(std::string_view reply) {

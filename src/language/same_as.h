@@ -21,6 +21,9 @@ namespace apprentice::language {
 struct SameAs {
   std::string other;
   std::string more;
+  // What is said to go like the other, where a reply names it: "the
+  // highlighter" in "the highlighter goes with the pens"; "" otherwise.
+  std::string subject = {};
 };
 SameAs read_same_as(std::string_view reply);
 

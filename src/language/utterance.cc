@@ -92,7 +92,25 @@ const std::array<std::pair<std::string_view, std::string_view>, 28> kShorthand{{
     {"rn", "right now"},      {"cuz", "because"},      {"bc", "because"},       {"tmrw", "tomorrow"},
 }};
 
+// A word said long for feeling ("noo", "yesss", "okkk", "sooo"): the word.
+std::string_view without_drawl(std::string_view word) {
+  auto only = [&](std::string_view head, char last) {
+    if (word.size() <= head.size() + 1 || !word.starts_with(head)) return false;
+    return std::all_of(word.begin() + static_cast<long>(head.size()), word.end(), [&](char c) { return c == last; });
+  };
+  if (only("n", 'o')) return "no";
+  if (only("ye", 's')) return "yes";
+  if (only("yea", 'h')) return "yeah";
+  if (only("o", 'k')) return "ok";
+  if (only("nop", 'e')) return "nope";
+  return word;
+}
+
 void expand(const std::string& word, const std::string& next, std::vector<std::string>& out) {
+  if (std::string_view plain = without_drawl(word); plain != word) {
+    out.emplace_back(plain);
+    return;
+  }
   // "ill take it down later", "ill do it": I'll, before a verb of doing.
   if (word == "ill" && is_one_of(next, {"take", "do", "put", "get", "deal", "sort", "move", "handle", "grab", "bring",
                                         "be", "finish", "clean", "wash", "use", "wear", "leave", "need", "keep", "fix"})) {
@@ -155,6 +173,7 @@ void expand_shorthand(std::vector<std::string>& words) {
   std::vector<std::string> out;
   out.reserve(words.size());
   for (std::string& word : words) {
+    word = std::string(without_drawl(word));
     const auto* written = std::find_if(kShorthand.begin(), kShorthand.end(), [&](const auto& entry) { return entry.first == word; });
     if (written == kShorthand.end()) {
       out.push_back(std::move(word));

@@ -256,5 +256,39 @@ TEST_F(RuleReader, WhichOfTheLookAlikesIsAskedByName) {
   EXPECT_EQ(ask_which_place_of(world(), rule->clauses[2]), std::nullopt);
 }
 
+
+// Found by fresh users (stop 37, second pair): what people say before the
+// things was kept as a class ("hmm the mug", "noo the folder", "already
+// said the hoe", "as a general rule hand tools", "rule of thumb:
+// anything...", "now fix the candy wrapper"), "coil it" became a class,
+// and "not the filing cabinet" was taken as the place.
+TEST_F(RuleReader, WhatIsSaidBeforeTheThingsIsNoClass) {
+  for (const char* said : {"hmm the sweater goes on the sofa", "noo the sweater goes on the sofa",
+                           "no!! i already said the sweater goes on the sofa with the teddy bear",
+                           "ok now fix the sweater, it goes on the sofa not the cart"}) {
+    auto rule = read(said);
+    ASSERT_TRUE(rule) << said;
+    ASSERT_EQ(rule->clauses.size(), 1u) << said;
+    EXPECT_EQ(rule->clauses[0].thing, std::optional<ObjectId>(id("sweater1"))) << said;
+    EXPECT_THAT(rule->clauses[0].places, ElementsAre(id("sofa1"))) << said;
+    EXPECT_FALSE(rule->has_class_clause()) << said;
+  }
+  auto frames = read("btw as a general rule hand tools go in the storage box. rule of thumb: anything with a blade "
+                     "goes on the rack");
+  ASSERT_TRUE(frames);
+  ASSERT_EQ(frames->clauses.size(), 2u);
+  EXPECT_THAT(heads(frames->clauses[0]), ElementsAre("hand tools"));
+  EXPECT_THAT(heads(frames->clauses[1]), ElementsAre("anything with a blade"));
+  // "coil it up on the rack": no class.
+  auto coil = read("coil it up on the rack");
+  EXPECT_TRUE(!coil || !coil->has_class_clause());
+  // A place said not to be the one is no place of the clause.
+  auto not_there = read("toys go in the storage box not the cart");
+  ASSERT_TRUE(not_there);
+  ASSERT_EQ(not_there->clauses.size(), 1u);
+  EXPECT_THAT(not_there->clauses[0].places, ElementsAre(id("storage-box1")));
+  EXPECT_THAT(not_there->not_understood, IsEmpty());
+}
+
 }  // namespace
 }  // namespace apprentice::language

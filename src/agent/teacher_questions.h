@@ -1,0 +1,37 @@
+// The teacher's "why?" answered from what the agent knows and how far the
+// teaching has come: "why did you do that?", "why did you put the glove in
+// the right basket?", "why is the closet still open?". A part of the
+// teaching session (agent/session.h) with no state of its own: it reads,
+// says one sentence, and changes nothing, so it is tested without a
+// session or a teacher.
+#pragma once
+
+#include <span>
+#include <string>
+
+#include "agent/curriculum.h"
+#include "knowledge/goal_memory.h"
+#include "world/world.h"
+
+namespace apprentice {
+
+// What the answers read: the world as it is now, the goals known, how far
+// the teaching has come, and the teacher's last lesson (null before any).
+struct TeachingSoFar {
+  const World& world;
+  const GoalMemory& goals;
+  const teaching::Curriculum& progress;
+  const std::string* last_reply = nullptr;
+};
+
+// The goal known for things of `kind`: that of the part under way, else of
+// this task, else any; null when none is.
+const GoalKnowledge* goal_known_for(const TeachingSoFar& so_far, const std::string& kind);
+
+// The answer to "why ...?" naming `named` (the things, then the places the
+// question names, language::Command::things): about the first named thing
+// with a goal known, or the first door named; with none, about the last
+// goal the agent decided alone, else the teacher's last lesson.
+std::string answer_why(const TeachingSoFar& so_far, std::span<const ObjectId> named);
+
+}  // namespace apprentice

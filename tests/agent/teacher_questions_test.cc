@@ -1,0 +1,98 @@
+// The teacher's "why?" (agent/teacher_questions.h), answered from a world,
+// the goals known and how far the teaching has come, without a session or
+// a teacher: about a thing named, a door named, the agent's own decision,
+// or the last lesson.
+#include "agent/teacher_questions.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "common/paths.h"
+#include "world/scenario.h"
+
+namespace apprentice {
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::StartsWith;
+
+constexpr const char* kMudroom = R"(name: mudroom
+domain: data/domains/kitchen.pddl
+location: mudroom
+places:
+  - {category: bench, kind: surface}
+  - {category: closet, kind: receptacle, door: open}
+  - {category: cabinet, kind: receptacle, door: closed}
+  - {category: basket, kind: receptacle, properties: [left]}
+  - {category: basket, kind: receptacle, properties: [right]}
+objects:
+  - {category: glove, at: basket2}
+  - {category: umbrella, at: closet1}
+  - {category: scarf, at: bench1}
+  - {category: mitten, at: basket1}
+)";
+
+class TeacherQuestions : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    auto scenario = parse_scenario(kMudroom, apprentice::testing::source_path("mudroom.yaml"));
+    ASSERT_TRUE(scenario) << scenario.error().describe();
+    scenario_ = std::move(*scenario);
+    progress_.task.name = "tidy mudroom";
+  }
+  const World& world() const { return scenario_.world; }
+  ObjectId id(const char* name) const { return *world().universe->find(name); }
+  // Learns that `thing` goes in `place`, from `source`; `door` adds the
+  // place's door state ("closed" or "open").
+  void learn(const char* thing, const char* place, const std::string& source, const char* door = nullptr) {
+    const Vocabulary& v = world().vocabulary;
+    std::vector<Literal> literals{Literal{Fact(v.in, {id(thing), id(place)}), true}};
+    if (door != nullptr) literals.push_back(Literal{Fact(v.closed, {id(place)}), std::string(door) == "closed"});
+    GoalKey key{"tidy mudroom", "clear", world().universe->info(id(thing)).category, "bench"};
+    auto known = generalize_goal(world(), key, id(thing), Goal(literals), Provenance{thing, source});
+    ASSERT_TRUE(known) << known.error().describe();
+    goals_.add(std::move(*known));
+  }
+  std::string why(std::vector<ObjectId> named) const {
+    return answer_why(TeachingSoFar{world(), goals_, progress_, last_reply_.empty() ? nullptr : &last_reply_}, named);
+  }
+
+  Scenario scenario_;
+  GoalMemory goals_;
+  teaching::Curriculum progress_;
+  std::string last_reply_;
+};
+
+TEST_F(TeacherQuestions, AThingNamedIsAnsweredByItsGoalAndWhereItCameFrom) {
+  learn("glove1", "basket2", "instructor: \"gloves in the right one\"");
+  EXPECT_EQ(why({id("glove1"), id("basket2")}),
+            "The glove goes in the right basket: I learned that from the instructor, who said \"gloves in the right "
+            "one\". If that was wrong, tell me where it goes.");
+  learn("mitten1", "basket1", "decision: mittens go in the left basket, as said: \"mittens left\"");
+  EXPECT_THAT(why({id("mitten1")}), StartsWith("Because I decided where the mitten goes from weighing what I knew"));
+}
+
+TEST_F(TeacherQuestions, ADoorNamedIsAnsweredByWhatLeftItOpenOrTheNorm) {
+  // A closed door: the norm.
+  EXPECT_EQ(why({id("cabinet1")}), "The cabinet is closed: I close what I open.");
+  // An open one, with no goal that leaves it so, then with the umbrella's.
+  EXPECT_EQ(why({id("closet1")}),
+            "The closet is open: nothing I learned says to close it. Say \"close the closet\" to close it now.");
+  learn("umbrella1", "closet1", "instructor: \"umbrella in the closet, leave it open so it can dry\"", "open");
+  EXPECT_THAT(why({id("closet1")}), StartsWith("The closet is open because the umbrella goes there with it left "
+                                               "open; I learned that from the instructor, who said"));
+}
+
+TEST_F(TeacherQuestions, WithNothingNamedTheLastLessonOrNothingYet) {
+  EXPECT_EQ(why({}), "I have only done what I already knew; you have not told me anything yet this session.");
+  last_reply_ = "scarf on the bench";
+  EXPECT_THAT(why({}), HasSubstr("Because of what you told me last: \"scarf on the bench\"."));
+  // A thing named with no goal known falls back the same way.
+  EXPECT_THAT(why({id("scarf1")}), HasSubstr("Because of what you told me last"));
+  // A thing the teacher said to leave.
+  progress_.left_by_teacher.push_back(id("scarf1"));
+  EXPECT_EQ(why({id("scarf1")}), "You told me to leave the scarf where it is.");
+}
+
+}  // namespace
+}  // namespace apprentice
