@@ -177,7 +177,13 @@ int parse_failure(const CLI::App& app, const CLI::ParseError& e, int argc, char*
     const std::vector<std::string> known = option_names(app, parsed);
     if (auto unknown = unknown_option(known, argc, argv)) {
       message = "unknown option " + apprentice::quoted(*unknown);
-      if (auto near = closest_match(*unknown, known)) message = *unknown + ": did you mean " + *near + "?";
+      if (auto near = closest_match(*unknown, known)) {
+        message = *unknown + ": did you mean " + *near + "?";
+      } else if (is_one_of(*unknown, {"--store", "--db", "--database", "--save", "--memory", "--kb"}) &&
+                 std::find(known.begin(), known.end(), "--knowledge") != known.end()) {
+        // Other words for the knowledge store.
+        message = *unknown + ": did you mean --knowledge (the knowledge store)?";
+      }
     } else {
       // "The following argument was not expected: FILE"
       const auto colon = message.find(": ");

@@ -99,6 +99,10 @@ TEST_F(Conventions, AMistypedFlagGetsTheNearestOne) {
   Invocation equals = run({"experiment", "--scenario", kitchen(), "--conditons=instruction"});
   EXPECT_EQ(equals.exit_code, 2);
   EXPECT_THAT(equals.err, HasSubstr("--conditons: did you mean --conditions?"));
+  // Another word for the knowledge store, as two fresh users typed it.
+  Invocation store = run({"teach", "--scenario", kitchen(), "--store", "x.sqlite"});
+  EXPECT_EQ(store.exit_code, 2);
+  EXPECT_THAT(store.err, HasSubstr("--store: did you mean --knowledge (the knowledge store)?"));
   // A word that is not a flag is still an unexpected argument.
   Invocation extra = run({"world", "--scenario", kitchen(), "extra"});
   EXPECT_EQ(extra.exit_code, 2);
