@@ -97,6 +97,10 @@ std::optional<std::pair<Reply, std::vector<std::string>>> several_steps(const Gr
                                                                       std::string_view text, const Reply& whole) {
   if (context.asked != Asked::kTaskStep && context.asked != Asked::kSubtaskEnd) return std::nullopt;
   std::vector<Words> parts = parts_at_and(step_parts(text));
+  // ("you know this one?? desk first, then the floor": a remark before
+  // the parts is none of them.)
+  while (parts.size() > 2 && is_remark(grounder, world, without_interjections(parts.front())))
+    parts.erase(parts.begin());
   if (parts.size() < 2 || parts.size() > 4) return std::nullopt;
   std::optional<Reply> first;
   std::vector<std::string> rest;

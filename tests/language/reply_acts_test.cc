@@ -603,5 +603,16 @@ TEST_F(FreshUserRoom, DoorsLeftOpenForNow) {
             "command do (open cupboard1)");
 }
 
+// A remark before the parts of the task is none of them.
+TEST_F(FreshUserRoom, ARemarkBeforeThePartsIsNoneOfThem) {
+  ReplyContext step;
+  step.asked = Asked::kTaskStep;
+  const ReplyActs read =
+      read_acts(grounder(), office_->world, step, "you know this one?? desk first, then the floor, then the side table");
+  ASSERT_EQ(read.acts.size(), 1u);
+  EXPECT_EQ(format_reply(office_->world, read.acts.front()), "subtask clear on desk1");
+  EXPECT_EQ(read.then, (std::vector<std::string>{"clear the floor", "clear the side table"}));
+}
+
 }  // namespace
 }  // namespace apprentice::language
