@@ -8,9 +8,9 @@
 
 #include "agent/class_rule_knowledge.h"
 #include "agent/explanation.h"
-#include "agent/teacher_questions.h"
 #include "agent/goal_proposals.h"
 #include "agent/session.h"
+#include "agent/teacher_questions.h"
 #include "knowledge/goal_memory.h"
 #include "language/generation.h"
 #include "language/narration.h"
@@ -69,7 +69,6 @@ language::ReplyContext TaskLearningAgent::Session::context(language::Asked asked
   };
   return c;
 }
-
 
 void TaskLearningAgent::Session::say(const std::string& statement, Voice voice) {
   conversation_.say(statement, voice);
