@@ -301,8 +301,7 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
     if (decision.kind == Decision::Kind::kConfirm) {
       if (!teacher) {
         if (!learning_ || report.note.empty())
-          report.note = "it may be that " + language::goal_outcome(w, object, *goal, "it") + as +
-                        ", but I am not sure enough (confidence " + percent(decision.confidence) + ")";
+          report.note = language::not_sure_enough(w, object, *goal, evidence, percent(decision.confidence));
         return std::optional<Goal>();
       }
       // Things still to come that the decision would ask about with the

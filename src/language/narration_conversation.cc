@@ -291,7 +291,9 @@ std::string will_ask_about_later(const World& w, ObjectId other, const SubtaskUn
 
 std::string help_needed_for_goal(const World& world, ObjectId object, std::string_view verb,
                                  const std::vector<std::string>& refused) {
-  std::string help = "where " + spoken_name_and_location(world, object) + " goes (" + std::string(verb) + ")";
+  const bool plural = is_plural_category(world.universe->info(object).category);
+  std::string help =
+      "where " + spoken_name_and_location(world, object) + (plural ? " go (" : " goes (") + std::string(verb) + ")";
   if (!refused.empty()) help += "; the replies I could not use: " + join(refused, ", ");
   return help;
 }

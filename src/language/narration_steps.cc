@@ -88,6 +88,14 @@ std::string ask_other_name(std::string_view word, const World& world, ObjectId o
   return "By \"" + std::string(word) + "\", do you mean " + spoken_name(world, object) + "?";
 }
 
+std::string not_sure_enough(const World& world, ObjectId object, const Goal& goal, std::string_view evidence,
+                            std::string_view confidence) {
+  const bool plural = is_plural_category(world.universe->info(object).category);
+  return "it may be that " + goal_outcome(world, object, goal, plural ? "they" : "it") +
+         (evidence.empty() ? "" : ", " + std::string(evidence)) + ", but I am not sure enough (confidence " +
+         std::string(confidence) + ")";
+}
+
 std::string ask_goal_proposed(const World& world, ObjectId object, const Goal& goal, std::string_view evidence,
                               const std::vector<std::string>& others) {
   // "Do the headphones on the chair go ...: they go in ...?"

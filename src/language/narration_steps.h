@@ -43,6 +43,11 @@ std::string could_not_finish(std::string_view verb, long long remaining, std::st
 // After a person's rule: "I did not follow "heavy items"; I will ask about
 // those things when I come to them." (`parts` as said, unquoted).
 std::string rule_parts_not_followed(const std::vector<std::string>& parts);
+// What the agent would have done alone, and why it did not: "it may be
+// that they go in the hamper, like the socks, but I am not sure enough
+// (confidence 0.63)". `evidence` may be empty.
+std::string not_sure_enough(const World& world, ObjectId object, const Goal& goal, std::string_view evidence,
+                            std::string_view confidence);
 // Undo: "There is nothing to undo yet.", "I forgot what you told me last:
 // "the mug goes in the sink"."
 std::string nothing_to_undo();

@@ -69,7 +69,15 @@ std::string performance_summary(const PerformanceEnd& how) {
          count_phrase(static_cast<long long>(how.search_nodes), "search node") + ", 0 LLM calls.\n";
   for (const std::string& note : how.renamed) out += "From another world: I " + note + ".\n";
   for (const std::string& note : how.analogies) out += "By analogy: I " + note + ".\n";
-  for (const std::string& help : how.help_needed) out += "Would need help: " + help + "\n";
+  // Each said once, with how many things it is about ("(3 of them)").
+  std::vector<std::pair<std::string, int>> helps;
+  for (const std::string& help : how.help_needed) {
+    auto same = std::find_if(helps.begin(), helps.end(), [&](const auto& h) { return h.first == help; });
+    if (same == helps.end()) helps.emplace_back(help, 1);
+    else ++same->second;
+  }
+  for (const auto& [help, times] : helps)
+    out += "Would need help: " + help + (times > 1 ? " (" + std::to_string(times) + " of them)" : std::string()) + "\n";
   for (const auto& [sentence, times] : how.unmet)
     out += "Not done: " + sentence + (times > 1 ? " (" + std::to_string(times) + " of them)" : std::string()) + ".\n";
   if (how.help_needed.empty())

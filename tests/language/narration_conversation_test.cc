@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "language/narration_steps.h"
+#include "language/narration_summary.h"
 
 #include "language_fixtures.h"
 
@@ -44,6 +45,12 @@ TEST(NarrationConversation, AProposalAgreesWithAThingNamedInThePlural) {
   const Goal in_pantry({Literal{Fact(w.vocabulary.in, {thing("crackers1"), thing("pantry1")}), true}});
   EXPECT_EQ(ask_goal_proposed(w, thing("crackers1"), in_pantry, "like the cereal", {}),
             "Do the crackers on the counter go like the cereal: they go in the pantry?");
+  // What `run` would have done, and where it needs help, agree with a
+  // plural name too (a fresh user read "where the sunglasses ... goes").
+  EXPECT_EQ(not_sure_enough(w, thing("crackers1"), in_pantry, "like the cereal", "0.63"),
+            "it may be that they go in the pantry, like the cereal, but I am not sure enough (confidence 0.63)");
+  EXPECT_EQ(help_needed_for_goal(w, thing("crackers1"), "store", {}), "where the crackers on the counter go (store)");
+  EXPECT_EQ(help_needed_for_goal(w, thing("ketchup1"), "clear", {}), "where the ketchup on the table goes (clear)");
   const Goal in_fridge({Literal{Fact(w.vocabulary.in, {thing("ketchup1"), thing("fridge1")}), true}});
   EXPECT_EQ(ask_goal_proposed(w, thing("ketchup1"), in_fridge, "", {}),
             "Does the ketchup on the table go here: it goes in the fridge?");
@@ -98,4 +105,18 @@ TEST(NarrationConversation, ForgettingNamesTheKind) {
 }
 
 }  // namespace
+
+// Each thing `run` would need help with is said once, with a count when
+// several things need the same ("the bulb" three times).
+TEST(NarrationSummary, TheSameHelpIsSaidOnceWithACount) {
+  PerformanceEnd how;
+  how.help_needed = {"where the bulb on the bench goes (clear)", "where the spade on the floor goes (clear)",
+                     "where the bulb on the bench goes (clear)", "where the bulb on the bench goes (clear)"};
+  const std::string said = performance_summary(how);
+  EXPECT_NE(said.find("Would need help: where the bulb on the bench goes (clear) (3 of them)\n"
+                      "Would need help: where the spade on the floor goes (clear)\n"),
+            std::string::npos)
+      << said;
+}
+
 }  // namespace apprentice::language
