@@ -21,15 +21,6 @@ namespace apprentice {
 
 namespace {
 
-// The place a placement goal puts `object` at.
-std::optional<ObjectId> placed_at(const World& world, const Goal& goal, ObjectId object) {
-  for (const Literal& l : goal.literals)
-    if ((l.fact.predicate == world.vocabulary.in || l.fact.predicate == world.vocabulary.on) && l.fact.arity == 2 &&
-        l.fact.args[0] == object && l.positive)
-      return l.fact.args[1];
-  return std::nullopt;
-}
-
 // The fleet's yes/no: "In most households I know of (3 of 4), the ketchup
 // on the table goes in the fridge, and the fridge ends closed. Here too?"
 std::string fleet_question(const World& world, ObjectId object, const Goal& goal, const DestinationProposal& fleet) {
@@ -291,7 +282,8 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
     // they said nothing of is closed after, as the teacher's goals are.
     goal = with_closings(w, *goal, closings_to_complete(w, *goal, object, agent_.knowledge_.goals));
     if (first) {
-      if (auto place = placed_at(w, *goal, object)) report.proposed = w.universe->name(*place);
+      if (const std::vector<ObjectId> places = destinations(w, *goal, object); !places.empty())
+        report.proposed = w.universe->name(places.front());
       report.belief = decision.confidence;
     }
     if (decision.kind == Decision::Kind::kAskWhere || (refused_alone && decision.kind == Decision::Kind::kConfirm))

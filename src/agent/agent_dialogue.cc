@@ -219,13 +219,7 @@ TaskLearningAgent::Session::Flow<language::Reply> TaskLearningAgent::Session::se
     which.choices = ambiguous.candidates;
     Question q = question(QuestionKind::kWhich, ambiguous.question, asked.object, asked.goal, asked.action);
     q.choices = ambiguous.candidates;
-    auto heard = converse(q, which, [&](const language::Reply& r) -> std::optional<std::string> {
-      if (const auto* chosen = std::get_if<language::Chosen>(&r))
-        if (std::find(ambiguous.candidates.begin(), ambiguous.candidates.end(), chosen->object) !=
-            ambiguous.candidates.end())
-          return std::nullopt;
-      return language::asked_which_one();
-    });
+    auto heard = converse(q, which, chosen_among(ambiguous.candidates));
     if (!heard) return tl::unexpected(heard.error());
     if (!heard->reply)
       return language::Reply(language::Unusable{language::could_not_tell_which(ambiguous.phrase), {}, {}});
@@ -245,6 +239,14 @@ TaskLearningAgent::Session::Flow<language::Reply> TaskLearningAgent::Session::se
     if (still == nullptr) return again;
     ambiguous = *still;
   }
+}
+
+TaskLearningAgent::Session::Accept TaskLearningAgent::Session::chosen_among(std::vector<ObjectId> choices) {
+  return [choices = std::move(choices)](const language::Reply& r) -> std::optional<std::string> {
+    if (const auto* chosen = std::get_if<language::Chosen>(&r))
+      if (std::find(choices.begin(), choices.end(), chosen->object) != choices.end()) return std::nullopt;
+    return language::asked_which_one();
+  };
 }
 
 TaskLearningAgent::Session::Flow<bool> TaskLearningAgent::Session::confirm(const Question& asked) {

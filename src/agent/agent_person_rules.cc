@@ -4,6 +4,7 @@
 #include <cctype>
 
 #include "agent/class_rule_knowledge.h"
+#include "agent/goal_repair.h"
 #include "agent/person_rule.h"
 #include "agent/session.h"
 #include "language/generation.h"
@@ -83,10 +84,9 @@ std::optional<language::RuleReading> TaskLearningAgent::Session::rule_in_reply(
   // ("yep. hats and caps go there too").
   std::optional<ObjectId> there = context.recent_place;
   if (context.proposal && context.object)
-    for (const Literal& l : context.proposal->literals)
-      if (l.positive && l.fact.arity == 2 && l.fact.args[0] == *context.object &&
-          (l.fact.predicate == world().vocabulary.in || l.fact.predicate == world().vocabulary.on))
-        there = l.fact.args[1];
+    if (const std::vector<ObjectId> proposed = destinations(world(), *context.proposal, *context.object);
+        !proposed.empty())
+      there = proposed.front();
   auto rule = language::read_rule(world(), agent_.understanding_.lexicon(), text, context.object, there);
   if (!rule || !rule->has_class_clause()) return std::nullopt;
   const auto* unusable = std::get_if<language::Unusable>(&reply);
@@ -170,12 +170,7 @@ TaskLearningAgent::Session::Flow<std::optional<ObjectId>> TaskLearningAgent::Ses
   q.choices = clause.places;
   language::ReplyContext context = this->context(language::Asked::kWhich);
   context.choices = clause.places;
-  auto heard = converse(q, context, [&](const language::Reply& r) -> std::optional<std::string> {
-    if (const auto* chosen = std::get_if<language::Chosen>(&r))
-      if (std::find(clause.places.begin(), clause.places.end(), chosen->object) != clause.places.end())
-        return std::nullopt;
-    return language::asked_which_one();
-  });
+  auto heard = converse(q, context, chosen_among(clause.places));
   if (!heard) return tl::unexpected(heard.error());
   if (!heard->reply) return std::optional<ObjectId>();
   return std::optional<ObjectId>(std::get<language::Chosen>(*heard->reply).object);

@@ -113,17 +113,6 @@ bool can_never_hold(MeaningFailure failure_kind) {
   return failure_kind == MeaningFailure::kAffordanceMismatch || failure_kind == MeaningFailure::kUnknownPredicate;
 }
 
-// The places the goal puts the object (positive on/in literals).
-std::vector<ObjectId> destinations(const World& world, const Goal& goal, ObjectId object) {
-  const Vocabulary& v = world.vocabulary;
-  std::vector<ObjectId> out;
-  for (const Literal& literal : goal.literals)
-    if (literal.positive && (literal.fact.predicate == v.on || literal.fact.predicate == v.in) &&
-        literal.fact.arity == 2 && literal.fact.args[0] == object)
-      out.push_back(literal.fact.args[1]);
-  return out;
-}
-
 // Whether goals learned so far for receptacles of `category` end closed:
 // true if one does, false if some put things into it and none closes it,
 // nothing if none is about it. A goal that says to leave it open ("the
@@ -169,6 +158,16 @@ std::vector<ClosingToAdd> closings_to_complete(const World& world, const Goal& g
     const bool close = learned_verdict ? *learned_verdict : world.state.holds(closed);
     if (close) out.push_back(ClosingToAdd{place, !learned_verdict.has_value()});
   }
+  return out;
+}
+
+std::vector<ObjectId> destinations(const World& world, const Goal& goal, ObjectId object) {
+  const Vocabulary& v = world.vocabulary;
+  std::vector<ObjectId> out;
+  for (const Literal& literal : goal.literals)
+    if (literal.positive && (literal.fact.predicate == v.on || literal.fact.predicate == v.in) &&
+        literal.fact.arity == 2 && literal.fact.args[0] == object)
+      out.push_back(literal.fact.args[1]);
   return out;
 }
 

@@ -119,6 +119,8 @@ struct ClosingToAdd {
 };
 std::vector<ClosingToAdd> closings_to_complete(const World& world, const Goal& goal, ObjectId object,
                                                const GoalMemory& learned);
+// The places `goal` puts `object` in or on (its positive on/in literals).
+std::vector<ObjectId> destinations(const World& world, const Goal& goal, ObjectId object);
 // `goal` with `closings` added.
 Goal with_closings(const World& world, const Goal& goal, const std::vector<ClosingToAdd>& closings);
 

@@ -98,6 +98,8 @@ class TaskLearningAgent::Session {
   Flow<language::Reply> settle(const language::Ambiguous& ambiguous, const Question& asked,
                                language::ReplyContext& context, const std::string& text);
   Flow<bool> confirm(const Question& question);
+  // Accepts a choice among `choices` ("the left one"); else asks which.
+  static Accept chosen_among(std::vector<ObjectId> choices);
   Step obey(const language::Command& command, const Question& question, const language::ReplyContext& context);
   // The reason, and replies that would work: `examples` (the reader's, which
   // may fit the reply better), else the question's.

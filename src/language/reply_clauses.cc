@@ -52,7 +52,6 @@ const HouseholdVerb* find_household(std::string_view base) {
   return nullptr;
 }
 
-bool is_state_word(std::string_view w) { return is_one_of(w, {"closed", "shut", "open", "opened", "shutted"}); }
 
 std::optional<Preposition> preposition_of(std::string_view w) {
   if (is_one_of(w, {"in", "into", "inside", "within"})) return Preposition::kIn;

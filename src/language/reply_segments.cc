@@ -154,9 +154,9 @@ std::vector<ObjectId> things_asked_why(const Grounder& grounder, const World& wo
     const std::string& w = words[i];
     const bool function_word = is_determiner(w) || is_object_pronoun(w) || is_copula(w) || is_auxiliary(w) ||
                                is_particle(w) || is_clause_break(w) || is_negation(w) ||
-                               is_one_of(w, {"in", "on", "into", "onto", "to", "at", "from", "with", "you", "i", "did", "do", "does", "put", "throw",
-                                                                     "out", "away", "still", "so", "before", "now",
-                                                                     "there", "here", "that", "go", "goes", "my"});
+                               is_one_of(w, {"in", "on", "into", "onto", "to", "at", "from", "with", "you", "i", "did",
+                                             "do", "does", "put", "throw", "out", "away", "still", "so", "before",
+                                             "now", "there", "here", "that", "go", "goes", "my"});
     if (function_word) flush();
     else phrase.push_back(w);
   }
@@ -299,12 +299,6 @@ std::size_t what_someone_did_from(const Words& words) {
 
 // "close the top drawer", "shut both drawers", "open the compost bin
 // first": the actions, or nullopt when the segment is not such a command.
-namespace {
-
-bool says_door_state(const std::string& word) { return is_one_of(word, {"open", "opened", "closed", "shut"}); }
-
-}  // namespace
-
 std::optional<std::vector<Action>> door_action(const Grounder& grounder, const World& world,
                                                const ReplyContext& context, const Words& said) {
   Words words = without_interjections(said);
@@ -320,7 +314,7 @@ std::optional<std::vector<Action>> door_action(const Grounder& grounder, const W
   for (std::size_t i = 1; i + 1 < words.size(); ++i)
     if (words[i] == "and" && is_one_of(words[i + 1], {"leave", "keep"})) {
       const Words rest(words.begin() + static_cast<std::ptrdiff_t>(i) + 2, words.end());
-      if (rest.size() <= 3 && !rest.empty() && is_object_pronoun(rest.front()) && says_door_state(rest.back())) {
+      if (rest.size() <= 3 && !rest.empty() && is_object_pronoun(rest.front()) && is_state_word(rest.back())) {
         words.resize(i);
         break;
       }
@@ -333,7 +327,7 @@ std::optional<std::vector<Action>> door_action(const Grounder& grounder, const W
   // What follows the state says when or why ("leave the cabinet open for
   // now", "keep the cupboard open this time i'm gonna put stuff in it").
   const auto state = std::find_if(words.begin() + (words.empty() ? 0 : 1), words.end(),
-                                  [](const std::string& w) { return says_door_state(w); });
+                                  [](const std::string& w) { return is_state_word(w); });
   const bool when_or_why_after =
       state != words.end() &&
       (state + 1 == words.end() || is_one_of(*(state + 1), {"for", "this", "now", "till", "until", "so", "because",

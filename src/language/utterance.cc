@@ -353,6 +353,8 @@ bool is_particle(std::string_view w) {
   return is_one_of(w, {"away", "up", "down", "back", "out", "off", "over", "aside"});
 }
 
+bool is_state_word(std::string_view w) { return is_one_of(w, {"closed", "shut", "open", "opened", "shutted"}); }
+
 bool is_filler(std::string_view w) {
   return is_one_of(w, {"please", "ok", "just", "now", "um", "uh", "er", "erm", "hmm", "hm", "so", "well", "oh",
                        "hey", "alright", "actually", "basically", "simply", "kindly", "thanks", "first", "next",
