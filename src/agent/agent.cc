@@ -19,6 +19,7 @@
 #include "agent/session.h"
 #include "language/known_verbs.h"
 #include "language/narration.h"
+#include "language/narration_conversation.h"
 #include "language/narration_steps.h"
 #include "util/log.h"
 #include "util/text.h"
@@ -78,11 +79,9 @@ Result<AgentReport> TaskLearningAgent::Session::learn_task() {
     }
   }
   if (auto kept = keep_induced_rules_learned(); !kept) return tl::unexpected(kept.error());
-  report_.objects = progress_.objects;
   report_.goals_learned = progress_.goals_learned;
   report_.rules_learned = progress_.rules_learned;
-  report_.task_finished = true;
-  return report_;
+  return finished_report();
 }
 
 Result<AgentReport> TaskLearningAgent::Session::perform_task(const TaskKnowledge& task) {
@@ -92,9 +91,19 @@ Result<AgentReport> TaskLearningAgent::Session::perform_task(const TaskKnowledge
     Step step = next_step();
     if (!step) return tl::unexpected(step.error().error.value_or(Error{ErrorCode::kCancelled, "stopped"}));
   }
-  report_.objects = progress_.objects;
-  report_.task_finished = true;
-  return report_;
+  return finished_report();
+}
+
+AgentReport TaskLearningAgent::Session::finished_report() const {
+  AgentReport report = report_;
+  report.objects = progress_.objects;
+  const ActingCounts& acted = actor_.counts();
+  report.searches += acted.searches;
+  report.search_nodes += acted.search_nodes;
+  report.rule_actions += acted.rule_actions;
+  report.actions_executed += acted.actions_executed;
+  report.task_finished = true;
+  return report;
 }
 
 TaskLearningAgent::Session::Step TaskLearningAgent::Session::next_step() {
@@ -354,11 +363,18 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::start_object(Object
 
 TaskLearningAgent::Session::Step TaskLearningAgent::Session::achieve_current() {
   InProgress& work = *progress_.in_progress;
-  auto achieved = achieve(work);
-  if (!achieved) return tl::unexpected(achieved.error());
-  work.report.achieved = *achieved;
-  if (*achieved && learning_) {
-    if (auto s = learn_rules(work); !s) return stop(s.error());
+  auto acted = actor_.achieve(world(), work, current().verb, acting_policy(), *this);
+  if (!acted) return tl::unexpected(acted.error());
+  work.report.achieved = *acted == Acted::kAchieved;
+  if (*acted == Acted::kNoWay && !learning_)
+    report_.help_needed.push_back(language::help_needed_for_goal_to_hold(world(), work.goal));
+  if (work.report.achieved && learning_) {
+    for (Rule& rule : rules_taught(world(), work, current().verb, describe_object(work.object),
+                                   agent_.options_.generalization)) {
+      auto learned = lessons_.learn_rule(agent_.knowledge_, std::move(rule));
+      if (!learned) return stop(learned.error());
+      if (*learned) ++progress_.rules_learned;
+    }
   }
   if (learning_) {
     std::string done = language::report_actions(world(), work.actions);

@@ -1,6 +1,5 @@
-// Achieving a goal: the inner loop of Algorithm 1, with learned rules
-// consulted before search and before asking, and rule learning once the
-// goal holds.
+// What the session does for its actor (agent/actor.h): asks the LLM and
+// the teacher for the next action, and carries actions out.
 #include <deque>
 #include <map>
 
@@ -13,103 +12,11 @@
 
 namespace apprentice {
 
-namespace {
-
-// An action as the LLM prompt lists steps: "Open dishwasher", "Pick up
-// ceramic-plate" (the paper's example), from "Open the dishwasher.".
-std::string step_text(const World& world, const Action& action) {
-  std::string sentence = language::describe_action(world, action);
-  if (!sentence.empty() && sentence.back() == '.') sentence.pop_back();
-  std::string out;
-  for (const std::string& word : split_words(sentence))
-    if (word != "the") out += (out.empty() ? "" : " ") + word;
-  return out;
-}
-
-}  // namespace
-
-TaskLearningAgent::Session::Flow<bool> TaskLearningAgent::Session::achieve(InProgress& work) {
-  const Condition& condition = agent_.options_.condition;
-  ObjectReport& report = work.report;
-  OwnActions own;
-  int actions = 0;
-  while (!work.goal.satisfied_by(world().state)) {
-    // Past the bound, a program's run gives up on the object; a person is
-    // asked instead, and only what the person says is done.
-    const bool over_bound = actions >= agent_.options_.max_actions_per_object;
-    if (over_bound && !(learning_ && person() && condition.instruction)) {
-      report.note = "gave up after " + std::to_string(actions) + " actions";
-      return false;
-    }
-    std::optional<Action> next;
-    std::string source;
-    if (!over_bound) {
-      auto found = own_next_action(work, own, source);
-      if (!found) return tl::unexpected(found.error());
-      next = *found;
-    }
-    if (!next && learning_ && condition.instruction) {
-      auto from_instructor = action_from_instructor(work);
-      if (!from_instructor) return tl::unexpected(from_instructor.error());
-      if (!*from_instructor) return false;  // the instructor said to leave it, or could not say
-      next = *from_instructor;
-      source = "instructor: " + advice_;
-    }
-    if (!next) {
-      report.note = "no way to reach the goal";
-      if (!learning_)
-        report_.help_needed.push_back(language::help_needed_for_goal_to_hold(world(), work.goal));
-      return false;
-    }
-    if (auto status = execute(*next); !status) {
-      // Advice that cannot be carried out; the plan, if any, is stale.
-      own.drop_plan();
-      say(language::refusal(world(), *next), Voice::kResponse);
-      if (source.rfind("instructor", 0) != 0) ++actions;
-      continue;
-    }
-    work.actions.push_back(*next);
-    work.sources.push_back(source);
-    work.llm_steps.push_back(step_text(world(), *next));
-    ++report_.actions_executed;
-    ++actions;
-  }
-  return true;
-}
-
-TaskLearningAgent::Session::Flow<std::optional<Action>> TaskLearningAgent::Session::own_next_action(
-    InProgress& work, OwnActions& own, std::string& source) {
-  const Condition& condition = agent_.options_.condition;
-  OwnActions::Ways ways;
-  if (agent_.options_.use_rules) ways.rules = &agent_.knowledge_.rules;
-  // Performing alone, the agent does what its rules say and does not search.
-  if (learning_) {
-    ways.search_depth = condition.search_depth;
-    ways.unbounded_search = condition.unbounded_search;
-  }
-  OwnActions::Next next = own.next(world(), work.goal, work.object, current().verb, ways);
-  if (next.searched) {
-    ++report_.searches;
-    report_.search_nodes += next.nodes;
-  }
-  if (next.action) {
-    if (next.source == "rule") ++report_.rule_actions;
-    source = next.source;
-    return next.action;
-  }
-  if (learning_ && condition.llm) {
-    auto from_llm = action_from_llm(work);
-    if (!from_llm) return from_llm;
-    if (*from_llm) source = "llm: " + advice_;
-    return from_llm;
-  }
-  return std::optional<Action>();
-}
-
 // The LLM's next steps, chosen by Algorithm 5 (llm::finalize_choice): the
 // most probable step that grounds and can be done now, confirmed by the
 // instructor where there is one.
-TaskLearningAgent::Session::Flow<std::optional<Action>> TaskLearningAgent::Session::action_from_llm(InProgress& work) {
+TaskLearningAgent::Session::Flow<std::optional<Action>> TaskLearningAgent::Session::llm_action(InProgress& work,
+                                                                                         std::string& advice) {
   LlmAdvisor& llm = *agent_.llm_;
   std::string goal_text = language::describe_goal_instruction(world(), work.object, work.goal);
   if (!goal_text.empty() && goal_text.back() == '.') goal_text.pop_back();
@@ -153,12 +60,12 @@ TaskLearningAgent::Session::Flow<std::optional<Action>> TaskLearningAgent::Sessi
   if (!choice->candidate) return std::optional<Action>();
   auto action = usable.find(choice->candidate->text);
   if (action == usable.end()) return std::optional<Action>();  // unattended, the paper's way: unusable
-  advice_ = apprentice::quoted(choice->candidate->text) + (instructed ? " (confirmed)" : "");
+  advice = apprentice::quoted(choice->candidate->text) + (instructed ? " (confirmed)" : "");
   return std::optional<Action>(action->second);
 }
 
-TaskLearningAgent::Session::Flow<std::optional<Action>> TaskLearningAgent::Session::action_from_instructor(
-    InProgress& work) {
+TaskLearningAgent::Session::Flow<std::optional<Action>> TaskLearningAgent::Session::instructor_action(
+    InProgress& work, std::string& advice) {
   Question asked = question(QuestionKind::kNextAction, language::ask_next_action(world(), work.goal), work.object,
                             work.goal);
   auto heard = converse(asked, context(language::Asked::kAction, work.object),
@@ -182,29 +89,32 @@ TaskLearningAgent::Session::Flow<std::optional<Action>> TaskLearningAgent::Sessi
   const Action& action = std::get<language::ActionGiven>(*heard->reply).action;
   for (ObjectId o : action.arguments())
     if (world().universe->info(o).kind != ObjectKind::kItem) conversation_.named_place(o);
-  advice_ = apprentice::quoted(heard->text);
+  advice = apprentice::quoted(heard->text);
   return std::optional<Action>(action);
 }
 
-Status TaskLearningAgent::Session::learn_rules(const InProgress& work) {
-  bool all_from_rules =
-      std::all_of(work.sources.begin(), work.sources.end(), [](const std::string& s) { return s == "rule"; });
-  if (work.actions.empty() || all_from_rules) return {};
-  Episode episode{work.start, work.actions, {}, work.goal, work.object, current().verb, describe_object(work.object)};
-  for (std::size_t i = 0; i < work.actions.size(); ++i) {
-    const std::string& source = work.sources[i];
-    episode.sources.push_back(source == "search" || source == "rule"
-                                  ? source + ": " + format_action(*world().domain, *world().universe, work.actions[i])
-                                  : source);
+Status TaskLearningAgent::Session::carry_out(const Action& action) { return execute(action); }
+
+void TaskLearningAgent::Session::could_not_do(const Action& action) {
+  say(language::refusal(world(), action), Voice::kResponse);
+}
+
+ActingPolicy TaskLearningAgent::Session::acting_policy() const {
+  const Condition& condition = agent_.options_.condition;
+  ActingPolicy policy;
+  if (agent_.options_.use_rules) policy.own.rules = &agent_.knowledge_.rules;
+  // Performing alone, the agent does what its rules say and does not search.
+  if (learning_) {
+    policy.own.search_depth = condition.search_depth;
+    policy.own.unbounded_search = condition.unbounded_search;
   }
-  std::vector<Rule> rules =
-      learn_policy_rules(*world().domain, *world().universe, episode, agent_.options_.generalization);
-  for (Rule& rule : rules) {
-    auto learned = lessons_.learn_rule(agent_.knowledge_, std::move(rule));
-    if (!learned) return tl::unexpected(learned.error());
-    if (*learned) ++progress_.rules_learned;
-  }
-  return {};
+  policy.ask_llm = learning_ && condition.llm;
+  policy.ask_instructor = learning_ && condition.instruction;
+  policy.max_actions = agent_.options_.max_actions_per_object;
+  // Past the bound, a program's run gives up on the object; a person is
+  // asked instead, and only what the person says is done.
+  policy.ask_only_teacher_past_bound = learning_ && person() && condition.instruction;
+  return policy;
 }
 
 }  // namespace apprentice

@@ -14,12 +14,12 @@
 #include <functional>
 #include <set>
 
+#include "agent/actor.h"
 #include "agent/agent.h"
 #include "agent/conversation.h"
 #include "agent/curriculum.h"
 #include "agent/goal_sources.h"
 #include "agent/lessons.h"
-#include "agent/own_actions.h"
 #include "agent/teacher_questions.h"
 #include "knowledge/decision.h"
 #include "language/reply.h"
@@ -30,7 +30,7 @@ namespace apprentice {
 // own: "... last: \"Open the fridge.\"" (agent_dialogue.cc).
 std::string with_period(std::string text);
 
-class TaskLearningAgent::Session {
+class TaskLearningAgent::Session : private ActingHelp {
  public:
   Session(TaskLearningAgent& agent, Simulator& simulator, Dialogue* dialogue, bool learning);
 
@@ -38,16 +38,10 @@ class TaskLearningAgent::Session {
   Result<AgentReport> perform_task(const TaskKnowledge& task);
 
  private:
-  // Why a step stopped before its end: an error (the teacher left, the
-  // store failed), or none when an undo restored an earlier point and the
-  // loop should go on from there.
-  struct Stop {
-    std::optional<Error> error;
-  };
+  // Why a step stopped before its end (agent/flow.h).
   template <typename T>
-  using Flow = tl::expected<T, Stop>;
+  using Flow = apprentice::Flow<T>;
   using Step = Flow<void>;
-  static tl::unexpected<Stop> stop(Error error) { return tl::unexpected<Stop>(Stop{std::move(error)}); }
 
   // How far the teaching has come (agent/curriculum.h): what a step reads and
   // changes, and what a lesson keeps.
@@ -88,6 +82,9 @@ class TaskLearningAgent::Session {
   Step achieve_current();
   std::optional<ObjectId> next_object(const Current& current) const;
   Status remember_task();
+  // The report of a session whose task is finished: what the session and
+  // the actor counted, with every object's report.
+  AgentReport finished_report() const;
 
   // Conversation (agent_dialogue.cc).
   Question question(QuestionKind kind, std::string text, std::optional<ObjectId> object = std::nullopt,
@@ -259,15 +256,15 @@ class TaskLearningAgent::Session {
   GoalKey goal_key(ObjectId object) const;
   llm::TaskContext llm_context(ObjectId object) const;
 
-  // Actions (agent_actions.cc).
-  Flow<bool> achieve(InProgress& work);
-  // The next action from the agent's own sources, in order: those of
-  // `own` (the plan being executed, learned rules, search to the
-  // condition's depth), then the LLM.
-  Flow<std::optional<Action>> own_next_action(InProgress& work, OwnActions& own, std::string& source);
-  Flow<std::optional<Action>> action_from_llm(InProgress& work);
-  Flow<std::optional<Action>> action_from_instructor(InProgress& work);
-  Status learn_rules(const InProgress& work);
+  // What the actor (agent/actor.h) asks of the session (agent_actions.cc):
+  // the LLM's and the teacher's next action, asked in the dialogue, and
+  // the hands that carry an action out.
+  Flow<std::optional<Action>> llm_action(InProgress& work, std::string& advice) override;
+  Flow<std::optional<Action>> instructor_action(InProgress& work, std::string& advice) override;
+  Status carry_out(const Action& action) override;
+  void could_not_do(const Action& action) override;
+  // Whom the actor may ask, and how far it goes alone, in this session.
+  ActingPolicy acting_policy() const;
 
   const World& world() const { return simulator_.world(); }
   const Current& current() const { return *progress_.current; }
@@ -282,9 +279,11 @@ class TaskLearningAgent::Session {
   bool learning_;
   Progress progress_;
   Lessons lessons_;  // the teacher's lessons this session, and what each wrote to the store
-  AgentReport report_;           // the counters of search and actions; objects come from progress_
-  std::vector<std::string> announced_;    // the kinds whose news was said, in this session
-  std::string advice_;  // the words of the last action advised by the LLM or the instructor
+  // What the session reports beyond the actor's counts; objects come from progress_.
+  AgentReport report_;
+  std::vector<std::string> announced_;  // the kinds whose news was said, in this session
+  // Acting toward each goal, with the counts of search and actions.
+  Actor actor_;
   // Where a goal may come from when none is known (agent/goal_sources.h),
   // with the person's rules said, the LLM's preferences, and what the
   // teacher refused and settled. Constructed after the lessons: it renames
