@@ -405,14 +405,10 @@ Status TaskLearningAgent::Session::forget(const std::string& kind) {
         Voice::kResponse);
     return {};
   }
-  for (const GoalKey& key : keys) {
-    agent_.knowledge_.goals.remove(key);
-    // An undo must not bring it back either.
-    lessons_.forget_goal(key);
-    if (agent_.store_) {
-      if (auto s = agent_.store_->remove_goal(key); !s) return s;
-    }
-  }
+  // A lesson of its own, so that "undo" right after brings it back.
+  begin_lesson("forget " + kind);
+  for (const GoalKey& key : keys)
+    if (auto s = lessons_.forget_goal(agent_.knowledge_, key); !s) return s;
   say(language::forgot_where_kind_goes(*category), Voice::kResponse);
   return {};
 }

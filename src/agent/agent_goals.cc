@@ -411,8 +411,29 @@ std::vector<GoalKey> TaskLearningAgent::Session::goals_corrected_by(ObjectId obj
     if (g.key.task == progress_.task.name && g.key.category == kind) keys.push_back(g.key);
   bool dealt_with = false;
   for (ObjectId o : progress_.evaluated) dealt_with = dealt_with || world().universe->info(o).category == kind;
-  if (!dealt_with) keys.clear();
+  if (!dealt_with) return {};
+  // Its goal forgotten since ("forget the stapler"): the goal comes anew
+  // under the part of the task it was dealt with in.
+  if (keys.empty())
+    if (std::optional<GoalKey> key = key_dealt_with(kind)) keys.push_back(*key);
   return keys;
+}
+
+std::optional<GoalKey> TaskLearningAgent::Session::key_dealt_with(const std::string& kind) const {
+  std::string verb;
+  for (const ObjectReport& report : progress_.objects) {
+    std::optional<ObjectId> thing = world().universe->find(report.object);
+    if (thing && world().universe->info(*thing).category == kind) verb = report.subtask;
+  }
+  if (verb.empty()) return std::nullopt;
+  // The part under way, else the last part learned, with that verb.
+  std::optional<std::string> place;
+  if (progress_.current && progress_.current->verb == verb && !progress_.current->places.empty())
+    place = world().universe->info(progress_.current->places.front()).category;
+  for (auto part = progress_.task.subtasks.rbegin(); !place && part != progress_.task.subtasks.rend(); ++part)
+    if (part->verb == verb) place = part->place_category;
+  if (!place) return std::nullopt;
+  return GoalKey{progress_.task.name, verb, kind, *place};
 }
 
 std::optional<ObjectId> TaskLearningAgent::Session::thing_corrected(const language::Reply& reply) const {

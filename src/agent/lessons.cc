@@ -87,8 +87,18 @@ Status Lessons::learn_class_rule(Knowledge& knowledge, const ClassRule& rule) {
   return store_->save_class_rule(rule);
 }
 
-void Lessons::forget_goal(const GoalKey& key) {
-  for (Lesson& lesson : lessons_) lesson.knowledge.goals.remove(key);
+Status Lessons::forget_goal(Knowledge& knowledge, const GoalKey& key) {
+  const GoalKnowledge* known = knowledge.goals.find(key);
+  if (known == nullptr) return {};
+  StoreWrite write;
+  write.kind = StoreWrite::Kind::kForgottenGoal;
+  write.goal_key = key;
+  write.previous_goal = *known;
+  knowledge.goals.remove(key);
+  // Recorded with no store too: undo names what it brings back.
+  record(std::move(write));
+  if (!store_) return {};
+  return store_->remove_goal(key);
 }
 
 void Lessons::forget_class_rule(const ClassRule& rule) {
@@ -102,15 +112,17 @@ Result<std::optional<Lessons::Undone>> Lessons::undo(teaching::Curriculum& progr
   if (lessons_.empty()) return std::nullopt;
   Lesson lesson = std::move(lessons_.back());
   lessons_.pop_back();
-  Undone undone{lesson.reply, {}, std::move(lesson.world), lesson.history};
+  Undone undone{lesson.reply, {}, {}, std::move(lesson.world), lesson.history};
   for (const StoreWrite& write : lesson.writes)
     if (write.kind == StoreWrite::Kind::kClassRule) undone.class_rules.push_back(*write.class_rule);
+    else if (write.kind == StoreWrite::Kind::kForgottenGoal) undone.remembered.push_back(write.goal_key);
   for (auto write = lesson.writes.rbegin(); store_ != nullptr && write != lesson.writes.rend(); ++write) {
     Status status;
     switch (write->kind) {
       case StoreWrite::Kind::kGoal:
         status = write->previous_goal ? store_->save_goal(*write->previous_goal) : store_->remove_goal(write->goal_key);
         break;
+      case StoreWrite::Kind::kForgottenGoal: status = store_->save_goal(*write->previous_goal); break;
       case StoreWrite::Kind::kRule: status = store_->remove_rule(*domain_, *write->rule); break;
       case StoreWrite::Kind::kTask:
         status = write->previous_task ? store_->save_task(*write->previous_task) : store_->remove_task(write->task_name);

@@ -58,9 +58,13 @@ class Lessons {
   // rules said), then written.
   Status learn_class_rule(Knowledge& knowledge, const ClassRule& rule);
 
-  // What is forgotten for good ("forget ketchup", "forget fruit"): no undo
-  // may bring it back, so every lesson's knowledge forgets it too.
-  void forget_goal(const GoalKey& key);
+  // "forget ketchup": the goal taken out of `knowledge` and the store, in
+  // the open lesson (which the session opens for the forget itself), so
+  // that an undo right after brings it back; undoing further back, past
+  // the forget, goes on from there as with any lesson.
+  Status forget_goal(Knowledge& knowledge, const GoalKey& key);
+  // A person's rule forgotten for good ("forget fruit"): no undo may bring
+  // it back, so every lesson's knowledge forgets it too.
   void forget_class_rule(const ClassRule& rule);
 
   // What undoing a lesson leaves for the session to do: say what is
@@ -69,6 +73,7 @@ class Lessons {
   struct Undone {
     std::string reply;
     std::vector<ClassRule> class_rules;  // the person's rules said in the lesson
+    std::vector<GoalKey> remembered;     // the goals the lesson forgot, known again
     State world;
     std::size_t history = 0;
   };
@@ -80,7 +85,9 @@ class Lessons {
 
  private:
   struct StoreWrite {
-    enum class Kind { kGoal, kRule, kTask, kClassRule } kind = Kind::kGoal;
+    // kGoal: a goal learned (previous_goal: the one it replaced);
+    // kForgottenGoal: a goal forgotten (previous_goal: the goal).
+    enum class Kind { kGoal, kForgottenGoal, kRule, kTask, kClassRule } kind = Kind::kGoal;
     GoalKey goal_key;
     std::optional<GoalKnowledge> previous_goal;
     std::optional<Rule> rule;

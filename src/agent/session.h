@@ -130,6 +130,11 @@ class TaskLearningAgent::Session : private ActingHelp {
   Status keep_induced_rules_learned();
   Step undo();
   void put_world_back(const State& before, std::size_t history_size);
+  // By a short search from the world now to `target`, the actions taken
+  // added to `undoing`; false when none was found or one failed.
+  bool back_to(const State& target, std::vector<Action>& undoing);
+  // Back through the actions taken since `history_size`, latest first.
+  bool back_step_by_step(const State& before, std::size_t history_size, std::vector<Action>& undoing);
 
   // Goals (agent_goals.cc).
   Flow<std::optional<Goal>> acquire_goal(ObjectId object, ObjectReport& report);
@@ -165,6 +170,9 @@ class TaskLearningAgent::Session : private ActingHelp {
   // whose goal it corrects, those learned in this task; none when no thing
   // of its kind was dealt with yet.
   std::vector<GoalKey> goals_corrected_by(ObjectId object) const;
+  // The key a thing of `kind` was dealt with under in this task (the part
+  // it was cleared in), from the reports; nullopt when none was.
+  std::optional<GoalKey> key_dealt_with(const std::string& kind) const;
   // The thing already dealt with whose goal `reply` corrects ("the notebook
   // goes on the bookshelf"), or nullopt.
   std::optional<ObjectId> thing_corrected(const language::Reply& reply) const;

@@ -218,6 +218,8 @@ std::string forgot_where_kind_goes(std::string_view category) {
   return "I forgot where " + kind_goes(category) + "; I will ask when I meet one.";
 }
 
+std::string remember_again(std::string_view category) { return "I know again where " + kind_goes(category) + "."; }
+
 std::string which_rule_to_forget(std::string_view what, const std::vector<std::string>& rules,
                                  std::string_view first_to_forget) {
   return "I have several rules about " + std::string(trim(what)) + ": " + join(rules, "; ") +

@@ -120,6 +120,8 @@ std::string which_kind_to_forget(const std::vector<std::string>& categories);
 std::string nothing_to_forget(std::optional<std::string_view> category, std::string_view said);
 // "I forgot where the mug goes; I will ask when I meet one."
 std::string forgot_where_kind_goes(std::string_view category);
+// An undo of "forget mug": "I know again where the mug goes."
+std::string remember_again(std::string_view category);
 // Several rules fit what was named: "I have several rules about fruit: ...;
 // .... Say which, for example "forget fruit on the table"."
 std::string which_rule_to_forget(std::string_view what, const std::vector<std::string>& rules,

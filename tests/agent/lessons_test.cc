@@ -94,29 +94,59 @@ TEST_F(LessonsTest, UndoRevertsTheLastLessonsWritesAndPutsTheProgressBack) {
   EXPECT_EQ(lessons.last_reply(), nullptr);
 }
 
-TEST_F(LessonsTest, WhatIsForgottenForGoodNoUndoBringsBack) {
+TEST_F(LessonsTest, APersonsRuleSaidInALessonIsNamedByItsUndo) {
   Lessons lessons(nullptr, *scenario_.world.domain);
   teaching::Curriculum progress;
   Knowledge knowledge;
   knowledge.goals.add(goal("ketchup", "fridge"));
-  lessons.begin("socks too", progress, knowledge, scenario_.world.state, 0);
-  // Without a store nothing is written, but a person's rule is still kept
-  // in the lesson, so that undo can name it.
   ClassRule rule;
   rule.class_name = "fruit";
   rule.source = RuleSource::kPerson;
   knowledge.forgotten_rules.add(rule);
+  lessons.begin("fruit goes in the bowl", progress, knowledge, scenario_.world.state, 0);
+  // Without a store nothing is written, but a person's rule is still kept
+  // in the lesson, so that undo can name it.
   ASSERT_TRUE(lessons.learn_class_rule(knowledge, rule));
   // Said again, it is no longer forgotten.
   EXPECT_FALSE(knowledge.forgot(rule));
   EXPECT_NE(knowledge.class_rules.find(rule), nullptr);
-  lessons.forget_goal(goal("ketchup", "fridge").key);
-  knowledge.goals.remove(goal("ketchup", "fridge").key);
   auto undone = lessons.undo(progress, knowledge);
   ASSERT_TRUE(undone.has_value() && undone->has_value());
-  EXPECT_TRUE(knowledge.goals.all().empty());
+  EXPECT_THAT(knowledge.goals.all(), ElementsAre(goal("ketchup", "fridge")));
+  EXPECT_EQ(knowledge.class_rules.find(rule), nullptr);
+  EXPECT_TRUE(knowledge.forgot(rule)) << "forgotten again, as before the lesson";
   ASSERT_EQ((*undone)->class_rules.size(), 1u);
   EXPECT_EQ((*undone)->class_rules.front().class_name, "fruit");
+}
+
+TEST_F(LessonsTest, AGoalForgottenComesBackWithTheUndoRightAfter) {
+  auto store = KnowledgeStore::open(path_);
+  ASSERT_TRUE(store.has_value()) << store.error().describe();
+  Lessons lessons(&*store, *scenario_.world.domain);
+  teaching::Curriculum progress;
+  Knowledge knowledge;
+  lessons.begin("fridge", progress, knowledge, scenario_.world.state, 0);
+  ASSERT_TRUE(lessons.learn_goal(knowledge, goal("ketchup", "fridge")));
+  // "forget ketchup", a lesson of its own.
+  lessons.begin("forget ketchup", progress, knowledge, scenario_.world.state, 4);
+  ASSERT_TRUE(lessons.forget_goal(knowledge, goal("ketchup", "fridge").key));
+  EXPECT_TRUE(knowledge.goals.all().empty());
+  EXPECT_TRUE(stored().goals.all().empty());
+  // Forgetting what is not known writes nothing.
+  ASSERT_TRUE(lessons.forget_goal(knowledge, goal("mustard", "fridge").key));
+
+  auto undone = lessons.undo(progress, knowledge);
+  ASSERT_TRUE(undone.has_value() && undone->has_value());
+  ASSERT_EQ((*undone)->remembered.size(), 1u);
+  EXPECT_EQ((*undone)->remembered.front().category, "ketchup");
+  EXPECT_THAT(knowledge.goals.all(), ElementsAre(goal("ketchup", "fridge")));
+  EXPECT_THAT(stored().goals.all(), ElementsAre(goal("ketchup", "fridge")));
+  // The lesson that taught it, undone next: gone from both.
+  auto first = lessons.undo(progress, knowledge);
+  ASSERT_TRUE(first.has_value() && first->has_value());
+  EXPECT_TRUE((*first)->remembered.empty());
+  EXPECT_TRUE(knowledge.goals.all().empty());
+  EXPECT_TRUE(stored().goals.all().empty());
 }
 
 }  // namespace

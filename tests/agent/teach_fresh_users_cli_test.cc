@@ -277,5 +277,44 @@ TEST_F(FreshUsers, AnotherThingsGoalIsNotTheOneAskedAbout) {
   EXPECT_THAT(out, Not(HasSubstr("So the folder goes in the top drawer"))) << out;
 }
 
+// The home office's teacher forgot a goal, then said where the thing goes
+// and, later, "undo" to take the forget back. Before: the goal said after
+// the forget was refused ("I asked for the next step of the task"), and
+// "undo" undid the answer before the forget instead.
+TEST_F(FreshUsers, AGoalForgottenIsSaidAgainOrTakenBackByUndo) {
+  const std::vector<std::string> start = {"tidy the office", "start with the desk", "papers go in the filing cabinet",
+                                          "cupboard", "top drawer", "same", "trash", "bottom drawer",
+                                          "forget the stapler"};
+  std::vector<std::string> replies = start;
+  replies.insert(replies.end(), {"the stapler goes in the bottom drawer", "that's all"});
+  std::string out = teach("office.yaml", replies);
+  EXPECT_THAT(out, HasSubstr("Instructor: the stapler goes in the bottom drawer\n"
+                             "Agent: So the stapler goes in the bottom drawer, and the bottom drawer ends closed.\n"
+                             "Agent: I opened the top drawer, took the stapler out of it"))
+      << out;
+  replies = start;
+  replies.insert(replies.end(), {"undo", "status", "that's all"});
+  out = teach("office.yaml", replies, "second.sqlite");
+  EXPECT_THAT(out, HasSubstr("Instructor: undo\nAgent: I know again where the stapler goes.\n")) << out;
+  EXPECT_THAT(out, Not(HasSubstr("I forgot what you told me last"))) << out;
+  EXPECT_THAT(out, HasSubstr("In the bottom drawer: the headset.")) << out;
+}
+
+// An undo after an undo goes straight back: the headset taken out of the
+// bottom drawer by the first is not put back in only to be taken out
+// again by the second, and what was opened is closed again.
+TEST_F(FreshUsers, ASecondUndoGoesStraightBack) {
+  const std::string out = teach("office.yaml", {"tidy the office", "start with the desk", "papers go in the filing cabinet",
+                                                "cupboard", "top drawer", "same", "trash", "bottom drawer", "undo",
+                                                "undo", "that's all"});
+  EXPECT_THAT(out, HasSubstr("Agent: To put things back as they were, I opened the bottom drawer, took the headset "
+                             "out of it, put it on the desk, and closed the bottom drawer.\n"))
+      << out;
+  EXPECT_THAT(out, HasSubstr("Agent: I forgot what you told me last: \"trash\".\n"
+                             "Agent: To put things back as they were, I took the banana peel out of the wastebasket "
+                             "and put it on the desk.\n"))
+      << out;
+}
+
 }  // namespace
 }  // namespace apprentice
