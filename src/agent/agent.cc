@@ -190,7 +190,10 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::learn_task_step() {
   }
   if (const auto* subtask = std::get_if<language::SubtaskNamed>(&reply)) return start_subtask(*subtask);
   if (const auto* given = std::get_if<language::GoalGiven>(&reply))
-    if (const std::optional<ObjectId> thing = thing_corrected(reply)) return correct_goal(*thing, *given, heard->text);
+    if (const std::optional<ObjectId> thing = thing_corrected(reply)) {
+      if (auto s = correct_goal(*thing, *given, heard->text); !s) return stop(s.error());
+      return {};
+    }
   if (std::holds_alternative<language::Finished>(reply)) {
     progress_.finishing = true;
     say(language::read_back_task_done(progress_.current.has_value()));

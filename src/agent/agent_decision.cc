@@ -144,7 +144,7 @@ TaskLearningAgent::Session::answer_to_proposal(const Question& asked, ObjectId o
     if (where && yes_no->yes && asked.goal && where->goal == *asked.goal) {
       begin_lesson(text);
       const std::string source = "instructor: " + apprentice::quoted(text);
-      if (auto s = learn_goals_of_others(object, object, *where, source); !s) return stop(s.error());
+      if (auto s = learn_goals_of_others(object, object, *where, text, source); !s) return stop(s.error());
       return ProposalAnswer{true, std::nullopt};
     }
     if (!where) {
@@ -163,7 +163,7 @@ TaskLearningAgent::Session::answer_to_proposal(const Question& asked, ObjectId o
   say(language::read_back_goal(w, object, given.goal) + (say_norm ? " " + language::closing_norm_note() : ""));
   const std::string source = "instructor: " + apprentice::quoted(heard->text);
   if (auto s = learn_goal(object, given.goal, source); !s) return stop(s.error());
-  if (auto s = learn_goals_of_others(object, object, given, source); !s) return stop(s.error());
+  if (auto s = learn_goals_of_others(object, object, given, heard->text, source); !s) return stop(s.error());
   return ProposalAnswer{false, given.goal};
 }
 

@@ -189,7 +189,7 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
     if (corrected && heard->reply) {
       begin_lesson(heard->text);
       if (auto s = correct_goal(*corrected, std::get<language::GoalGiven>(*heard->reply), heard->text); !s)
-        return tl::unexpected(s.error());
+        return stop(s.error());
       continue;
     }
     if (heard->rule_heard) {
@@ -220,7 +220,7 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
     say((ahead ? language::read_back_goal_for_later(w, about, given.goal) : language::read_back_goal(w, about, given.goal)) +
         (say_norm ? " " + language::closing_norm_note() : ""));
     if (auto s = learn_goal(about, given.goal, source); !s) return stop(s.error());
-    if (auto s = learn_goals_of_others(object, about, given, source); !s) return stop(s.error());
+    if (auto s = learn_goals_of_others(object, about, given, heard->text, source); !s) return stop(s.error());
     if (ahead) continue;
     report.goal_source = GoalSource::kInstructor;
     return std::optional<Goal>(given.goal);
@@ -345,9 +345,12 @@ language::GoalGiven TaskLearningAgent::Session::with_doors_closed(ObjectId about
 }
 
 Status TaskLearningAgent::Session::learn_goals_of_others(ObjectId asked, ObjectId about, const language::GoalGiven& given,
-                                                        const std::string& source) {
+                                                        const std::string& text, const std::string& source) {
   const World& w = world();
   std::vector<ObjectId> same, learned, later;
+  // Things dealt with already whose goal the reply corrects ("and the pen
+  // too, pens aren't books", after the pen went on the bookshelf).
+  std::vector<std::pair<ObjectId, Goal>> corrected;
   for (const Goal& goal : given.others) {
     std::vector<ObjectId> items;
     for (ObjectId o : goal.objects())
@@ -356,6 +359,7 @@ Status TaskLearningAgent::Session::learn_goals_of_others(ObjectId asked, ObjectI
     const ObjectId item = items.front();
     if (!still_to_come(item)) {
       if (!progress_.evaluated.count(item)) later.push_back(item);
+      else if (!goals_corrected_by(item).empty() && !goal.satisfied_by(w.state)) corrected.emplace_back(item, goal);
       continue;
     }
     if (auto s = learn_goal(item, goal, source); !s) return s;
@@ -373,6 +377,11 @@ Status TaskLearningAgent::Session::learn_goals_of_others(ObjectId asked, ObjectI
     else say(language::read_back_goal(w, item, goal));
   }
   for (const std::string& line : language::goals_for_others(w, same, learned, later)) say(line);
+  for (const auto& [item, goal] : corrected) {
+    language::GoalGiven correction;
+    correction.goal = goal;
+    if (auto s = correct_goal(item, correction, text); !s) return s;
+  }
   return {};
 }
 
@@ -445,15 +454,14 @@ std::optional<ObjectId> TaskLearningAgent::Session::thing_corrected(const langua
   return std::nullopt;
 }
 
-TaskLearningAgent::Session::Step TaskLearningAgent::Session::correct_goal(ObjectId object,
-                                                                          const language::GoalGiven& said,
-                                                                          const std::string& text) {
+Status TaskLearningAgent::Session::correct_goal(ObjectId object, const language::GoalGiven& said,
+                                               const std::string& text) {
   const World& w = world();
   bool say_norm = false;
   const language::GoalGiven given = with_doors_closed(object, said, say_norm);
   const std::string source = "instructor: " + apprentice::quoted(text) + " (a correction)";
   for (const GoalKey& key : goals_corrected_by(object))
-    if (auto s = learn_goal(object, given.goal, source, key); !s) return stop(s.error());
+    if (auto s = learn_goal(object, given.goal, source, key); !s) return s;
   say(language::read_back_goal(w, object, given.goal) + (say_norm ? " " + language::closing_norm_note() : ""));
   // The things of its kind already put away go where it now says, by the
   // agent's own search; what was closed is closed again after.

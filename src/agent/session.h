@@ -178,7 +178,7 @@ class TaskLearningAgent::Session : private ActingHelp {
   std::optional<ObjectId> thing_corrected(const language::Reply& reply) const;
   // Learns the corrected goal for each of those keys and moves the things
   // of the kind already dealt with to where it now says (agent_goals.cc).
-  Step correct_goal(ObjectId object, const language::GoalGiven& said, const std::string& text);
+  Status correct_goal(ObjectId object, const language::GoalGiven& said, const std::string& text);
   // Asks the LLM, the first time a thing needs it this session, for the
   // summary of what was taught and where each thing to place goes
   // (GoalSources::consult_llm). Nothing without an LLM in the condition.
@@ -256,8 +256,10 @@ class TaskLearningAgent::Session : private ActingHelp {
   // `say_norm` is set the first time in the session that a closing came
   // from the norm alone: the read-back then adds closing_norm_note().
   language::GoalGiven with_doors_closed(ObjectId about, language::GoalGiven given, bool& say_norm);
+  // Things already dealt with that it gives a goal they do not meet are
+  // corrected (correct_goal), `text` being the teacher's words.
   Status learn_goals_of_others(ObjectId asked, ObjectId about, const language::GoalGiven& given,
-                               const std::string& source);
+                               const std::string& text, const std::string& source);
   // Whether `item` is in or on a place of the current subtask and not yet
   // dealt with: a goal said for it now will be used when it comes.
   bool still_to_come(ObjectId item) const;

@@ -20,6 +20,9 @@ bool plural_name(const World& world, ObjectId object) {
 // mentioned can become "it".
 struct SpokenClause {
   std::vector<std::variant<std::string, ObjectId>> parts;
+  // Things of the first thing's name done the same way with it, said with
+  // it as one ("two gardening gloves"); see report_actions.
+  std::vector<ObjectId> along;
 
   SpokenClause& word(std::string w) {
     parts.emplace_back(std::move(w));
@@ -61,7 +64,11 @@ struct SpokenClause {
         words.push_back(*w);
       } else {
         ObjectId o = std::get<ObjectId>(part);
-        if (it && *it == o && !pronoun_used) {
+        if (!along.empty() && first_thing() == o) {
+          std::vector<ObjectId> together{o};
+          together.insert(together.end(), along.begin(), along.end());
+          words.push_back(spoken_things(world, together));
+        } else if (it && *it == o && !pronoun_used) {
           std::string pronoun = object_pronoun(world, o);
           // A pronoun goes before the particle of a phrasal verb: "picked it up".
           const std::string suffix = " up";
@@ -494,6 +501,42 @@ std::string expected_fact(const World& world, const Literal& literal) {
 
 // --- What was done -------------------------------------------------------------
 
+// Whether `next` does to its first thing what `clause` does to its own,
+// the two things having one name: "put the gardening glove on the right
+// hook", twice.
+bool done_alike(const World& world, const SpokenClause& clause, const SpokenClause& next) {
+  if (clause.parts.size() != next.parts.size()) return false;
+  std::optional<ObjectId> first = clause.first_thing();
+  std::optional<ObjectId> other = next.first_thing();
+  if (!first || !other || *first == *other || spoken_name(world, *first) != spoken_name(world, *other)) return false;
+  bool first_seen = false;
+  for (std::size_t i = 0; i < clause.parts.size(); ++i) {
+    const ObjectId* a = std::get_if<ObjectId>(&clause.parts[i]);
+    if (a != nullptr && !first_seen) {
+      first_seen = true;
+      if (std::get_if<ObjectId>(&next.parts[i]) == nullptr) return false;
+      continue;
+    }
+    if (clause.parts[i] != next.parts[i]) return false;
+  }
+  return true;
+}
+
+// Things of one name done alike in a row are said once: "I put two
+// gardening gloves on the right hook", not "I put the gardening glove on
+// the right hook and put the gardening glove on it".
+std::vector<SpokenClause> said_together(const World& world, std::vector<SpokenClause> clauses) {
+  std::vector<SpokenClause> out;
+  for (SpokenClause& clause : clauses) {
+    if (!out.empty() && done_alike(world, out.back(), clause)) {
+      out.back().along.push_back(*clause.first_thing());
+      continue;
+    }
+    out.push_back(std::move(clause));
+  }
+  return out;
+}
+
 std::string report_actions(const World& world, std::span<const Action> actions) {
   std::vector<SpokenClause> clauses;
   for (std::size_t i = 0; i < actions.size(); ++i) {
@@ -509,6 +552,7 @@ std::string report_actions(const World& world, std::span<const Action> actions) 
     clauses.push_back(action_clause(world, a, true));
   }
   if (clauses.empty()) return "";
+  clauses = said_together(world, std::move(clauses));
   std::vector<std::string> said;
   const SpokenClause* previous = nullptr;
   for (const SpokenClause& c : clauses) {

@@ -171,6 +171,28 @@ TEST_F(Narration, ReportsWhatWasDoneWithPronouns) {
   EXPECT_EQ(report_actions(w, std::vector<Action>{action(w, "(pick-up ketchup1 table1)")}), "I picked up the ketchup.");
 }
 
+// Things of one name done alike in a row are said once; things of other
+// names, or done otherwise, are not.
+TEST_F(Narration, ThingsOfOneNameDoneAlikeAreSaidOnce) {
+  Scenario shed = load_or_die(testing::source_path("tests/agent/data/fresh-users/shed.yaml"));
+  const World& w = shed.world;
+  std::vector<Action> both = {action(w, "(pick-up gardening-glove1 potting-bench1)"),
+                              action(w, "(put-on gardening-glove1 hook2)"),
+                              action(w, "(pick-up gardening-glove2 potting-bench1)"),
+                              action(w, "(put-on gardening-glove2 hook2)")};
+  EXPECT_EQ(report_actions(w, both), "I put two gardening gloves on the right hook.");
+  std::vector<Action> apart = {action(w, "(pick-up gardening-glove1 potting-bench1)"),
+                               action(w, "(put-on gardening-glove1 hook1)"),
+                               action(w, "(pick-up gardening-glove2 potting-bench1)"),
+                               action(w, "(put-on gardening-glove2 hook2)")};
+  EXPECT_EQ(report_actions(w, apart),
+            "I put the gardening glove on the left hook and put the gardening glove on the right hook.");
+  std::vector<Action> others = {action(w, "(pick-up gardening-glove1 potting-bench1)"),
+                                action(w, "(put-on gardening-glove1 hook2)"),
+                                action(w, "(pick-up trowel1 potting-bench1)"), action(w, "(put-on trowel1 hook2)")};
+  EXPECT_EQ(report_actions(w, others), "I put the gardening glove on the right hook and put the trowel on it.");
+}
+
 TEST_F(Narration, RefusalsSayWhyInPlainEnglish) {
   const World& w = kitchen_.world;
   EXPECT_EQ(refusal(w, action(w, "(put-in ketchup1 fridge1)")),

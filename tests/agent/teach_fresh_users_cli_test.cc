@@ -258,7 +258,7 @@ TEST_F(FreshUsers, ACorrectionAtAnotherThingsQuestionIsMade) {
                                               "now the floor", "fair enough. actually the gloves should hang on the right hook"});
   EXPECT_THAT(out, HasSubstr("Instructor: fair enough. actually the gloves should hang on the right hook\n"
                              "Agent: So the gardening glove goes on the right hook.\n"
-                             "Agent: I put the gardening glove on the right hook and put the gardening glove on it.\n"
+                             "Agent: I put two gardening gloves on the right hook.\n"
                              "Agent: Where should the garden hose on the floor go?\n"))
       << out;
 }

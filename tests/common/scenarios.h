@@ -9,6 +9,7 @@
 
 namespace apprentice::testing {
 
+// A scenario whose domain is named ("domain: kitchen") finds the shipped one.
 Scenario load_or_die(const std::filesystem::path& path);
 // A shipped scenario by name ("tidy-kitchen"), loaded or die.
 Scenario shipped_scenario(std::string_view name);

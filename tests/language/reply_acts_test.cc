@@ -583,10 +583,10 @@ TEST_F(FreshUserRoom, ItAndTheyAfterOtherThingsAreThoseThings) {
 // A slip of a name here is asked about wherever the reading fails, and
 // "sorry, typo" after an answer corrects nothing.
 TEST_F(FreshUserRoom, SlipsAreAskedAboutAndSorryTypoCorrectsNothing) {
-  const Reply slip = read_acts(grounder(), office_->world,
-                               ReplyContext{Asked::kGoal, office_->world.universe->find("receipt1")},
-                               "filing cabnet with the papers")
-                         .acts.front();
+  ReplyContext at_goal;
+  at_goal.asked = Asked::kGoal;
+  at_goal.object = office_->world.universe->find("receipt1");
+  const Reply slip = read_acts(grounder(), office_->world, at_goal, "filing cabnet with the papers").acts.front();
   ASSERT_TRUE(std::holds_alternative<Unusable>(slip));
   EXPECT_EQ(std::get<Unusable>(slip).reason, "I do not know the word \"cabnet\". Did you mean \"cabinet\"?");
   EXPECT_EQ(read(*office_, Asked::kGoal, "receipt1", "top drawer. sorry, typo"), "goal (in receipt1 drawer1)");
