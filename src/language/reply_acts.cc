@@ -115,8 +115,37 @@ std::vector<Action> other_closings(const Grounder& grounder, const World& world,
 
 }  // namespace
 
+namespace {
+
+// "pens aren't books", "they're clothes", "because it's trash": a reason
+// said after the "too"s, which says no place and names nothing to move.
+bool is_trailing_reason(const Words& piece) {
+  if (piece.empty() || piece.size() > 6) return false;
+  const bool says_why = std::any_of(piece.begin(), piece.end(), [](const std::string& w) {
+    return is_copula(w) || is_negation(w) ||
+           is_one_of(w, {"arent", "aren't", "isnt", "isn't", "because", "since", "cause", "cuz", "theyre", "they're",
+                         "its", "it's"});
+  });
+  const bool says_where = std::any_of(piece.begin(), piece.end(), [](const std::string& w) {
+    return is_one_of(w, {"in", "on", "into", "onto", "inside", "there", "go", "goes", "put", "too", "well"});
+  });
+  return says_why && !says_where;
+}
+
+}  // namespace
+
 std::pair<std::string, std::vector<std::string>> without_trailing_toos(std::string_view answer) {
-  const Words words = reply_words(answer);
+  Words words = reply_words(answer);
+  // A reason after the "too"s ("and the pen too, pens aren't books") is
+  // left out: the "too"s before it are the last clauses.
+  for (std::size_t k = words.size(); k-- > 0;) {
+    if (!is_one_of(words[k], {".", ";", "!", ","})) continue;
+    Words last(words.begin() + static_cast<std::ptrdiff_t>(k + 1), words.end());
+    while (!last.empty() && is_one_of(last.back(), {".", "!"})) last.pop_back();
+    if (last.empty()) continue;
+    if (is_trailing_reason(last) && k > 0 && words[k - 1] == "too") words.resize(k);
+    break;
+  }
   std::vector<std::string> toos;
   auto says_a_place = [](const Words& clause) {
     return std::any_of(clause.begin(), clause.end(), [](const std::string& w) {

@@ -133,6 +133,10 @@ std::optional<Reply> goal_given_last(const Grounder& grounder, const World& worl
     if (std::any_of(things.begin(), things.end(), [&](ObjectId o) { return kind_of(world, o) == kind; })) who = c.object;
     for (ObjectId o : things)
       if (!who && to_come(c, o)) who = o;
+    // "and the pen too, pens aren't books": a thing already dealt with, its
+    // goal corrected (the agent moves it).
+    for (ObjectId o : things)
+      if (!who && std::find(c.dealt_with.begin(), c.dealt_with.end(), o) != c.dealt_with.end()) who = o;
     if (!who) return std::nullopt;
     if (std::find(to.begin(), to.end(), *who) == to.end()) to.push_back(*who);
   }

@@ -316,5 +316,19 @@ TEST_F(FreshUsers, ASecondUndoGoesStraightBack) {
       << out;
 }
 
+// "no the charger goes in the top drawer. and the pen too, pens arent
+// books", after the pen went on the bookshelf (the dorm room's teacher):
+// a thing put away, said "too" at another thing's question, is moved
+// where it now goes. Before: the pen's part was dropped without a word.
+TEST_F(FreshUsers, AThingPutAwaySaidTooIsMoved) {
+  const std::string out = teach("office.yaml", {"tidy the office", "start with the desk", "papers go in the filing cabinet",
+                                                "cupboard", "top drawer", "bottom drawer", "trash",
+                                                "bottom drawer, and the stapler too, it is heavy", "that's all"});
+  EXPECT_THAT(out, HasSubstr("Agent: So the stapler goes in the bottom drawer, and the bottom drawer ends closed.\n"
+                             "Agent: I opened the top drawer, took the stapler out of it, put it on the desk, closed "
+                             "the top drawer, opened the bottom drawer, put the stapler in it, and closed it.\n"))
+      << out;
+}
+
 }  // namespace
 }  // namespace apprentice

@@ -118,6 +118,22 @@ TEST_F(ReplyActsTest, TheThingAskedAboutLeftByNameIsLeft) {
 // "pan in the sink, knife too": the things said "too" after the answer go
 // where it goes. With several places said, which one "too" repeats is not
 // guessed.
+// "no the charger goes in the top drawer. and the pen too, pens arent
+// books" (a fresh user, after the pen went on the bookshelf): a thing said
+// too that was dealt with already gets the same goal, for the agent to
+// correct, and a reason said after the "too"s is not one of them.
+TEST_F(ReplyActsTest, AThingSaidTooMayBeOneDealtWithAndAReasonMayFollow) {
+  ReplyContext c = goal_question("toothbrush1");
+  c.dealt_with = {id("comb1")};
+  EXPECT_EQ(acts(c, "top drawer, and the comb too, combs arent brushes"),
+            "goal (in toothbrush1 drawer1); also (in comb1 drawer1)");
+  EXPECT_EQ(acts(c, "top drawer. comb too because it is small"),
+            "goal (in toothbrush1 drawer1); also (in comb1 drawer1)");
+  // Neither to come nor dealt with: nothing to give it.
+  c.dealt_with.clear();
+  EXPECT_EQ(acts(c, "top drawer, and the comb too"), "goal (in toothbrush1 drawer1)");
+}
+
 TEST_F(ReplyActsTest, ThingsSaidTooAfterTheAnswerGoTheSamePlace) {
   ReplyContext c = goal_question("toothbrush1");
   c.still_to_come = {id("toothpaste1"), id("comb1")};
