@@ -322,6 +322,8 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
         // A "no" to several things: at least one does not go there. Ask
         // about this one alone.
         together_refused = true;
+        proposals = proposals_for(object);  // with a rule said along with the "no"
+        if (proposals.empty()) return std::optional<Goal>();
         continue;
       }
       if (answer->yes)
@@ -337,7 +339,9 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
         // An exception: this kind does not go there, whatever the class says.
         sources_.refuse(goal_key(object).category, *decision.destination);
         refused_alone = true;
-        proposals = without_destination(proposals, *decision.destination);
+        // Proposed again, without what was refused: a rule said with the
+        // "no" ("lol no. books and notebooks go on the shelf") now speaks.
+        proposals = proposals_for(object);
         if (proposals.empty()) return std::optional<Goal>();
         continue;
       }

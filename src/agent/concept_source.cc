@@ -35,6 +35,8 @@ constexpr double kCollectiveSize = 5;
 
 // The weights of a word's senses, most frequent first.
 constexpr double kSenseWeights[] = {1.0, 0.5, 0.25};
+// The weight of a class word's senses beyond those senses() chooses.
+constexpr double kOtherSenseWeight = 0.25;
 
 bool is_article(std::string_view word) { return word == "the" || word == "a" || word == "an"; }
 
@@ -239,6 +241,21 @@ std::vector<ConceptClass> LexicalConcepts::classes_named(std::string_view words)
     if (auto s = wordnet->synset(sense))
       for (language::SynsetOffset parent : s->hypernyms)
         out.push_back(ConceptClass{concept_id(parent), class_name(parent), weight, class_size(parent), 1});
+  }
+  // A class word's other senses too, less weighed: a thing whose only
+  // sense is not a physical one is still of the class said ("books" are
+  // bound pages to WordNet first, a textbook a published work; "a textbook
+  // is a book" all the same). A thing with a physical sense is profiled by
+  // that one, so these match only such things.
+  if (wordnet != nullptr) {
+    std::vector<language::SynsetOffset> other = wordnet->noun_senses(phrase);
+    const std::size_t space = phrase.rfind(' ');
+    const std::string before = space == std::string::npos ? "" : phrase.substr(0, space + 1);
+    for (const std::string& base : wordnet->noun_base_forms(space == std::string::npos ? phrase : phrase.substr(space + 1)))
+      for (language::SynsetOffset o : wordnet->noun_senses(before + base)) other.push_back(o);
+    for (language::SynsetOffset o : other)
+      if (std::none_of(out.begin(), out.end(), [&](const ConceptClass& c) { return c.id == concept_id(o); }))
+        out.push_back(ConceptClass{concept_id(o), class_name(o), kOtherSenseWeight, class_size(o), 0});
   }
   return out;
 }

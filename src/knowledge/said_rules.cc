@@ -65,9 +65,13 @@ ClauseEvidence clause_evidence(const ClassRule& as_said, const KindProfile& thin
   if (!rule.class_id.empty()) {
     e.wordnet = std::any_of(thing.classes.begin(), thing.classes.end(), [&](const ConceptClass& c) { return c.id == rule.class_id; });
   } else if (!rule.class_name.empty()) {
+    // A class word's less usual senses ("books" as published works) count
+    // only for a thing's first sense (a textbook), not for a sense of its
+    // name rarely meant (a plastic cup's "cup" as a punch, which is food).
     for (const ConceptClass& said : concepts.classes_named(rule.class_name))
       for (const ConceptClass& c : thing.classes)
-        if (c.id == said.id) (said.depth == 0 ? e.wordnet : e.wordnet_parent) = true;
+        if (c.id == said.id && (said.weight >= kUsualSenseWeight || c.weight >= 1.0))
+          (said.depth == 0 ? e.wordnet : e.wordnet_parent) = true;
     if (e.wordnet) e.wordnet_parent = false;
     e.wordnet_knows_both = !thing.classes.empty() && !concepts.classes_named(rule.class_name).empty();
     // The class's own word in the thing's name: "toy hammer", "tissue box".

@@ -85,6 +85,10 @@ inline constexpr double kNearClassCosine = 0.5;
 // words, and say nothing of this thing ("computer" holds 33).
 inline constexpr double kNearClassMostKinds = 200;
 
+// A class word's senses weighed less than this (ConceptClass::weight) are
+// its less usual ones: they put only a thing's first sense in the class.
+inline constexpr double kUsualSenseWeight = 0.5;
+
 // How many steps above a thing its WordNet classes' names count.
 inline constexpr int kAncestorDepth = 4;
 

@@ -10,6 +10,7 @@
 #include "agent/goal_proposals.h"
 #include "common/paths.h"
 #include "knowledge/induction.h"
+#include "knowledge/said_rules.h"
 
 namespace apprentice {
 namespace {
@@ -143,6 +144,25 @@ TEST_F(ConceptSourceTest, TheGeneralizationsAreSaidInEnglishWithTheirEvidence) {
   knowledge.goals.remove(GoalKey{"tidy living room", "clear", "apple", "cart"});
   for (const std::string& line : explain_preferences(knowledge, concepts_))
     EXPECT_THAT(line, ::testing::Not(::testing::HasSubstr("the apple")));
+}
+
+// "books and notebooks go on the shelf" (a fresh user's dorm room): WordNet's
+// "books" are bound pages first, a textbook a published work, which is a
+// book all the same. A class word's less usual senses put a thing in the
+// class by the thing's first sense only: a plastic cup is no food for
+// being, rarely, a punch.
+TEST_F(ConceptSourceTest, AClassWordsOtherSensesCountForAThingsFirstSense) {
+  auto rule = [](const std::string& cls) {
+    ClassRule said;
+    said.class_name = cls;
+    said.source = RuleSource::kPerson;
+    return said;
+  };
+  EXPECT_TRUE(clause_evidence(rule("books"), concepts_.profile("textbook"), concepts_).wordnet);
+  EXPECT_TRUE(clause_evidence(rule("books"), concepts_.profile("business textbook"), concepts_).wordnet);
+  EXPECT_FALSE(clause_evidence(rule("books"), concepts_.profile("pen"), concepts_).wordnet);
+  EXPECT_TRUE(clause_evidence(rule("food"), concepts_.profile("ice cream"), concepts_).wordnet);
+  EXPECT_FALSE(clause_evidence(rule("food"), concepts_.profile("plastic cup"), concepts_).wordnet);
 }
 
 }  // namespace
