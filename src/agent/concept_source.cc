@@ -29,6 +29,18 @@ int physical_rank(int lexicographer_file) {
   }
 }
 
+// A sense's rank: its lexicographer file's, else that of a parent ranked
+// 2: WordNet files a notebook (a book with blank pages, under "book,
+// volume") among communication, yet one holds and shelves it.
+int sense_rank(const language::WordNet& wordnet, language::SynsetOffset sense) {
+  auto s = wordnet.synset(sense);
+  if (!s) return 0;
+  if (int rank = physical_rank(s->lexicographer_file); rank > 0) return rank;
+  for (language::SynsetOffset parent : s->hypernyms)
+    if (auto p = wordnet.synset(parent); p && physical_rank(p->lexicographer_file) == 2) return 2;
+  return 0;
+}
+
 // A class word's synset holding at most this many synsets (itself
 // included) is a collective name for its parent's things.
 constexpr double kCollectiveSize = 5;
@@ -98,10 +110,7 @@ std::vector<std::pair<language::SynsetOffset, double>> LexicalConcepts::senses(c
   const language::WordNet* wordnet = lexicon_->wordnet();
   if (wordnet == nullptr) return out;
   std::vector<language::SynsetOffset> offsets = wordnet->noun_senses(lemma);
-  auto names_a_physical_thing = [&](language::SynsetOffset o) {
-    auto s = wordnet->synset(o);
-    return s && physical_rank(s->lexicographer_file) > 0;
-  };
+  auto names_a_physical_thing = [&](language::SynsetOffset o) { return sense_rank(*wordnet, o) > 0; };
   // Else by the base form of its last word ("potato chips" -> "potato
   // chip"): WordNet's morphology of a whole collocation tries every word
   // and is slow. A plural WordNet knows only as something else also gets
@@ -118,7 +127,7 @@ std::vector<std::pair<language::SynsetOffset, double>> LexicalConcepts::senses(c
   std::vector<language::SynsetOffset> physical;
   for (int rank : {2, 1})
     for (language::SynsetOffset o : offsets)
-      if (auto s = wordnet->synset(o); s && physical_rank(s->lexicographer_file) == rank) physical.push_back(o);
+      if (sense_rank(*wordnet, o) == rank) physical.push_back(o);
   const std::vector<language::SynsetOffset>& chosen = physical.empty() ? offsets : physical;
   for (std::size_t i = 0; i < chosen.size() && i < std::size(kSenseWeights); ++i) out.emplace_back(chosen[i], kSenseWeights[i]);
   return out;

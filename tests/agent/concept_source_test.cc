@@ -148,7 +148,7 @@ TEST_F(ConceptSourceTest, TheGeneralizationsAreSaidInEnglishWithTheirEvidence) {
 
 // "books and notebooks go on the shelf" (a fresh user's dorm room): WordNet's
 // "books" are bound pages first, a textbook a published work, which is a
-// book all the same. A class word's less usual senses put a thing in the
+// book all the same, and a notebook a book with blank pages. A class word's less usual senses put a thing in the
 // class by the thing's first sense only: a plastic cup is no food for
 // being, rarely, a punch.
 TEST_F(ConceptSourceTest, AClassWordsOtherSensesCountForAThingsFirstSense) {
@@ -160,6 +160,9 @@ TEST_F(ConceptSourceTest, AClassWordsOtherSensesCountForAThingsFirstSense) {
   };
   EXPECT_TRUE(clause_evidence(rule("books"), concepts_.profile("textbook"), concepts_).wordnet);
   EXPECT_TRUE(clause_evidence(rule("books"), concepts_.profile("business textbook"), concepts_).wordnet);
+  // A notebook is filed among communication, under "book, volume": a
+  // sense under a physical thing is one too (not only the notebook computer).
+  EXPECT_TRUE(clause_evidence(rule("books"), concepts_.profile("notebook"), concepts_).wordnet);
   EXPECT_FALSE(clause_evidence(rule("books"), concepts_.profile("pen"), concepts_).wordnet);
   EXPECT_TRUE(clause_evidence(rule("food"), concepts_.profile("ice cream"), concepts_).wordnet);
   EXPECT_FALSE(clause_evidence(rule("food"), concepts_.profile("plastic cup"), concepts_).wordnet);
