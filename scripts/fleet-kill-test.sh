@@ -160,7 +160,8 @@ for w in "${worlds[@]}"; do
     alone=$((alone + 1))
   else
     needed_help+=("$w")
-    echo "  $w, run alone: $(tail -1 "$work/run.$w")"
+    echo "  $w, run alone:"
+    grep -E "^(Performed|Not done|Would need|I asked|No help)" "$work/run.$w" | sed 's/^/    /' || tail -3 "$work/run.$w"
     # A world whose task another world shares may have had a goal of its
     # own replaced by the other's (one household, one goal per key): not
     # a loss. One with a task of its own must be done alone.

@@ -310,6 +310,7 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
               : language::ask_goal_proposed(w, object, *goal, evidence, others);
       Question q = question(QuestionKind::kConfirmGoal, asked, object, goal);
       for (const auto& entry : together) q.together.push_back(entry.first);
+      const std::size_t rules_before = sources_.said_rules().all().size();
       auto answer = answer_to_proposal(q, object);
       if (!answer) return tl::unexpected(answer.error());
       if (answer->ended) {
@@ -322,7 +323,8 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
         // A "no" to several things: at least one does not go there. Ask
         // about this one alone.
         together_refused = true;
-        proposals = proposals_for(object);  // with a rule said along with the "no"
+        // A rule said along with the "no" speaks now.
+        if (sources_.said_rules().all().size() > rules_before) proposals = proposals_for(object);
         if (proposals.empty()) return std::optional<Goal>();
         continue;
       }
@@ -339,9 +341,12 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
         // An exception: this kind does not go there, whatever the class says.
         sources_.refuse(goal_key(object).category, *decision.destination);
         refused_alone = true;
-        // Proposed again, without what was refused: a rule said with the
-        // "no" ("lol no. books and notebooks go on the shelf") now speaks.
-        proposals = proposals_for(object);
+        // A rule said with the "no" ("lol no. books and notebooks go on the
+        // shelf") speaks now: proposed again, without what was refused.
+        // Else the same proposals without it (no news taken mid-question).
+        proposals = sources_.said_rules().all().size() > rules_before
+                        ? proposals_for(object)
+                        : without_destination(proposals, *decision.destination);
         if (proposals.empty()) return std::optional<Goal>();
         continue;
       }
@@ -371,6 +376,7 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
       if (auto s = learn_goal(object, *goal, source); !s) return stop(s.error());
     }
     report.goal_source = goal_source_of(decision);
+    report.because = evidence;
     return goal;
   }
 }

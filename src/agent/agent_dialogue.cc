@@ -281,7 +281,7 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::obey(const language
     case language::Command::Kind::kQuit: return stop(Error{ErrorCode::kCancelled, "the instructor quit"});
     case language::Command::Kind::kWhatsLeft: answer_whats_left(); return {};
     case language::Command::Kind::kWhere: answer_where(command); return {};
-    case language::Command::Kind::kWhy: say(answer_why(so_far(), command.things), Voice::kResponse); return {};
+    case language::Command::Kind::kWhy: say(answer_why(so_far(), command.things, command.earlier), Voice::kResponse); return {};
     case language::Command::Kind::kDo: do_now(command.actions); return {};
   }
   return {};

@@ -42,6 +42,10 @@ struct ObjectReport {
   // What calibration reads.
   std::string proposed;
   double belief = 0;
+  // For a goal the agent decided (or the teacher confirmed), its evidence
+  // as said then ("with trash, as you said", "like the mug"); "" else. What
+  // "why did you put it there?" says once the goal has changed.
+  std::string because;
 };
 
 struct AgentReport {

@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "agent/explanation.h"
+#include "agent/goal_repair.h"
 #include "language/generation.h"
 #include "language/narration_conversation.h"
 
@@ -54,6 +55,51 @@ std::string why_door(const TeachingSoFar& so_far, ObjectId place) {
   return language::why_door_is(w, place, closed, left_open);
 }
 
+// How a thing's goal was come by, as the answer to "why" says it.
+std::string how_decided(GoalSource source) {
+  switch (source) {
+    case GoalSource::kInstructor: return "as you told me then";
+    case GoalSource::kMemory: return "as I had learned before";
+    case GoalSource::kAnalogy: return "by analogy with a thing you taught me";
+    case GoalSource::kLikeness: return "because it is like things you taught me";
+    case GoalSource::kRule: return "by a rule I drew from what you taught me";
+    case GoalSource::kPersonRule: return "by a rule you said";
+    case GoalSource::kLlm: return "as the language model suggested";
+    case GoalSource::kFleet: return "as other households do";
+    case GoalSource::kDecision: return "weighing what you taught me";
+    case GoalSource::kNone: break;
+  }
+  return "";
+}
+
+// "why did you put the water bottle in the wastebasket?", where it no
+// longer goes, or "why'd you throw out the bottle before?": how it came to
+// go to `place` (with none, where it went) when it was dealt with, and
+// where it goes now; nullopt when its report does not put it there, or its
+// goal still does.
+std::optional<std::string> why_earlier(const TeachingSoFar& so_far, ObjectId thing, std::optional<ObjectId> place) {
+  const World& w = so_far.world;
+  const GoalKnowledge* known = goal_known_for(so_far, w.universe->info(thing).category);
+  std::optional<Goal> now = known ? instantiate_goal(w, *known, thing) : std::nullopt;
+  if (!now) return std::nullopt;
+  const std::vector<ObjectId> now_at = destinations(w, *now, thing);
+  auto now_goes = [&](ObjectId p) { return std::find(now_at.begin(), now_at.end(), p) != now_at.end(); };
+  if (place && now_goes(*place)) return std::nullopt;
+  const std::string& name = w.universe->name(thing);
+  for (const ObjectReport& report : so_far.progress.objects) {
+    if (report.object != name || report.goal.empty()) continue;
+    auto then = parse_goal(*w.domain, *w.universe, report.goal);
+    if (!then) continue;
+    const std::vector<ObjectId> then_at = destinations(w, *then, thing);
+    const bool went_there = place ? std::find(then_at.begin(), then_at.end(), *place) != then_at.end()
+                                  : !then_at.empty() && std::none_of(then_at.begin(), then_at.end(), now_goes);
+    if (!went_there) continue;
+    const std::string how = report.because.empty() ? how_decided(report.goal_source) : report.because;
+    return language::why_earlier_placement(w, thing, *then, how, *now);
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 const GoalKnowledge* goal_known_for(const TeachingSoFar& so_far, const std::string& kind) {
@@ -71,8 +117,18 @@ const GoalKnowledge* goal_known_for(const TeachingSoFar& so_far, const std::stri
   return known;
 }
 
-std::string answer_why(const TeachingSoFar& so_far, std::span<const ObjectId> named) {
+std::string answer_why(const TeachingSoFar& so_far, std::span<const ObjectId> named, bool earlier) {
   const World& w = so_far.world;
+  // A thing and a place named, the thing no longer going there.
+  const auto first_place = std::find_if(named.begin(), named.end(), [&](ObjectId id) {
+    return w.universe->info(id).kind != ObjectKind::kItem;
+  });
+  if (!named.empty() && (earlier || first_place != named.end()) &&
+      w.universe->info(named.front()).kind == ObjectKind::kItem) {
+    const std::optional<ObjectId> place =
+        first_place != named.end() ? std::optional<ObjectId>(*first_place) : std::nullopt;
+    if (auto said = why_earlier(so_far, named.front(), place)) return *said;
+  }
   for (ObjectId id : named) {
     if (w.universe->info(id).kind == ObjectKind::kItem) {
       if (auto said = why_thing(so_far, id)) return *said;

@@ -31,7 +31,10 @@ const GoalKnowledge* goal_known_for(const TeachingSoFar& so_far, const std::stri
 // The answer to "why ...?" naming `named` (the things, then the places the
 // question names, language::Command::things): about the first named thing
 // with a goal known, or the first door named; with none, about the last
-// goal the agent decided alone, else the teacher's last lesson.
-std::string answer_why(const TeachingSoFar& so_far, std::span<const ObjectId> named);
+// goal the agent decided alone, else the teacher's last lesson. A thing
+// named with a place it no longer goes to, or asked about `earlier`
+// ("before"), is answered with how it came to go there when it was dealt
+// with, and where it goes now.
+std::string answer_why(const TeachingSoFar& so_far, std::span<const ObjectId> named, bool earlier = false);
 
 }  // namespace apprentice

@@ -218,6 +218,14 @@ std::string forgot_where_kind_goes(std::string_view category) {
   return "I forgot where " + kind_goes(category) + "; I will ask when I meet one.";
 }
 
+std::string why_earlier_placement(const World& world, ObjectId thing, const Goal& then, std::string_view how,
+                                  const Goal& now) {
+  const std::string name = spoken_name(world, thing);
+  std::string earlier = goal_outcome(world, thing, then, name);
+  return "Earlier I decided " + earlier + (how.empty() ? "" : ", " + std::string(how)) + "; since then, " +
+         goal_outcome(world, thing, now, name) + ".";
+}
+
 std::string remember_again(std::string_view category) { return "I know again where " + kind_goes(category) + "."; }
 
 std::string which_rule_to_forget(std::string_view what, const std::vector<std::string>& rules,

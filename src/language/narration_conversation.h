@@ -120,6 +120,13 @@ std::string which_kind_to_forget(const std::vector<std::string>& categories);
 std::string nothing_to_forget(std::optional<std::string_view> category, std::string_view said);
 // "I forgot where the mug goes; I will ask when I meet one."
 std::string forgot_where_kind_goes(std::string_view category);
+// "why did you put the water bottle in the wastebasket?", where it no
+// longer goes: "Earlier I put the water bottle in the wastebasket,
+// because it is like things you taught me; since then, the water bottle
+// goes on the desk." `then` is the goal it had, `how` how it came by it
+// (may be empty), `now` its goal now.
+std::string why_earlier_placement(const World& world, ObjectId thing, const Goal& then, std::string_view how,
+                                  const Goal& now);
 // An undo of "forget mug": "I know again where the mug goes."
 std::string remember_again(std::string_view category);
 // Several rules fit what was named: "I have several rules about fruit: ...;

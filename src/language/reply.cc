@@ -530,7 +530,9 @@ std::string format_reply(const World& world, const Reply& reply) {
         case Command::Kind::kQuit: return "command quit";
         case Command::Kind::kWhatsLeft: return "command whats-left";
         case Command::Kind::kWhere: return "command where " + r.argument;
-        case Command::Kind::kWhy: return "command why" + (r.things.empty() ? "" : " about " + list(r.things));
+        case Command::Kind::kWhy:
+          return std::string(r.earlier ? "command why-earlier" : "command why") +
+                 (r.things.empty() ? "" : " about " + list(r.things));
         case Command::Kind::kDo: {
           std::string out = "command do";
           for (const Action& a : r.actions) out += " " + format_action(*world.domain, u, a);

@@ -177,6 +177,9 @@ struct Command {
   // gloves, then the right basket), none for "why did you do that".
   std::vector<ObjectId> things = {};
   std::vector<Action> actions = {};   // kDo: in order
+  // kWhy: asked about what was done before ("why'd you throw out the bottle
+  // before?"), not about how things are now.
+  bool earlier = false;
 };
 
 // A phrase that fits several things: the agent should ask which.

@@ -189,7 +189,12 @@ std::optional<Command> question(const Grounder& grounder, const World& world, co
     }
   if (words.empty()) return std::nullopt;
   const std::string& first = words.front();
-  if (first == "why") return Command{Command::Kind::kWhy, join(words, " "), things_asked_why(grounder, world, words), {}};
+  if (first == "why") {
+    Command why{Command::Kind::kWhy, join(words, " "), things_asked_why(grounder, world, words), {}};
+    why.earlier = std::any_of(words.begin(), words.end(),
+                              [](const std::string& w) { return is_one_of(w, {"before", "earlier", "first"}); });
+    return why;
+  }
   if (first == "where" && words.size() > 1 &&
       is_one_of(words[1], {"is", "are", "did", "does", "do", "has", "have", "was", "were", "would", "had"})) {
     Words thing;

@@ -72,6 +72,32 @@ TEST_F(TeacherQuestions, AThingNamedIsAnsweredByItsGoalAndWhereItCameFrom) {
   EXPECT_THAT(why({id("mitten1")}), StartsWith("Because I decided where the mitten goes from weighing what I knew"));
 }
 
+// "why did you put the glove in the left basket?" and "why'd you put the
+// glove away before?", once the teacher has said it goes elsewhere: how it
+// came to go there when it was dealt with (its report), and where it goes
+// now; not the goal of now, which the teacher just gave.
+TEST_F(TeacherQuestions, AnEarlierPlacementIsAnsweredByHowItWasDecided) {
+  ObjectReport dealt;
+  dealt.object = "glove1";
+  dealt.goal = "(in glove1 basket1)";
+  dealt.goal_source = GoalSource::kLikeness;
+  dealt.because = "like the mitten";
+  progress_.objects.push_back(dealt);
+  learn("glove1", "basket2", "instructor: \"no the glove goes in the right one\" (a correction)");
+  const std::string earlier =
+      "Earlier I decided the glove goes in the left basket, like the mitten; since then, the glove goes in the right "
+      "basket.";
+  EXPECT_EQ(why({id("glove1"), id("basket1")}), earlier);
+  EXPECT_EQ(answer_why(TeachingSoFar{world(), goals_, progress_, nullptr}, std::vector<ObjectId>{id("glove1")}, true),
+            earlier);
+  // Asked about where it goes now, or with no word of before: its goal now.
+  EXPECT_THAT(why({id("glove1"), id("basket2")}), StartsWith("The glove goes in the right basket: I learned that"));
+  EXPECT_THAT(why({id("glove1")}), StartsWith("The glove goes in the right basket: I learned that"));
+  // Without the words said then, how it was decided.
+  progress_.objects.back().because.clear();
+  EXPECT_THAT(why({id("glove1"), id("basket1")}), HasSubstr("left basket, because it is like things you taught me;"));
+}
+
 TEST_F(TeacherQuestions, ADoorNamedIsAnsweredByWhatLeftItOpenOrTheNorm) {
   // A closed door: the norm.
   EXPECT_EQ(why({id("cabinet1")}), "The cabinet is closed: I close what I open.");

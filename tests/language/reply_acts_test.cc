@@ -110,6 +110,10 @@ TEST_F(ReplyActsTest, TheTeachersQuestionsAreAnsweredNotTaught) {
   // The things a why-question names come first, then the places, after a
   // marker of two words.
   EXPECT_EQ(acts(c, "hang on, why did you put the hairbrush in the hamper??"), "command why about hairbrush1 hamper1");
+  // About what was done before, not how things are now (a fresh user's
+  // "why'd you throw out the bottle before?").
+  EXPECT_EQ(acts(c, "why'd you put the hairbrush away before?"), "command why-earlier about hairbrush1");
+  EXPECT_EQ(acts(c, "why did you close the hamper earlier"), "command why-earlier about hamper1");
 }
 
 TEST_F(ReplyActsTest, WordsThatCarryNothingAreSkippedWhenTheRestIsWhole) {
