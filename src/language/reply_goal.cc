@@ -255,7 +255,12 @@ class EventReader {
     for (const PrepPhrase& p : c.phrases) {
       if (p.preposition != Preposition::kIn && p.preposition != Preposition::kOn && p.preposition != Preposition::kTo)
         continue;
-      bool moving = p.word == "into" || p.word == "onto" || p.word == "inside";
+      // ("coil it up on the right hook", "roll them up in the bin": a
+      // verb it does not know, with "up", "away" or "back", puts a thing
+      // somewhere too.)
+      bool moving = p.word == "into" || p.word == "onto" || p.word == "inside" ||
+                    (!known_verb && is_one_of(c.particle, {"up", "away", "back"}) &&
+                     (p.preposition == Preposition::kIn || p.preposition == Preposition::kOn));
       if (!known_verb && !moving) continue;
       if (verb == VerbClass::kPick && p.preposition != Preposition::kTo && !moving) continue;
       if (destination && !p.noun.empty() && !names_place(p.noun) && !destination->noun.empty() &&

@@ -116,6 +116,17 @@ TEST_F(ReplyActsTest, TheTeachersQuestionsAreAnsweredNotTaught) {
   EXPECT_EQ(acts(c, "why did you close the hamper earlier"), "command why-earlier about hamper1");
 }
 
+// "coil it up on the right hook" (a fresh user's garden hose): a verb the
+// reader does not know, with "up", "away" or "back", puts the thing where
+// the phrase says; without one it says nothing of where ("wash it in the
+// sink" is no placement), and is asked back.
+TEST_F(ReplyActsTest, AnUnknownVerbWithUpOrAwayPutsTheThingThere) {
+  ReplyContext c = goal_question("bath-mat1");
+  EXPECT_EQ(acts(c, "roll it up on the bathtub edge"), "goal (on bath-mat1 bathtub-edge1)");
+  EXPECT_EQ(acts(c, "fold it back on the shelf"), "goal (on bath-mat1 shelf1)");
+  EXPECT_THAT(acts(c, "wash it on the counter"), ::testing::StartsWith("unusable"));
+}
+
 TEST_F(ReplyActsTest, WordsThatCarryNothingAreSkippedWhenTheRestIsWhole) {
   ReplyContext c = goal_question("towel1");
   EXPECT_EQ(acts(c, "in the hamper lol"), "goal (in towel1 hamper1)");
