@@ -159,14 +159,14 @@ TaskLearningAgent::Session::Flow<TaskLearningAgent::Session::Heard> TaskLearning
     // ("dummy in the top drawer", asked about the pacifier): a person is
     // asked whether that word means it.
     if (person())
-      if (auto word = other_name_of_thing(text, reply, context)) {
+      if (auto word = agent_.understanding_.other_name_of_asked(world(), text, reply, context)) {
         auto meant = ask_other_name(*word, text, asked, context);
         if (!meant) return tl::unexpected(meant.error());
         if (*meant) reply = std::move(**meant);
       }
     // A person's rule is kept whatever was asked, and the question asked
     // again (a program is asked at most max_retries times).
-    if (auto rule = rule_in_reply(text, reply, context)) {
+    if (auto rule = agent_.understanding_.rule_in_reply(world(), text, reply, context)) {
       if (auto heard_rule = hear_rule(std::move(*rule), text); !heard_rule) return tl::unexpected(heard_rule.error());
       // Asked where a thing goes, the rule may place it: the caller decides
       // again before asking.

@@ -4,10 +4,6 @@
 
 namespace apprentice {
 
-bool is_general_head(std::string_view head) {
-  return is_one_of(head, {"item", "thing", "object", "stuff", "product", "good", "one", "article", "belonging"});
-}
-
 Destination destination_at(const World& world, ObjectId place) {
   const ObjectInfo& info = world.universe->info(place);
   Destination destination;
@@ -25,7 +21,7 @@ std::vector<ClassRule> class_rules_of(const World& world, const language::RuleRe
     for (const language::RuleClass& said_class : clause.classes) {
       for (ObjectId place : clause.places) {
         ClassRule rule;
-        if (said_class.phrase.empty() || is_general_head(said_class.head)) {
+        if (said_class.phrase.empty() || language::is_general_head(said_class.head)) {
           rule.modifiers = said_class.modifiers;
         } else {
           rule.class_name = said_class.phrase;

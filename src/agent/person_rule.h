@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "knowledge/preferences.h"
+#include "language/rule_in_reply.h"
 #include "language/rule_reader.h"
 #include "world/world.h"
 
@@ -36,9 +37,6 @@ inline constexpr double kLlmRuleConfidence = 0.8;
 inline constexpr double kLlmPlacementConfidence = 0.85;
 inline constexpr double kLlmPlacementByPersonConfidence = 0.97;
 
-// Whether a head noun names things in general rather than a class of
-// them: "item", "thing", "object", "stuff", ...
-bool is_general_head(std::string_view head);
 
 // The rules `reading` states, from `source`, said as `said`, for `scope`
 // (empty fields: anywhere). Each has `confidence` (shared among the places

@@ -186,17 +186,8 @@ class TaskLearningAgent::Session : private ActingHelp {
   // Where rules said in this session apply: the task and the subtask under
   // way, and the kind of place cleared; empty fields before the task.
   GoalScope said_scope() const;
-  // A person's rules (agent_person_rules.cc). A reply that states one ("toys
-  // go in the storage box and fruits on the coffee table",
-  // language/rule_reader.h) rather than an answer `reply` can use: its
-  // reading, else nullopt.
-  std::optional<language::RuleReading> rule_in_reply(const std::string& text, const language::Reply& reply,
-                                                     const language::ReplyContext& context) const;
-  // At a goal question, a reply that names the thing asked about by a word
-  // nothing here is called ("dummy in the top drawer", asked about the
-  // pacifier): that word, else nullopt. Such a reply is never a rule.
-  std::optional<std::string> other_name_of_thing(const std::string& text, const language::Reply& reply,
-                                                 const language::ReplyContext& context) const;
+  // A person's rules (agent_person_rules.cc; whether a reply states one is
+  // language/rule_in_reply.h, through Understanding).
   // Asks "By "dummy", do you mean the pacifier?"; on a yes, the reply read
   // again with the thing's own name in place of `word`; nullopt on a no.
   Flow<std::optional<language::Reply>> ask_other_name(const std::string& word, const std::string& text,

@@ -1,5 +1,7 @@
 #include "agent/understanding.h"
 
+#include "language/rule_in_reply.h"
+
 #include <algorithm>
 
 #include "language/grounding.h"
@@ -128,17 +130,19 @@ std::vector<std::string> Understanding::example_replies(const World& world,
 }
 
 std::optional<std::string> Understanding::category(const World& world, std::string_view phrase) const {
-  language::NounPhrase noun{"", split_words(to_lower(phrase))};
-  if (noun.words.empty()) return std::nullopt;
-  if (noun.words.front() == "the" || noun.words.front() == "a" || noun.words.front() == "an") {
-    noun.article = noun.words.front();
-    noun.words.erase(noun.words.begin());
-  }
-  if (noun.words.empty()) return std::nullopt;
-  language::ReferenceContext context{world, impl_->grounder.lexicon(), std::nullopt};
-  auto resolved = language::resolve_category(noun, context);
-  if (const std::string* category = std::get_if<std::string>(&resolved)) return *category;
-  return std::nullopt;
+  return language::category_named(impl_->grounder.lexicon(), world, phrase);
+}
+
+std::optional<language::RuleReading> Understanding::rule_in_reply(const World& world, std::string_view text,
+                                                                  const language::Reply& reply,
+                                                                  const language::ReplyContext& context) const {
+  return language::rule_in_reply(impl_->grounder, world, text, reply, context);
+}
+
+std::optional<std::string> Understanding::other_name_of_asked(const World& world, std::string_view text,
+                                                              const language::Reply& reply,
+                                                              const language::ReplyContext& context) const {
+  return language::other_name_of_asked(impl_->grounder, world, text, reply, context);
 }
 
 std::vector<ObjectId> Understanding::may_name(const World& world, std::string_view phrase) const {

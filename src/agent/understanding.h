@@ -12,6 +12,7 @@
 #include "language/lexicon.h"
 #include "language/logical_form.h"
 #include "language/reply.h"
+#include "language/rule_reader.h"
 #include "util/result.h"
 #include "vectors/word_vectors.h"
 #include "world/action.h"
@@ -71,6 +72,15 @@ class Understanding {
   // goal (language::goal_in_rest).
   std::optional<language::GoalGiven> goal_in_rest(const World& world, const language::ReplyContext& context,
                                                   const language::YesNo& answer) const;
+  // The person's rule a reply states, where its own reading `reply` does
+  // not already take it; and, at a goal question, the word a reply calls
+  // the thing asked about by (language/rule_in_reply.h).
+  std::optional<language::RuleReading> rule_in_reply(const World& world, std::string_view text,
+                                                     const language::Reply& reply,
+                                                     const language::ReplyContext& context) const;
+  std::optional<std::string> other_name_of_asked(const World& world, std::string_view text,
+                                                 const language::Reply& reply,
+                                                 const language::ReplyContext& context) const;
   // Replies that would work at that question, for help and after a reply
   // that could not be used.
   std::vector<std::string> example_replies(const World& world, const language::ReplyContext& context) const;

@@ -6,6 +6,7 @@
 #include "language/generation.h"
 #include "language/narration.h"
 #include "language/parser.h"
+#include "language/reply_acts_parts.h"
 #include "language/reply_reading.h"
 #include "language/utterance.h"
 #include "util/text.h"
@@ -367,8 +368,18 @@ std::vector<std::string> without_places_said_not(const std::vector<std::string>&
 // `dealt_with`: whether the kind must have a thing already dealt with;
 // else any thing of the kind is the one read about.
 std::optional<GoalGiven> goal_said_at_a_step(const Grounder& grounder, const World& world,
-                                             const ReplyContext& context, std::string_view text, bool dealt_with) {
-  const std::vector<std::string> words = reply_words(text);
+                                             const ReplyContext& context, std::string_view said, bool dealt_with) {
+  std::vector<std::string> words = reply_words(said);
+  // "no wait, the sketchbook should be on the shelf": the marker before a
+  // correction says nothing of where the thing goes.
+  std::size_t first = 0;
+  while (first < words.size() && (acts::is_marker(words[first]) || acts::is_interjection(words[first]) ||
+                                  is_one_of(words[first], {"no", "nope", "nah", ",", ".", "!"})))
+    ++first;
+  if (first == words.size()) return std::nullopt;
+  words.erase(words.begin(), words.begin() + static_cast<std::ptrdiff_t>(first));
+  const std::string kept = first > 0 ? quoted_words(words) : std::string(said);
+  const std::string_view text = kept;
   // ("the mug should be on the desk", "the pad should hang on the left
   // hook": "be" after a modal, and verbs of resting, place too.)
   bool placing = false;

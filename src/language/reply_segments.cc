@@ -188,6 +188,13 @@ std::optional<Command> question(const Grounder& grounder, const World& world, co
       break;
     }
   if (words.empty()) return std::nullopt;
+  // "wheres the pacifier", "where r the diapers", "whys the drawer open":
+  // as typed in a hurry.
+  if (is_one_of(words.front(), {"wheres", "whys", "whats"})) {
+    words.front().pop_back();
+    words.insert(words.begin() + 1, "is");
+  }
+  if (words.size() > 1 && words.front() == "where" && is_one_of(words[1], {"r", "re"})) words[1] = "are";
   const std::string& first = words.front();
   if (first == "why") {
     Command why{Command::Kind::kWhy, join(words, " "), things_asked_why(grounder, world, words), {}};

@@ -324,6 +324,19 @@ class StructureReader {
     return named;
   }
 
+  // Whether a clause's verb names a step at `place`: none said ("the
+  // shelf next"), a step verb or one taught, a task's verb ("tidy it
+  // up"), or a verb near a step verb.
+  bool names_a_step_at(const Clause& c, ObjectId place) const {
+    if (c.verb.empty() || c.verb_class() == VerbClass::kPick) return true;
+    const std::string said = c.particle.empty() ? c.verb : c.verb + " " + c.particle;
+    const std::span<const std::string> taught = in_.context.taught_subtasks;
+    if (is_step_verb(said, taught) || is_step_verb(c.verb, taught)) return true;
+    if (names_a_known_task(in_.grounder.lexicon(), c.verb, c.particle)) return true;
+    return known_step_verb(in_.grounder.lexicon(), c.verb, c.particle, in_.world.universe->info(place).kind, taught)
+        .has_value();
+  }
+
   // The places a phrase names: one, or every place of one kind ("the bags").
   std::optional<Places> places(const Chunk& chunk) {
     auto found = resolver_.candidates(chunk, Role::kPlace);
@@ -442,7 +455,10 @@ class StructureReader {
   // what not to do ("leave", "forget"), or what the teacher thinks, and
   // "I'm done", which ends.
   static bool names_no_subtask(const Clause& c) {
+    // ("put them in the bottom drawer" puts things somewhere; "put away the
+    // toys" may be a part.)
     return c.verb.empty() || c.adjective() || c.verb_class() == VerbClass::kBe || (c.copula && c.verb_word == "done") ||
+           (c.verb == "put" && c.particle.empty()) ||
            is_one_of(c.verb, {"be", "repeat", "keep", "continue", "go", "finish", "end", "stop", "start", "begin",
                               "move", "come", "think", "know", "want", "need", "let", "say", "mean", "see", "look",
                               "leave", "forget", "wait", "belong", "thank", "hate", "like", "love", "read", "tell",
@@ -524,7 +540,11 @@ class StructureReader {
     const std::vector<ObjectId>& topic = !in_.context.topic_places.empty() ? in_.context.topic_places
                                          : pronoun                         ? named_before_
                                                                            : kNone;
-    if (!found && (!unresolved || pronoun) && about_it && c.phrases.empty() && !topic.empty()) {
+    // A verb of its own there names a part only if it is a step verb, or
+    // near one, or one taught: "ok cool thats all" after "What should I do
+    // with the things in the tub?" is no cooling of the tub.
+    if (!found && (!unresolved || pronoun) && about_it && c.phrases.empty() && !topic.empty() &&
+        names_a_step_at(c, topic.front())) {
       found = Places{topic, "it"};
       unresolved.reset();
     }

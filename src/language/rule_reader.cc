@@ -69,9 +69,8 @@ bool starts_with(const Words& words, std::size_t at, std::initializer_list<std::
 }
 
 // Words that open a sentence without being part of a clause: "by the
-// way", "also", "remember that", "I want you to", and the verb of an
-// imperative ("put", "throw away").
-std::size_t skip_opening(const Words& words, std::size_t at) {
+// way", "also", "remember that", "I want you to", "if there's ever".
+std::size_t skip_openers(const Words& words, std::size_t at) {
   static const std::vector<std::vector<std::string_view>> kOpeners = {
       {"by", "the", "way"}, {"btw"}, {"also"}, {"oh"}, {"and"}, {"please"}, {"ok"}, {"okay"}, {"so"}, {"well"},
       {"then"}, {"actually"}, {"remember", "that"}, {"remember"}, {"note", "that"}, {"in", "general"},
@@ -81,11 +80,9 @@ std::size_t skip_opening(const Words& words, std::size_t at) {
       {"we"}, {"i"}, {"first"}, {"finally"}, {"lastly"}, {"next"}, {"from", "now", "on"}, {"in", "the", "future"},
       {"in", "future"}, {"going", "forward"}, {"for", "future", "reference"}, {"as", "a", "general", "rule"},
       {"as", "a", "rule"}, {"rule", "of", "thumb"}, {"in", "general"}, {"on", "second", "thought"},
-      {"fair", "enough"}, {","}, {":"}};
-  static const std::vector<std::vector<std::string_view>> kVerbs = {
-      {"throw", "away"}, {"throw", "out"}, {"hang", "up"}, {"put", "away"}, {"put"}, {"place"}, {"store"},
-      {"keep"}, {"move"}, {"throw"}, {"toss"}, {"leave"}, {"hang"}, {"set"}, {"stack"}, {"file"}, {"arrange"},
-      {"organize"}, {"sort"}, {"drop"}, {"stash"}, {"stow"}, {"return"}, {"bring"}, {"take"}, {"lay"}, {"pack"}};
+      {"fair", "enough"}, {"fyi"}, {"for", "your", "information"}, {"if", "there", "is"}, {"if", "there's"},
+      {"if", "theres"}, {"if", "there", "are"}, {"whenever", "there", "is"}, {"whenever", "there's"},
+      {"whenever", "theres"}, {"ever"}, {","}, {":"}};
   for (bool more = true; more && at < words.size();) {
     more = false;
     for (const auto& opener : kOpeners) {
@@ -97,6 +94,17 @@ std::size_t skip_opening(const Words& words, std::size_t at) {
       }
     }
   }
+  return at;
+}
+
+// The openers, and the verb of an imperative after them ("put", "throw
+// away").
+std::size_t skip_opening(const Words& words, std::size_t at) {
+  at = skip_openers(words, at);
+  static const std::vector<std::vector<std::string_view>> kVerbs = {
+      {"throw", "away"}, {"throw", "out"}, {"hang", "up"}, {"put", "away"}, {"put"}, {"place"}, {"store"},
+      {"keep"}, {"move"}, {"throw"}, {"toss"}, {"leave"}, {"hang"}, {"set"}, {"stack"}, {"file"}, {"arrange"},
+      {"organize"}, {"sort"}, {"drop"}, {"stash"}, {"stow"}, {"return"}, {"bring"}, {"take"}, {"lay"}, {"pack"}};
   for (const auto& verb : kVerbs)
     if (verb.size() <= words.size() - at && std::equal(verb.begin(), verb.end(), words.begin() + static_cast<long>(at)))
       return at + verb.size();
@@ -265,7 +273,7 @@ class SentenceReader {
   SentenceReader(const World& world, const Lexicon& lexicon, std::optional<ObjectId> object_of_interest,
                  std::optional<ObjectId> there,
                  RuleReading& reading)
-      : world_(world), lexicon_(lexicon), object_(object_of_interest), there_(there), reading_(reading) {}
+      : world_(world), lexicon_(lexicon), object_(object_of_interest), reading_(reading), there_(there) {}
 
   void read(const Words& words) {
     std::size_t at = skip_opening(words, 0);
@@ -434,6 +442,11 @@ class SentenceReader {
         }
       if (!words.empty() && words.size() > 1 && !is_determiner(words.front()) && names_no_class(words.front())) {
         drop_front(1);
+        more = true;
+      }
+      // "(no i mean) if theres ever ribbon": an opener after them.
+      if (const std::size_t at = skip_openers(words, 0); at > 0 && at < words.size()) {
+        drop_front(at);
         more = true;
       }
     }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 
+#include "language/utterance.h"
 #include "util/text.h"
 
 namespace apprentice::language {
@@ -18,6 +19,12 @@ std::string plain_reply(std::string_view reply) {
       said.pop_back();
   };
   drop_end();
+  // "pencils go w/ the markers": shorthand as the reader takes it.
+  {
+    std::vector<std::string> words = split_words(said);
+    expand_shorthand(words);
+    said = join(words, " ");
+  }
   for (std::string_view polite : {" please", " thanks", " thank you"})
     if (said.ends_with(polite)) said.resize(said.size() - polite.size());
   drop_end();
