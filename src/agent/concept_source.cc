@@ -47,6 +47,18 @@ constexpr double kCollectiveSize = 5;
 
 // The weights of a word's senses, most frequent first.
 constexpr double kSenseWeights[] = {1.0, 0.5, 0.25};
+// The senses of the base forms of a lemma's last word ("potato chips" ->
+// "potato chip"), added to `offsets` where they are not in it already.
+// WordNet's morphology of a whole collocation tries every word and is slow.
+void add_base_form_senses(const language::WordNet& wordnet, const std::string& lemma,
+                          std::vector<language::SynsetOffset>& offsets) {
+  const std::size_t space = lemma.rfind(' ');
+  const std::string before = space == std::string::npos ? "" : lemma.substr(0, space + 1);
+  for (const std::string& base : wordnet.noun_base_forms(space == std::string::npos ? lemma : lemma.substr(space + 1)))
+    for (language::SynsetOffset o : wordnet.noun_senses(before + base))
+      if (std::find(offsets.begin(), offsets.end(), o) == offsets.end()) offsets.push_back(o);
+}
+
 // The weight of a class word's senses beyond those senses() chooses.
 constexpr double kOtherSenseWeight = 0.25;
 
@@ -111,23 +123,18 @@ std::vector<std::pair<language::SynsetOffset, double>> LexicalConcepts::senses(c
   if (wordnet == nullptr) return out;
   std::vector<language::SynsetOffset> offsets = wordnet->noun_senses(lemma);
   auto names_a_physical_thing = [&](language::SynsetOffset o) { return sense_rank(*wordnet, o) > 0; };
-  // Else by the base form of its last word ("potato chips" -> "potato
-  // chip"): WordNet's morphology of a whole collocation tries every word
-  // and is slow. A plural WordNet knows only as something else also gets
-  // its singular's senses: "shoes" is a situation ("in her shoes") as a
-  // word of its own, and footwear as a shoe; "clothes", apparel, keeps
-  // its own.
-  if (offsets.empty() || std::none_of(offsets.begin(), offsets.end(), names_a_physical_thing)) {
-    const std::size_t space = lemma.rfind(' ');
-    const std::string before = space == std::string::npos ? "" : lemma.substr(0, space + 1);
-    for (const std::string& base : wordnet->noun_base_forms(space == std::string::npos ? lemma : lemma.substr(space + 1)))
-      for (language::SynsetOffset o : wordnet->noun_senses(before + base))
-        if (std::find(offsets.begin(), offsets.end(), o) == offsets.end()) offsets.push_back(o);
-  }
+  // Else by the base form of its last word. A plural WordNet knows only as
+  // something else also gets its singular's senses: "shoes" is a situation
+  // ("in her shoes") as a word of its own, and footwear as a shoe;
+  // "clothes", apparel, keeps its own.
+  if (offsets.empty() || std::none_of(offsets.begin(), offsets.end(), names_a_physical_thing))
+    add_base_form_senses(*wordnet, lemma, offsets);
+  std::vector<int> ranks;
+  for (language::SynsetOffset o : offsets) ranks.push_back(sense_rank(*wordnet, o));
   std::vector<language::SynsetOffset> physical;
   for (int rank : {2, 1})
-    for (language::SynsetOffset o : offsets)
-      if (sense_rank(*wordnet, o) == rank) physical.push_back(o);
+    for (std::size_t i = 0; i < offsets.size(); ++i)
+      if (ranks[i] == rank) physical.push_back(offsets[i]);
   const std::vector<language::SynsetOffset>& chosen = physical.empty() ? offsets : physical;
   for (std::size_t i = 0; i < chosen.size() && i < std::size(kSenseWeights); ++i) out.emplace_back(chosen[i], kSenseWeights[i]);
   return out;
@@ -258,10 +265,7 @@ std::vector<ConceptClass> LexicalConcepts::classes_named(std::string_view words)
   // that one, so these match only such things.
   if (wordnet != nullptr) {
     std::vector<language::SynsetOffset> other = wordnet->noun_senses(phrase);
-    const std::size_t space = phrase.rfind(' ');
-    const std::string before = space == std::string::npos ? "" : phrase.substr(0, space + 1);
-    for (const std::string& base : wordnet->noun_base_forms(space == std::string::npos ? phrase : phrase.substr(space + 1)))
-      for (language::SynsetOffset o : wordnet->noun_senses(before + base)) other.push_back(o);
+    add_base_form_senses(*wordnet, phrase, other);
     for (language::SynsetOffset o : other)
       if (std::none_of(out.begin(), out.end(), [&](const ConceptClass& c) { return c.id == concept_id(o); }))
         out.push_back(ConceptClass{concept_id(o), class_name(o), kOtherSenseWeight, class_size(o), 0});
