@@ -328,6 +328,7 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::start_object(Object
   ObjectReport report;
   report.object = world().universe->name(object);
   report.subtask = current().verb;
+  report.part_place = world().universe->info(current().places.front()).category;
   std::optional<Goal> goal;
   if (const GoalKnowledge* known = agent_.knowledge_.goals.find(goal_key(object))) {
     goal = instantiate_goal(world(), *known, object);

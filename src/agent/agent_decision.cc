@@ -310,6 +310,8 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
               : language::ask_goal_proposed(w, object, *goal, evidence, others);
       Question q = question(QuestionKind::kConfirmGoal, asked, object, goal);
       for (const auto& entry : together) q.together.push_back(entry.first);
+      proposals_asked_.push_back(ProposalAsked{object, *goal, evidence});
+      for (const auto& [other, its_goal] : together) proposals_asked_.push_back(ProposalAsked{other, its_goal, evidence});
       const std::size_t rules_before = sources_.said_rules().all().size();
       auto answer = answer_to_proposal(q, object);
       if (!answer) return tl::unexpected(answer.error());

@@ -281,7 +281,11 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::obey(const language
     case language::Command::Kind::kQuit: return stop(Error{ErrorCode::kCancelled, "the instructor quit"});
     case language::Command::Kind::kWhatsLeft: answer_whats_left(); return {};
     case language::Command::Kind::kWhere: answer_where(command); return {};
-    case language::Command::Kind::kWhy: say(answer_why(so_far(), command.things, command.earlier), Voice::kResponse); return {};
+    case language::Command::Kind::kWhy: {
+      const WhyAbout about = command.asking ? WhyAbout::kAsking : command.earlier ? WhyAbout::kEarlier : WhyAbout::kNow;
+      say(answer_why(so_far(), command.things, about), Voice::kResponse);
+      return {};
+    }
     case language::Command::Kind::kDo: do_now(command.actions); return {};
   }
   return {};
@@ -339,7 +343,7 @@ void TaskLearningAgent::Session::answer_where(const language::Command& command) 
 }
 
 TeachingSoFar TaskLearningAgent::Session::so_far() const {
-  return TeachingSoFar{world(), agent_.knowledge_.goals, progress_, lessons_.last_reply()};
+  return TeachingSoFar{world(), agent_.knowledge_.goals, progress_, lessons_.last_reply(), proposals_asked_};
 }
 
 void TaskLearningAgent::Session::do_now(const std::vector<Action>& actions) {

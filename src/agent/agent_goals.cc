@@ -296,6 +296,7 @@ TaskLearningAgent::Session::Flow<std::optional<bool>> TaskLearningAgent::Session
     ObjectReport as_left;
     as_left.object = w.universe->name(o);
     as_left.subtask = part.verb;
+    as_left.part_place = w.universe->info(part.places.front()).category;
     as_left.note = kLeftAsTold;
     left.emplace_back(o, std::move(as_left));
   }
@@ -359,7 +360,7 @@ Status TaskLearningAgent::Session::learn_goals_of_others(ObjectId asked, ObjectI
     const ObjectId item = items.front();
     if (!still_to_come(item)) {
       if (!progress_.evaluated.count(item)) later.push_back(item);
-      else if (!goals_corrected_by(item).empty() && !goal.satisfied_by(w.state)) corrected.emplace_back(item, goal);
+      else if (!goals_corrected_by(item, "").empty() && !goal.satisfied_by(w.state)) corrected.emplace_back(item, goal);
       continue;
     }
     if (auto s = learn_goal(item, goal, source); !s) return s;
@@ -413,36 +414,68 @@ Status TaskLearningAgent::Session::learn_goal(ObjectId object, const Goal& goal,
   return lessons_.learn_goal(agent_.knowledge_, *knowledge);
 }
 
-std::vector<GoalKey> TaskLearningAgent::Session::goals_corrected_by(ObjectId object) const {
+std::vector<GoalKey> TaskLearningAgent::Session::goals_corrected_by(ObjectId object, const std::string& text) const {
   const std::string& kind = world().universe->info(object).category;
+  const std::vector<ObjectId> things = things_corrected_along(object, text);
+  if (things.empty()) return {};
+  // "the clean diapers go in the bottom drawer": only the parts the clean
+  // ones were dealt with in, not the floor's dirty diaper.
   std::vector<GoalKey> keys;
+  if (!properties_said(object, text).empty()) {
+    for (ObjectId thing : things)
+      if (std::optional<GoalKey> key = key_dealt_with(thing); key && std::find(keys.begin(), keys.end(), *key) == keys.end())
+        keys.push_back(*key);
+    return keys;
+  }
   for (const GoalKnowledge& g : agent_.knowledge_.goals.all())
     if (g.key.task == progress_.task.name && g.key.category == kind) keys.push_back(g.key);
-  bool dealt_with = false;
-  for (ObjectId o : progress_.evaluated) dealt_with = dealt_with || world().universe->info(o).category == kind;
-  if (!dealt_with) return {};
   // Its goal forgotten since ("forget the stapler"): the goal comes anew
   // under the part of the task it was dealt with in.
   if (keys.empty())
-    if (std::optional<GoalKey> key = key_dealt_with(kind)) keys.push_back(*key);
+    if (std::optional<GoalKey> key = key_dealt_with(things.back())) keys.push_back(*key);
   return keys;
 }
 
-std::optional<GoalKey> TaskLearningAgent::Session::key_dealt_with(const std::string& kind) const {
-  std::string verb;
-  for (const ObjectReport& report : progress_.objects) {
-    std::optional<ObjectId> thing = world().universe->find(report.object);
-    if (thing && world().universe->info(*thing).category == kind) verb = report.subtask;
+std::vector<std::string> TaskLearningAgent::Session::properties_said(ObjectId object, const std::string& text) const {
+  const std::vector<std::string> words = split_words(to_lower(text));
+  std::vector<std::string> said;
+  for (const std::string& property : world().universe->info(object).properties)
+    if (std::find(words.begin(), words.end(), property) != words.end()) said.push_back(property);
+  return said;
+}
+
+std::vector<ObjectId> TaskLearningAgent::Session::things_corrected_along(ObjectId object, const std::string& text) const {
+  const ObjectInfo& info = world().universe->info(object);
+  const std::vector<std::string> said = properties_said(object, text);
+  std::vector<ObjectId> things;
+  for (ObjectId o : progress_.evaluated_order) {
+    const ObjectInfo& other = world().universe->info(o);
+    if (other.category != info.category) continue;
+    if (!std::all_of(said.begin(), said.end(), [&](const std::string& p) {
+          return std::find(other.properties.begin(), other.properties.end(), p) != other.properties.end();
+        }))
+      continue;
+    things.push_back(o);
   }
-  if (verb.empty()) return std::nullopt;
+  return things;
+}
+
+std::optional<GoalKey> TaskLearningAgent::Session::key_dealt_with(ObjectId thing) const {
+  const std::string& kind = world().universe->info(thing).category;
+  const std::string& name = world().universe->name(thing);
+  const ObjectReport* dealt = nullptr;
+  for (const ObjectReport& report : progress_.objects)
+    if (report.object == name) dealt = &report;
+  if (dealt == nullptr || dealt->subtask.empty()) return std::nullopt;
+  if (!dealt->part_place.empty()) return GoalKey{progress_.task.name, dealt->subtask, kind, dealt->part_place};
   // The part under way, else the last part learned, with that verb.
   std::optional<std::string> place;
-  if (progress_.current && progress_.current->verb == verb && !progress_.current->places.empty())
+  if (progress_.current && progress_.current->verb == dealt->subtask && !progress_.current->places.empty())
     place = world().universe->info(progress_.current->places.front()).category;
   for (auto part = progress_.task.subtasks.rbegin(); !place && part != progress_.task.subtasks.rend(); ++part)
-    if (part->verb == verb) place = part->place_category;
+    if (part->verb == dealt->subtask) place = part->place_category;
   if (!place) return std::nullopt;
-  return GoalKey{progress_.task.name, verb, kind, *place};
+  return GoalKey{progress_.task.name, dealt->subtask, kind, *place};
 }
 
 std::optional<ObjectId> TaskLearningAgent::Session::thing_corrected(const language::Reply& reply) const {
@@ -450,7 +483,7 @@ std::optional<ObjectId> TaskLearningAgent::Session::thing_corrected(const langua
   if (given == nullptr) return std::nullopt;
   for (ObjectId o : given->goal.objects())
     if (world().universe->info(o).kind == ObjectKind::kItem)
-      return goals_corrected_by(o).empty() ? std::nullopt : std::optional<ObjectId>(o);
+      return goals_corrected_by(o, "").empty() ? std::nullopt : std::optional<ObjectId>(o);
   return std::nullopt;
 }
 
@@ -460,22 +493,19 @@ Status TaskLearningAgent::Session::correct_goal(ObjectId object, const language:
   bool say_norm = false;
   const language::GoalGiven given = with_doors_closed(object, said, say_norm);
   const std::string source = "instructor: " + apprentice::quoted(text) + " (a correction)";
-  for (const GoalKey& key : goals_corrected_by(object))
+  const std::vector<GoalKey> keys = goals_corrected_by(object, text);
+  for (const GoalKey& key : keys)
     if (auto s = learn_goal(object, given.goal, source, key); !s) return s;
   say(language::read_back_goal(w, object, given.goal) + (say_norm ? " " + language::closing_norm_note() : ""));
   // The things of its kind already put away go where it now says, by the
   // agent's own search; what was closed is closed again after.
-  const std::string& kind = w.universe->info(object).category;
-  const GoalKnowledge* learned = nullptr;
-  for (const GoalKnowledge& g : agent_.knowledge_.goals.all())
-    if (g.key.task == progress_.task.name && g.key.category == kind) learned = &g;
+  const GoalKnowledge* learned = keys.empty() ? nullptr : agent_.knowledge_.goals.find(keys.back());
   if (learned == nullptr) return {};
   std::vector<Literal> closed_before;
   for (ObjectId place : w.universe->of_kind(ObjectKind::kReceptacle))
     if (const Fact closed(w.vocabulary.closed, {place}); w.state.holds(closed)) closed_before.push_back(Literal{closed, true});
   std::vector<Action> done;
-  for (ObjectId thing : w.universe->of_kind(ObjectKind::kItem)) {
-    if (w.universe->info(thing).category != kind || !progress_.evaluated.count(thing)) continue;
+  for (ObjectId thing : things_corrected_along(object, text)) {
     std::optional<Goal> placed = instantiate_goal(w, *learned, thing);
     if (!placed) continue;
     std::vector<Literal> literals = placed->literals;

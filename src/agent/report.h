@@ -32,6 +32,10 @@ std::string_view to_string(GoalSource source);
 struct ObjectReport {
   std::string object;
   std::string subtask;
+  // The category of the place whose part it was dealt with in ("floor" for
+  // "clear the floor"): with `subtask`, the part its goal was learned or
+  // corrected under. "" when it was dealt with in no part.
+  std::string part_place;
   GoalSource goal_source = GoalSource::kNone;
   std::string goal;         // as PDDL, if any
   bool achieved = false;

@@ -168,11 +168,18 @@ class TaskLearningAgent::Session : private ActingHelp {
   // A goal said at a question about the task's steps ("the notebook goes
   // on the bookshelf", after it was put in the filing cabinet): the kinds
   // whose goal it corrects, those learned in this task; none when no thing
-  // of its kind was dealt with yet.
-  std::vector<GoalKey> goals_corrected_by(ObjectId object) const;
-  // The key a thing of `kind` was dealt with under in this task (the part
-  // it was cleared in), from the reports; nullopt when none was.
-  std::optional<GoalKey> key_dealt_with(const std::string& kind) const;
+  // of its kind was dealt with yet. `text`, the teacher's words: where
+  // they name a property of `object` ("the clean diapers"), only the parts
+  // the things with it were dealt with in.
+  std::vector<GoalKey> goals_corrected_by(ObjectId object, const std::string& text) const;
+  // The properties of `object` that `text` names ("clean").
+  std::vector<std::string> properties_said(ObjectId object, const std::string& text) const;
+  // The things of `object`'s kind already dealt with, with every property
+  // of it that `text` names: what a correction of it moves.
+  std::vector<ObjectId> things_corrected_along(ObjectId object, const std::string& text) const;
+  // The key `thing` was dealt with under in this task (the part it was
+  // cleared in), from its report; nullopt when it was not dealt with.
+  std::optional<GoalKey> key_dealt_with(ObjectId thing) const;
   // The thing already dealt with whose goal `reply` corrects ("the notebook
   // goes on the bookshelf"), or nullopt.
   std::optional<ObjectId> thing_corrected(const language::Reply& reply) const;
@@ -296,6 +303,10 @@ class TaskLearningAgent::Session : private ActingHelp {
   std::set<ObjectId> asked_to_leave_the_rest_;
   // Whether closing_norm_note() was said this session.
   bool closing_norm_said_ = false;
+  // The yes/no questions asked about where things go, in order: what "why
+  // did you ask ...?" answers (agent/teacher_questions.h). What was asked
+  // stays asked: an undo keeps them.
+  std::vector<ProposalAsked> proposals_asked_;
 
   // The teacher's own questions and one-off actions (agent_dialogue.cc).
   void answer_whats_left();

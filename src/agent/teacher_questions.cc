@@ -100,6 +100,45 @@ std::optional<std::string> why_earlier(const TeachingSoFar& so_far, ObjectId thi
   return std::nullopt;
 }
 
+// "why did you ask if the blanket goes with clean diapers?": the last yes/no
+// about a thing named, else about a thing of a kind named, else one whose
+// evidence names a kind named ("why do you keep asking about diapers"),
+// else, with no thing named, the last one asked; nullopt when none fits (a
+// thing named that was never asked about is answered as "why" is).
+std::optional<std::string> why_asked(const TeachingSoFar& so_far, std::span<const ObjectId> named) {
+  const World& w = so_far.world;
+  if (so_far.asked.empty()) return std::nullopt;
+  auto last_where = [&](auto&& fits) -> const ProposalAsked* {
+    for (auto it = so_far.asked.rbegin(); it != so_far.asked.rend(); ++it)
+      if (fits(*it)) return &*it;
+    return nullptr;
+  };
+  const ProposalAsked* asked = last_where([&](const ProposalAsked& a) {
+    return std::find(named.begin(), named.end(), a.thing) != named.end();
+  });
+  if (asked == nullptr)
+    asked = last_where([&](const ProposalAsked& a) {
+      return std::any_of(named.begin(), named.end(), [&](ObjectId n) {
+        return w.universe->info(n).category == w.universe->info(a.thing).category;
+      });
+    });
+  if (asked == nullptr)
+    asked = last_where([&](const ProposalAsked& a) {
+      return std::any_of(named.begin(), named.end(), [&](ObjectId n) {
+        return a.evidence.find(language::spoken_category(w.universe->info(n).category)) != std::string::npos;
+      });
+    });
+  const bool things_named = std::any_of(named.begin(), named.end(), [&](ObjectId n) {
+    return w.universe->info(n).kind == ObjectKind::kItem;
+  });
+  if (asked == nullptr && !things_named) asked = &so_far.asked.back();
+  if (asked == nullptr) return std::nullopt;
+  const GoalKnowledge* known = goal_known_for(so_far, w.universe->info(asked->thing).category);
+  std::optional<Goal> now = known ? instantiate_goal(w, *known, asked->thing) : std::nullopt;
+  if (now && *now == asked->goal) now.reset();
+  return language::why_i_asked(w, asked->thing, asked->goal, asked->evidence, now);
+}
+
 }  // namespace
 
 const GoalKnowledge* goal_known_for(const TeachingSoFar& so_far, const std::string& kind) {
@@ -117,8 +156,11 @@ const GoalKnowledge* goal_known_for(const TeachingSoFar& so_far, const std::stri
   return known;
 }
 
-std::string answer_why(const TeachingSoFar& so_far, std::span<const ObjectId> named, bool earlier) {
+std::string answer_why(const TeachingSoFar& so_far, std::span<const ObjectId> named, WhyAbout about) {
   const World& w = so_far.world;
+  if (about == WhyAbout::kAsking)
+    if (auto said = why_asked(so_far, named)) return *said;
+  const bool earlier = about == WhyAbout::kEarlier;
   // A thing and a place named, the thing no longer going there.
   const auto first_place = std::find_if(named.begin(), named.end(), [&](ObjectId id) {
     return w.universe->info(id).kind != ObjectKind::kItem;

@@ -15,14 +15,29 @@
 
 namespace apprentice {
 
+// A yes/no the agent asked about a thing: the goal it proposed, and the
+// evidence the question showed ("with clean diapers, as you said").
+struct ProposalAsked {
+  ObjectId thing = 0;
+  Goal goal;
+  std::string evidence;
+};
+
 // What the answers read: the world as it is now, the goals known, how far
-// the teaching has come, and the teacher's last lesson (null before any).
+// the teaching has come, the teacher's last lesson (null before any), and
+// the yes/no questions asked, in order.
 struct TeachingSoFar {
   const World& world;
   const GoalMemory& goals;
   const teaching::Curriculum& progress;
   const std::string* last_reply = nullptr;
+  std::span<const ProposalAsked> asked = {};
 };
+
+// What a "why?" asks about: things as they are; what was done before
+// ("why'd you throw out the bottle before?"); or a question the agent
+// asked ("why did you ask if the blanket goes with clean diapers?").
+enum class WhyAbout { kNow, kEarlier, kAsking };
 
 // The goal known for things of `kind`: that of the part under way, else of
 // this task, else any; null when none is.
@@ -35,6 +50,8 @@ const GoalKnowledge* goal_known_for(const TeachingSoFar& so_far, const std::stri
 // named with a place it no longer goes to, or asked about `earlier`
 // ("before"), is answered with how it came to go there when it was dealt
 // with, and where it goes now.
-std::string answer_why(const TeachingSoFar& so_far, std::span<const ObjectId> named, bool earlier = false);
+// Asked `kAsking`, it is answered with the evidence of the last yes/no
+// about a thing named (a thing of its kind, else the last yes/no asked).
+std::string answer_why(const TeachingSoFar& so_far, std::span<const ObjectId> named, WhyAbout about = WhyAbout::kNow);
 
 }  // namespace apprentice

@@ -251,10 +251,14 @@ std::string to_json(const SessionReport& report) {
   for (const ObjectReport& o : agent.objects)
     objects.push_back({{"object", o.object},
                        {"subtask", o.subtask},
+                       {"part_place", o.part_place},
                        {"goal_source", std::string(to_string(o.goal_source))},
                        {"goal", o.goal},
                        {"achieved", o.achieved},
-                       {"note", o.note}});
+                       {"note", o.note},
+                       {"proposed", o.proposed},
+                       {"belief", o.belief},
+                       {"because", o.because}});
   nlohmann::json j{{"instructions", report.counts.instructions},
                    {"words", report.counts.words},
                    {"yes_no", report.counts.yes_no},

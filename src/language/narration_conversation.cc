@@ -226,6 +226,16 @@ std::string why_earlier_placement(const World& world, ObjectId thing, const Goal
          goal_outcome(world, thing, now, name) + ".";
 }
 
+std::string why_i_asked(const World& world, ObjectId thing, const Goal& proposed, std::string_view evidence,
+                        const std::optional<Goal>& now) {
+  const std::string name = spoken_name(world, thing);
+  std::string out = "I asked whether " + goal_outcome(world, thing, proposed, name) +
+                    (evidence.empty() ? "" : ", " + std::string(evidence)) +
+                    ": it seemed likely, but not enough to do it without asking.";
+  if (now) out += " Now " + goal_outcome(world, thing, *now, name) + ".";
+  return out;
+}
+
 std::string remember_again(std::string_view category) { return "I know again where " + kind_goes(category) + "."; }
 
 std::string which_rule_to_forget(std::string_view what, const std::vector<std::string>& rules,

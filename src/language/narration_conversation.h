@@ -127,6 +127,13 @@ std::string forgot_where_kind_goes(std::string_view category);
 // (may be empty), `now` its goal now.
 std::string why_earlier_placement(const World& world, ObjectId thing, const Goal& then, std::string_view how,
                                   const Goal& now);
+// "why did you ask if the blanket goes with clean diapers?": "I asked
+// whether the blanket goes in the bottom drawer, with clean diapers, as
+// you said: it seemed likely, but not enough to do it without asking."
+// `proposed` is the goal asked about, `evidence` what the question showed
+// (may be empty), `now` the thing's goal since, if it differs.
+std::string why_i_asked(const World& world, ObjectId thing, const Goal& proposed, std::string_view evidence,
+                        const std::optional<Goal>& now);
 // An undo of "forget mug": "I know again where the mug goes."
 std::string remember_again(std::string_view category);
 // Several rules fit what was named: "I have several rules about fruit: ...;

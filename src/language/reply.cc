@@ -394,9 +394,21 @@ std::optional<GoalGiven> goal_said_at_a_step(const Grounder& grounder, const Wor
   // A thing of that kind already dealt with: the one put somewhere the
   // teacher now corrects. (Of a kind not dealt with yet, it is a rule or
   // a place named, as the question's own reader reads it.)
+  // Of several, the one whose properties the words name ("the clean
+  // diapers", after the dirty one was dealt with first).
   std::optional<ObjectId> thing;
-  for (ObjectId o : context.dealt_with)
-    if (!thing && world.universe->info(o).category == *kind) thing = o;
+  std::size_t named_best = 0;
+  for (ObjectId o : context.dealt_with) {
+    if (world.universe->info(o).category != *kind) continue;
+    const std::vector<std::string>& properties = world.universe->info(o).properties;
+    const auto named = static_cast<std::size_t>(std::count_if(properties.begin(), properties.end(), [&](const std::string& p) {
+      return std::find(words.begin(), words.end(), p) != words.end();
+    }));
+    if (!thing || named > named_best) {
+      thing = o;
+      named_best = named;
+    }
+  }
   if (!dealt_with)
     for (ObjectId o : world.universe->of_kind(ObjectKind::kItem))
       if (!thing && world.universe->info(o).category == *kind) thing = o;
@@ -542,7 +554,7 @@ std::string format_reply(const World& world, const Reply& reply) {
         case Command::Kind::kWhatsLeft: return "command whats-left";
         case Command::Kind::kWhere: return "command where " + r.argument;
         case Command::Kind::kWhy:
-          return std::string(r.earlier ? "command why-earlier" : "command why") +
+          return std::string(r.asking ? "command why-asking" : r.earlier ? "command why-earlier" : "command why") +
                  (r.things.empty() ? "" : " about " + list(r.things));
         case Command::Kind::kDo: {
           std::string out = "command do";

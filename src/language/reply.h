@@ -180,6 +180,10 @@ struct Command {
   // kWhy: asked about what was done before ("why'd you throw out the bottle
   // before?"), not about how things are now.
   bool earlier = false;
+  // kWhy: asked about a question the agent asked ("why did you ask if the
+  // blanket goes with clean diapers?", "why do you keep asking about
+  // diapers"), not about where things went.
+  bool asking = false;
 };
 
 // A phrase that fits several things: the agent should ask which.

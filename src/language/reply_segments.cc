@@ -200,6 +200,10 @@ std::optional<Command> question(const Grounder& grounder, const World& world, co
     Command why{Command::Kind::kWhy, join(words, " "), things_asked_why(grounder, world, words), {}};
     why.earlier = std::any_of(words.begin(), words.end(),
                               [](const std::string& w) { return is_one_of(w, {"before", "earlier", "first"}); });
+    why.asking = std::any_of(words.begin(), words.end(), [](const std::string& w) {
+      return is_one_of(w, {"ask", "asked", "asking", "propose", "proposed", "proposing", "suggest", "suggested",
+                           "suggesting"});
+    });
     return why;
   }
   if (first == "where" && words.size() > 1 &&

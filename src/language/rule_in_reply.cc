@@ -59,6 +59,20 @@ bool says_things_go(std::string_view text) {
   });
 }
 
+// Whether every modifier is a property some thing of `kind` has here ("clean
+// diapers", where the world's diapers are clean or dirty): the world's
+// things picked by what it models, not a class of its own.
+bool modifiers_are_properties(const World& world, const std::string& kind, const std::vector<std::string>& modifiers) {
+  if (modifiers.empty()) return false;
+  const std::vector<ObjectId> things = world.universe->with_category(kind);
+  return std::all_of(modifiers.begin(), modifiers.end(), [&](const std::string& modifier) {
+    return std::any_of(things.begin(), things.end(), [&](ObjectId o) {
+      const std::vector<std::string>& properties = world.universe->info(o).properties;
+      return std::find(properties.begin(), properties.end(), modifier) != properties.end();
+    });
+  });
+}
+
 // Whether a class said is one of its own, not the world's kind said in the
 // plural ("plates" for the plate). A word that the reference resolves to
 // one kind only through WordNet ("clothes" to the dress: not a word of its
@@ -69,7 +83,8 @@ bool a_class_of_its_own(const Lexicon& lexicon, const World& world, const RuleCl
   if (c.phrase.empty() || (is_general_head(c.head) && c.modifiers.empty())) return false;
   if (is_general_head(c.head)) return true;
   const std::optional<std::string> kind = category_named(lexicon, world, c.phrase);
-  if (!kind || (!understood && c.phrase != c.head)) return true;
+  if (!kind) return true;
+  if (!understood && c.phrase != c.head && !modifiers_are_properties(world, *kind, c.modifiers)) return true;
   std::string name = *kind;
   std::replace(name.begin(), name.end(), '-', ' ');
   const std::vector<std::string> words = split_words(name);

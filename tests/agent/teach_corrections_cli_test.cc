@@ -128,5 +128,70 @@ objects:
   EXPECT_THAT(out, HasSubstr("Instructor: why?\nAgent: Because of what you told me last: \"drawer\".")) << out;
 }
 
+// Found by a fresh user in a nursery of clean and dirty diapers: "put the
+// clean diapers in the bottom drawer", said after they had gone in the
+// middle drawer, was kept as a rule of a class "clean diapers" and nothing
+// moved; "the diaper goes in the bottom drawer" moved the dirty one too.
+// A property the world models picks the things a correction moves, and
+// the part whose goal it corrects: the dirty towel stays in the hamper.
+constexpr const char* kTowels = R"(name: towels
+domain: kitchen
+location: bathroom
+places:
+  - {category: floor, kind: surface}
+  - {category: counter, kind: surface}
+  - {category: hamper, kind: receptacle, door: closed}
+  - {category: shelf, kind: surface}
+  - {category: cabinet, kind: receptacle, door: closed}
+objects:
+  - {category: towel, at: floor1, properties: [dirty]}
+  - {category: towel, at: counter1, count: 2, properties: [clean]}
+  - {category: soap, at: counter1}
+task:
+  name: tidy bathroom
+  subtasks:
+    - {verb: clear, place: floor1}
+    - {verb: clear, place: counter1}
+intent:
+  - {subtask: clear, from: floor1, category: towel, place: hamper1, closed: true}
+  - {subtask: clear, from: counter1, category: towel, place: shelf1}
+  - {subtask: clear, from: counter1, category: soap, place: cabinet1, closed: true}
+)";
+
+TEST_F(TeachCorrections, APropertySaidPicksTheThingsACorrectionMoves) {
+  const std::string world = write("towels.yaml", kTowels).string();
+  // Said when asked about another thing: a correction, not a rule.
+  Process at_goal({APPRENTICE_BINARY, "teach", "--scenario", world});
+  ASSERT_TRUE(at_goal.write(testing::typed_lines({"tidy the bathroom", "clear the floor", "the towel goes in the hamper",
+                                                  "clear the counter", "same as the dirty towel",
+                                                  "the clean towels go on the shelf", "the soap goes in the cabinet",
+                                                  "that's all"})));
+  EXPECT_EQ(at_goal.wait(), 0) << at_goal.out() << at_goal.err();
+  EXPECT_THAT(at_goal.out(), HasSubstr("Instructor: the clean towels go on the shelf\n"
+                                       "Agent: So the clean towel goes on the shelf.\n"
+                                       "Agent: I opened the hamper, took the clean towel out of it, put it on the shelf,"))
+      << at_goal.out();
+  EXPECT_THAT(at_goal.out(), Not(HasSubstr("go with clean towels"))) << at_goal.out();
+  EXPECT_THAT(at_goal.out(), Not(HasSubstr("took the dirty towel"))) << at_goal.out();
+
+  // Said at the question about the task's next step.
+  const std::string store = (dir_ / "towels.sqlite").string();
+  Process at_step({APPRENTICE_BINARY, "teach", "--scenario", world, "--knowledge", store});
+  ASSERT_TRUE(at_step.write(testing::typed_lines({"tidy the bathroom", "clear the floor", "hamper", "clear the counter",
+                                                  "hamper", "cabinet", "put the clean towels on the shelf",
+                                                  "that's all"})));
+  EXPECT_EQ(at_step.wait(), 0) << at_step.out() << at_step.err();
+  EXPECT_THAT(at_step.out(), Not(HasSubstr("took the dirty towel"))) << at_step.out();
+  // The floor's towels still go in the hamper; the counter's on the shelf.
+  Process knowledge({APPRENTICE_BINARY, "knowledge", "--knowledge", store});
+  EXPECT_EQ(knowledge.wait(), 0) << knowledge.err();
+  EXPECT_THAT(knowledge.out(), HasSubstr("When I clear the floor (to tidy the bathroom), the towel goes in the hamper"))
+      << knowledge.out();
+  EXPECT_THAT(knowledge.out(), HasSubstr("When I clear the counter (to tidy the bathroom), the towel goes on the shelf.\n"
+                                         "    (learned on the towel from the instructor, who said \"put the clean "
+                                         "towels on the shelf\" (a correction))"))
+      << knowledge.out();
+}
+
 }  // namespace
 }  // namespace apprentice

@@ -76,6 +76,37 @@ TEST_F(TeacherQuestions, AThingNamedIsAnsweredByItsGoalAndWhereItCameFrom) {
 // glove away before?", once the teacher has said it goes elsewhere: how it
 // came to go there when it was dealt with (its report), and where it goes
 // now; not the goal of now, which the teacher just gave.
+// "why did you ask if the blanket goes with clean diapers?", found by a
+// fresh user, was answered with where the blanket goes now. A question the
+// agent asked is answered with what it proposed and the evidence it
+// showed: about the thing named, else a thing of its kind, else the yes/no
+// whose evidence names what was said ("why do you keep asking about
+// scarves"), else the last one; a thing never asked about is answered as
+// "why" is.
+TEST_F(TeacherQuestions, AQuestionTheAgentAskedIsAnsweredByItsEvidence) {
+  const Vocabulary& v = world().vocabulary;
+  std::vector<ProposalAsked> asked{
+      {id("umbrella1"), Goal({Literal{Fact(v.in, {id("umbrella1"), id("cabinet1")}), true}}), "with scarves, as you said"},
+      {id("scarf1"), Goal({Literal{Fact(v.in, {id("scarf1"), id("basket1")}), true}}), "like the mitten"}};
+  auto why_asked = [&](std::vector<ObjectId> named) {
+    return answer_why(TeachingSoFar{world(), goals_, progress_, nullptr, asked}, named, WhyAbout::kAsking);
+  };
+  EXPECT_EQ(why_asked({id("umbrella1")}),
+            "I asked whether the umbrella goes in the cabinet, with scarves, as you said: it seemed likely, but not "
+            "enough to do it without asking.");
+  EXPECT_THAT(why_asked({}), StartsWith("I asked whether the scarf goes in the left basket, like the mitten:"));
+  // Since then taught otherwise: where it goes now is said too.
+  learn("scarf1", "closet1", "instructor: \"closet\"");
+  EXPECT_THAT(why_asked({id("scarf1")}), HasSubstr("without asking. Now the scarf goes in the closet."));
+  // Never asked about the glove: its own why.
+  learn("glove1", "basket2", "instructor: \"gloves in the right one\"");
+  EXPECT_THAT(why_asked({id("glove1")}), StartsWith("The glove goes in the right basket: I learned that"));
+  // Nothing asked yet: as "why" is.
+  EXPECT_EQ(answer_why(TeachingSoFar{world(), goals_, progress_, nullptr}, std::vector<ObjectId>{id("glove1")},
+                       WhyAbout::kAsking),
+            why({id("glove1")}));
+}
+
 TEST_F(TeacherQuestions, AnEarlierPlacementIsAnsweredByHowItWasDecided) {
   ObjectReport dealt;
   dealt.object = "glove1";
@@ -88,7 +119,7 @@ TEST_F(TeacherQuestions, AnEarlierPlacementIsAnsweredByHowItWasDecided) {
       "Earlier I decided the glove goes in the left basket, like the mitten; since then, the glove goes in the right "
       "basket.";
   EXPECT_EQ(why({id("glove1"), id("basket1")}), earlier);
-  EXPECT_EQ(answer_why(TeachingSoFar{world(), goals_, progress_, nullptr}, std::vector<ObjectId>{id("glove1")}, true),
+  EXPECT_EQ(answer_why(TeachingSoFar{world(), goals_, progress_, nullptr}, std::vector<ObjectId>{id("glove1")}, WhyAbout::kEarlier),
             earlier);
   // Asked about where it goes now, or with no word of before: its goal now.
   EXPECT_THAT(why({id("glove1"), id("basket2")}), StartsWith("The glove goes in the right basket: I learned that"));

@@ -84,6 +84,11 @@ TEST(Face, LearningWithTheSimulatedInstructorGivesTableThree) {
   const nlohmann::json learned = nlohmann::json::parse(to_json(*report));
   for (const auto& o : learned["objects"]) learned_from.insert(o["goal_source"]);
   EXPECT_EQ(learned_from, (std::set<std::string>{"instructor", "memory"}));
+  // Each object names the part it was dealt with in, by its verb and place.
+  std::set<std::pair<std::string, std::string>> parts;
+  for (const auto& o : learned["objects"]) parts.emplace(o["subtask"], o["part_place"]);
+  EXPECT_EQ(parts, (std::set<std::pair<std::string, std::string>>{
+                       {"clear", "table"}, {"store", "counter"}, {"unload", "dish-rack"}}));
 
   // Then alone, with what it learned.
   auto alone = (*session)->perform("");

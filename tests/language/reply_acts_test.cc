@@ -114,6 +114,11 @@ TEST_F(ReplyActsTest, TheTeachersQuestionsAreAnsweredNotTaught) {
   // "why'd you throw out the bottle before?").
   EXPECT_EQ(acts(c, "why'd you put the hairbrush away before?"), "command why-earlier about hairbrush1");
   EXPECT_EQ(acts(c, "why did you close the hamper earlier"), "command why-earlier about hamper1");
+  // About a question the agent asked (a fresh user's "why did you ask if the
+  // blanket goes with clean diapers?").
+  EXPECT_EQ(acts(c, "why did you ask if the hairbrush goes in the hamper?"),
+            "command why-asking about hairbrush1 hamper1");
+  EXPECT_EQ(acts(c, "why do u keep suggesting the hamper lol"), "command why-asking about hamper1");
 }
 
 // "coil it up on the right hook" (a fresh user's garden hose): a verb the
