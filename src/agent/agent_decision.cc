@@ -139,7 +139,25 @@ TaskLearningAgent::Session::answer_to_proposal(const Question& asked, ObjectId o
     // to where it goes. What does not say where it goes is heard at the
     // next question after a no.
     std::optional<language::GoalGiven> where = agent_.understanding_.goal_in_rest(w, at, *yes_no);
-    if (where && !about_it(language::Reply(*where))) where.reset();
+    // "yep, but mittens go in the top drawer w the socks", asked with the
+    // mittens: where another thing still to come goes, learned for when it
+    // comes (and so not settled by the yes).
+    bool said_for_later = false;
+    if (where && !about_it(language::Reply(*where))) {
+      std::optional<ObjectId> ahead;
+      if (!why_not_a_goal_for(object, language::Reply(*where), ahead) && ahead) {
+        begin_lesson(text);
+        bool say_norm = false;
+        const language::GoalGiven later = with_doors_closed(*ahead, *where, say_norm);
+        const std::string source = "instructor: " + apprentice::quoted(text);
+        say(language::read_back_goal_for_later(w, *ahead, later.goal) +
+            (say_norm ? " " + language::closing_norm_note() : ""));
+        if (auto s = learn_goal(*ahead, later.goal, source); !s) return stop(s.error());
+        if (auto s = learn_goals_of_others(object, *ahead, later, text, source); !s) return stop(s.error());
+        said_for_later = true;
+      }
+      where.reset();
+    }
     // "yeah, and envelopes as well": a yes, and the same for those.
     if (where && yes_no->yes && asked.goal && where->goal == *asked.goal) {
       begin_lesson(text);
@@ -149,10 +167,10 @@ TaskLearningAgent::Session::answer_to_proposal(const Question& asked, ObjectId o
     }
     if (!where) {
       if (yes_no->yes) {
-        begin_lesson(text);
+        if (!said_for_later) begin_lesson(text);
         return ProposalAnswer{true, std::nullopt};
       }
-      if (!yes_no->rest.empty()) conversation_.answer_ahead(yes_no->rest);
+      if (!yes_no->rest.empty() && !said_for_later) conversation_.answer_ahead(yes_no->rest);
       return ProposalAnswer{false, std::nullopt};
     }
     reply = std::move(*where);
@@ -330,9 +348,11 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
         if (proposals.empty()) return std::optional<Goal>();
         continue;
       }
+      // (A thing the yes said goes elsewhere has its own goal now.)
       if (answer->yes)
         for (auto& [other, its_goal] : together)
-          sources_.settle(other, std::move(its_goal), "yes, with " + language::spoken_name(w, object));
+          if (agent_.knowledge_.goals.find(goal_key(other)) == nullptr)
+            sources_.settle(other, std::move(its_goal), "yes, with " + language::spoken_name(w, object));
       if (answer->instead) {
         // "No, it goes in the garbage": the teacher's own goal, learned.
         sources_.refuse(goal_key(object).category, *decision.destination);

@@ -243,6 +243,7 @@ void join_world_names(std::vector<std::string>& words, const Universe& universe)
   }
   if (names.empty()) {
     join_split_names(words, universe);
+    separate_listed_names(words, universe);
     return;
   }
   std::sort(names.begin(), names.end(), [](const auto& a, const auto& b) { return a.second.size() > b.second.size(); });
@@ -284,6 +285,46 @@ void join_world_names(std::vector<std::string>& words, const Universe& universe)
   for (std::size_t w = next_word; w < words.size(); ++w) out.push_back(words[w]);
   words = std::move(out);
   join_split_names(words, universe);
+  separate_listed_names(words, universe);
+}
+
+void separate_listed_names(std::vector<std::string>& words, const Universe& universe) {
+  std::set<std::string> one_word;  // the one-word kinds of things here: "rake", "hoe"
+  std::set<std::string> two_words;  // "paper plate", for its words said together
+  for (const ObjectInfo& info : universe.objects()) {
+    if (info.kind != ObjectKind::kItem) continue;
+    const std::vector<std::string> parts = name_parts(info.category);
+    if (parts.size() == 1) one_word.insert(parts.front());
+    if (parts.size() == 2) two_words.insert(parts[0] + " " + parts[1]);
+  }
+  if (one_word.size() < 3) return;
+  auto names_a_kind = [&](const std::string& word) {
+    const std::vector<std::string> forms = singular_forms(word);
+    return std::any_of(forms.begin(), forms.end(), [&](const std::string& f) { return one_word.count(f) > 0; });
+  };
+  auto one_name = [&](const std::string& a, const std::string& b) {
+    const std::vector<std::string> forms = singular_forms(b);
+    return std::any_of(forms.begin(), forms.end(), [&](const std::string& f) { return two_words.count(a + " " + f) > 0; });
+  };
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < words.size();) {
+    std::size_t end = i;
+    while (end < words.size() && names_a_kind(words[end]) && (end == i || !one_name(words[end - 1], words[end]))) ++end;
+    // ("rake shovel and hoe": two, then the last after "and".)
+    const bool and_one_more = end - i == 2 && end + 1 < words.size() && is_one_of(words[end], {"and", "&", "n"}) &&
+                              names_a_kind(words[end + 1]);
+    if (end - i >= 3 || and_one_more) {
+      for (std::size_t k = i; k < end; ++k) {
+        if (k > i) out.push_back(",");
+        out.push_back(words[k]);
+      }
+      i = end;
+    } else {
+      out.push_back(words[i]);
+      ++i;
+    }
+  }
+  words = std::move(out);
 }
 
 void join_split_names(std::vector<std::string>& words, const Universe& universe) {

@@ -32,8 +32,13 @@ void expand_shorthand(std::vector<std::string>& words);
 // category itself: {"the", "walk", "in", "pantry"} -> {"the",
 // "walk-in-pantry"}; a plural last word counts ("jacks-in-the-box" aside,
 // "walk in pantries" -> "walk-in-pantry").
-// Then join_split_names.
+// Then join_split_names and separate_listed_names.
 void join_world_names(std::vector<std::string>& words, const Universe& universe);
+// Three or more kinds of thing here named one after another without commas
+// ("rake shovel hoe"), or two before "and" and a third ("rake shovel and
+// hoe"), as typed in a hurry: a list, with the commas put in.
+// Two words that make a name here ("paper plate") are never split.
+void separate_listed_names(std::vector<std::string>& words, const Universe& universe);
 // Two words that make one word of a name here, said apart: {"tool", "box"}
 // -> {"toolbox"}, {"work", "benches"} -> {"workbenches"} (names of six
 // letters or more, so that short words never run together).

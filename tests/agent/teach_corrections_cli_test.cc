@@ -193,5 +193,59 @@ TEST_F(TeachCorrections, APropertySaidPicksTheThingsACorrectionMoves) {
       << knowledge.out();
 }
 
+// Found by a fresh user: "yep, but mittens go in the top drawer w the
+// socks", said to a yes/no about another thing, put the mittens where the
+// yes said; the rest was dropped. Where another thing still to come goes,
+// said with a yes, is learned for when it comes.
+TEST_F(TeachCorrections, AYesWithAnotherThingsPlaceLearnsItForLater) {
+  constexpr const char* kBedroomPlaces = R"(domain: kitchen
+location: bedroom
+places:
+  - {category: floor, kind: surface}
+  - {category: drawer, kind: receptacle, door: closed, properties: [top]}
+  - {category: drawer, kind: receptacle, door: closed, properties: [middle]}
+  - {category: toy-box, kind: receptacle, door: closed}
+task:
+  name: tidy bedroom
+  subtasks:
+    - {verb: clear, place: floor1}
+)";
+  const std::string first = write("first.yaml", std::string("name: first\n") + kBedroomPlaces + R"(objects:
+  - {category: ball, at: floor1}
+  - {category: shirt, at: floor1}
+  - {category: sweater, at: floor1}
+intent:
+  - {subtask: clear, category: ball, place: toy-box1, closed: true}
+  - {subtask: clear, category: shirt, place: drawer2, closed: true}
+  - {subtask: clear, category: sweater, place: drawer2, closed: true}
+)").string();
+  const std::string second = write("second.yaml", std::string("name: second\n") + kBedroomPlaces + R"(objects:
+  - {category: jacket, at: floor1}
+  - {category: sock, at: floor1, count: 2}
+  - {category: mitten, at: floor1, count: 2}
+intent:
+  - {subtask: clear, category: jacket, place: drawer2, closed: true}
+  - {subtask: clear, category: sock, place: drawer2, closed: true}
+  - {subtask: clear, category: mitten, place: drawer1, closed: true}
+)").string();
+  const std::string store = (dir_ / "bedroom.sqlite").string();
+  Process teach_first({APPRENTICE_BINARY, "teach", "--scenario", first, "--knowledge", store});
+  ASSERT_TRUE(teach_first.write(testing::typed_lines(
+      {"tidy the bedroom", "clear the floor", "toy box", "the shirt goes in the middle drawer", "middle drawer",
+       "that's all"})));
+  ASSERT_EQ(teach_first.wait(), 0) << teach_first.out() << teach_first.err();
+  Process teach_second({APPRENTICE_BINARY, "teach", "--scenario", second, "--knowledge", store});
+  ASSERT_TRUE(teach_second.write(testing::typed_lines({"tidy the bedroom", "yep, but mittens go in the top drawer",
+                                                       "that's all"})));
+  EXPECT_EQ(teach_second.wait(), 0) << teach_second.out() << teach_second.err();
+  const std::string& out = teach_second.out();
+  EXPECT_THAT(out, HasSubstr("Instructor: yep, but mittens go in the top drawer\n"
+                             "Agent: So the mitten goes in the top drawer, and the top drawer ends closed. I will do "
+                             "that when I come to it.\n"
+                             "Agent: So the sock goes in the middle drawer"))
+      << out;
+  EXPECT_THAT(out, HasSubstr("Agent: Next, the mitten on the floor: it goes in the top drawer")) << out;
+}
+
 }  // namespace
 }  // namespace apprentice

@@ -105,5 +105,18 @@ TEST(SameAsShorthand, GoesWithSaidInShorthand) {
   EXPECT_EQ(read_same_as("pencils go w/ the markers").subject, "pencils");
 }
 
+// "the long tools, rake shovel hoe, they all go on the lower shelf" (a
+// fresh user's garden shed): three kinds named one after another without
+// commas are a list; only the rake and the shovel were read, and the hoe
+// was never put away.
+TEST_F(ReplyActsTest, KindsListedWithoutCommasAreAList) {
+  ReplyContext c = goal_question("toothbrush1");
+  EXPECT_EQ(acts(c, "toothbrush toothpaste comb, they all go on the shelf"),
+            "goal (on toothbrush1 shelf1); also (on toothpaste1 shelf1); also (on comb1 shelf1)");
+  EXPECT_EQ(acts(c, "toothbrush toothpaste and comb on the shelf"),
+            "goal (on toothbrush1 shelf1); also (on toothpaste1 shelf1); also (on comb1 shelf1)");
+  EXPECT_EQ(acts(c, "the toothbrush goes on the shelf"), "goal (on toothbrush1 shelf1)");
+}
+
 }  // namespace
 }  // namespace apprentice::language
