@@ -198,7 +198,7 @@ void TaskLearningAgent::Session::consult_llm(ObjectId object) {
   const World& w = world();
   std::vector<ObjectId> things;
   for (ObjectId o : w.universe->of_kind(ObjectKind::kItem))
-    if (o == object || still_to_come(o)) things.push_back(o);
+    if (o == object || progress_.still_to_come(world(), o)) things.push_back(o);
   std::vector<GoalKnowledge> taught;
   for (const GoalKnowledge& g : agent_.knowledge_.goals.all())
     if (g.key.task == progress_.task.name) taught.push_back(g);
@@ -215,7 +215,7 @@ std::vector<std::pair<ObjectId, Goal>> TaskLearningAgent::Session::asked_togethe
   std::vector<std::pair<double, std::pair<ObjectId, Goal>>> candidates;
   const World& w = world();
   for (ObjectId other : w.universe->of_kind(ObjectKind::kItem)) {
-    if (other == object || !still_to_come(other) || sources_.settled(other)) continue;
+    if (other == object || !progress_.still_to_come(world(), other) || sources_.settled(other)) continue;
     if (agent_.knowledge_.goals.find(goal_key(other)) != nullptr) continue;
     std::vector<DestinationProposal> proposals = proposals_for(other);
     // What was learned for its own kind elsewhere is asked about alone.

@@ -60,7 +60,7 @@ language::ReplyContext TaskLearningAgent::Session::context(language::Asked asked
   }
   if (progress_.current)
     for (ObjectId o : w.universe->of_kind(ObjectKind::kItem))
-      if (o != object && still_to_come(o)) c.still_to_come.push_back(o);
+      if (o != object && progress_.still_to_come(world(), o)) c.still_to_come.push_back(o);
   c.dealt_with = progress_.evaluated_order;
   c.goal_of_kind = [this](const std::string& kind, ObjectId thing) -> std::optional<Goal> {
     const GoalKnowledge* known = goal_known_for(so_far(), kind);
@@ -272,15 +272,33 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::obey(const language
                                                                   const Question& asked,
                                                                   const language::ReplyContext& context) {
   switch (command.kind) {
-    case language::Command::Kind::kHelp: help(asked, context); return {};
-    case language::Command::Kind::kStatus: status(asked); return {};
-    case language::Command::Kind::kUndo: return undo();
-    case language::Command::Kind::kForget:
-      if (auto s = forget(command.argument); !s) return stop(s.error());
+    case language::Command::Kind::kHelp:
+      say(language::i_asked(asked.text), Voice::kResponse);
+      say(language::kinds_of_answer(context.asked, agent_.understanding_.example_replies(world(), context)),
+          Voice::kResponse);
+      say(language::commands_at_any_question(), Voice::kResponse);
       return {};
+    case language::Command::Kind::kStatus: {
+      const StatusCounts counts{static_cast<long long>(agent_.knowledge_.rules.size()), conversation_.instructions()};
+      for (const std::string& line : answer_status(so_far(), asked.object, counts)) say(line, Voice::kResponse);
+      return {};
+    }
+    case language::Command::Kind::kUndo: return undo();
+    case language::Command::Kind::kForget: {
+      auto known = [&] { return agent_.knowledge_.goals.size() + sources_.rules_in_use().size(); };
+      const std::size_t before = known();
+      if (auto s = forget(command.argument); !s) return stop(s.error());
+      // "forget paper", asked whether the box goes with paper things: what
+      // the question rested on is gone, and the thing is decided again.
+      if (asked.kind == QuestionKind::kConfirmGoal && known() != before) return tl::unexpected(Stop{});
+      return {};
+    }
     case language::Command::Kind::kQuit: return stop(Error{ErrorCode::kCancelled, "the instructor quit"});
-    case language::Command::Kind::kWhatsLeft: answer_whats_left(); return {};
-    case language::Command::Kind::kWhere: answer_where(command); return {};
+    case language::Command::Kind::kWhatsLeft: say(answer_whats_left(so_far()), Voice::kResponse); return {};
+    case language::Command::Kind::kWhere:
+      for (const std::string& line : language::where_things_are(world(), command.argument, command.things))
+        say(line, Voice::kResponse);
+      return {};
     case language::Command::Kind::kWhy: {
       const WhyAbout about = command.asking ? WhyAbout::kAsking : command.earlier ? WhyAbout::kEarlier : WhyAbout::kNow;
       say(answer_why(so_far(), command.things, about), Voice::kResponse);
@@ -289,57 +307,6 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::obey(const language
     case language::Command::Kind::kDo: do_now(command.actions); return {};
   }
   return {};
-}
-
-void TaskLearningAgent::Session::help(const Question& asked, const language::ReplyContext& context) {
-  say(language::i_asked(asked.text), Voice::kResponse);
-  say(language::kinds_of_answer(context.asked, agent_.understanding_.example_replies(world(), context)),
-      Voice::kResponse);
-  say(language::commands_at_any_question(), Voice::kResponse);
-}
-
-void TaskLearningAgent::Session::status(const Question& asked) {
-  say(language::what_i_see(world()), Voice::kResponse);
-  language::WhatIAmDoing doing;
-  doing.task = progress_.task.name;
-  if (progress_.current) doing.subtask = language::SubtaskUnderWay{current().verb, current().relation, current().places};
-  if (progress_.in_progress) doing.working_on = progress_.in_progress->object;
-  doing.asking_about = asked.object;
-  doing.goals = static_cast<long long>(agent_.knowledge_.goals.size());
-  doing.rules = static_cast<long long>(agent_.knowledge_.rules.size());
-  doing.instructions = conversation_.instructions();
-  say(language::what_i_am_doing(world(), doing), Voice::kResponse);
-}
-
-void TaskLearningAgent::Session::answer_whats_left() {
-  const World& w = world();
-  if (!progress_.current) {
-    if (progress_.task.name.empty()) say(language::no_task_yet(), Voice::kResponse);
-    else say(whats_left_of_task(), Voice::kResponse);
-    return;
-  }
-  std::vector<ObjectId> left;
-  for (ObjectId o : w.universe->of_kind(ObjectKind::kItem))
-    if (still_to_come(o) && (!progress_.in_progress || progress_.in_progress->object != o)) left.push_back(o);
-  say(language::whats_left_of_subtask(w, {current().verb, current().relation, current().places}, left),
-      Voice::kResponse);
-}
-
-// Between parts of the task: the parts done, and the things not dealt with
-// yet where they are. The agent cannot know which of them the task means,
-// so it says all of them and leaves the choice to the teacher.
-std::string TaskLearningAgent::Session::whats_left_of_task() const {
-  std::vector<language::PartLearned> parts;
-  for (const LearnedSubtask& s : progress_.task.subtasks) parts.push_back({s.verb, s.relation, s.place_category});
-  std::vector<ObjectId> not_dealt_with;
-  for (ObjectId o : world().universe->of_kind(ObjectKind::kItem))
-    if (!progress_.evaluated.count(o)) not_dealt_with.push_back(o);
-  return language::whats_left_of_task(world(), parts, not_dealt_with);
-}
-
-void TaskLearningAgent::Session::answer_where(const language::Command& command) {
-  for (const std::string& line : language::where_things_are(world(), command.argument, command.things))
-    say(line, Voice::kResponse);
 }
 
 TeachingSoFar TaskLearningAgent::Session::so_far() const {
@@ -367,30 +334,17 @@ void TaskLearningAgent::Session::do_now(const std::vector<Action>& actions) {
   if (!done.empty()) say(language::report_actions(world(), done), Voice::kResponse);
 }
 
-std::vector<std::string> TaskLearningAgent::Session::known_kinds(std::string_view phrase) const {
-  std::string key = to_lower(trim(phrase));
-  for (std::string_view article : {"the ", "a ", "an "})
-    if (key.starts_with(article)) key = key.substr(article.size());
-  std::replace(key.begin(), key.end(), ' ', '-');
-  std::vector<std::string> singular = {key};
-  if (key.size() > 1 && key.back() == 's') singular.push_back(key.substr(0, key.size() - 1));
-  if (key.size() > 2 && key.ends_with("es")) singular.push_back(key.substr(0, key.size() - 2));
-  std::vector<std::string> fits;
-  for (const GoalKnowledge& g : agent_.knowledge_.goals.all()) {
-    const std::string& c = g.key.category;
-    bool fit = std::any_of(singular.begin(), singular.end(), [&](const std::string& k) {
-      return !k.empty() && (c == k || (c.size() > k.size() && c.ends_with("-" + k)));
-    });
-    if (fit && std::find(fits.begin(), fits.end(), c) == fits.end()) fits.push_back(c);
-  }
-  return fits;
-}
-
 Status TaskLearningAgent::Session::forget(const std::string& kind) {
   std::optional<std::string> category = agent_.understanding_.category(world(), kind);
+  // "forget paper", with a rule about paper things: the rule, not the
+  // newspaper that WordNet calls paper. A kind named by its own words
+  // ("forget the mug") is the kind.
+  if (category && kinds_known_by(agent_.knowledge_.goals, kind) != std::vector<std::string>{*category} &&
+      !rules_named(sources_.rules_in_use(), kind).empty())
+    category.reset();
   if (!category) {
     // A kind that is not here may still be known.
-    std::vector<std::string> fits = known_kinds(kind);
+    std::vector<std::string> fits = kinds_known_by(agent_.knowledge_.goals, kind);
     if (fits.size() > 1) {
       say(language::which_kind_to_forget(fits), Voice::kResponse);
       return {};

@@ -265,7 +265,7 @@ std::optional<std::string> TaskLearningAgent::Session::why_not_a_goal_for(
   std::vector<ObjectId> items;
   for (ObjectId o : mentioned)
     if (w.universe->info(o).kind == ObjectKind::kItem) items.push_back(o);
-  if (items.size() == 1 && still_to_come(items.front())) {
+  if (items.size() == 1 && progress_.still_to_come(world(), items.front())) {
     ahead = items.front();
     return std::nullopt;
   }
@@ -278,7 +278,7 @@ TaskLearningAgent::Session::Flow<std::optional<bool>> TaskLearningAgent::Session
   const World& w = world();
   std::vector<ObjectId> rest;
   for (ObjectId o : w.universe->of_kind(ObjectKind::kItem))
-    if (o != object && still_to_come(o)) rest.push_back(o);
+    if (o != object && progress_.still_to_come(world(), o)) rest.push_back(o);
   if (rest.empty()) return std::optional<bool>();
   std::vector<ObjectId> things = {object};
   things.insert(things.end(), rest.begin(), rest.end());
@@ -315,7 +315,7 @@ std::optional<language::Reply> TaskLearningAgent::Session::goal_for_another(Obje
   for (ObjectId o : given->goal.objects())
     if (world().universe->info(o).kind == ObjectKind::kItem) items.push_back(o);
   if (items.size() != 1 || items.front() == object || progress_.evaluated.count(items.front())) return std::nullopt;
-  if (still_to_come(items.front())) return reply;
+  if (progress_.still_to_come(world(), items.front())) return reply;
   // Not in this subtask's places: its subtask is not known yet.
   const ObjectId other = items.front();
   return language::Reply(language::Unusable{
@@ -358,7 +358,7 @@ Status TaskLearningAgent::Session::learn_goals_of_others(ObjectId asked, ObjectI
       if (w.universe->info(o).kind == ObjectKind::kItem) items.push_back(o);
     if (items.size() != 1 || items.front() == asked || items.front() == about) continue;
     const ObjectId item = items.front();
-    if (!still_to_come(item)) {
+    if (!progress_.still_to_come(world(), item)) {
       if (!progress_.evaluated.count(item)) later.push_back(item);
       else if (!goals_corrected_by(item, "").empty() && !goal.satisfied_by(w.state)) corrected.emplace_back(item, goal);
       continue;
@@ -384,15 +384,6 @@ Status TaskLearningAgent::Session::learn_goals_of_others(ObjectId asked, ObjectI
     if (auto s = correct_goal(item, correction, text); !s) return s;
   }
   return {};
-}
-
-bool TaskLearningAgent::Session::still_to_come(ObjectId item) const {
-  if (progress_.evaluated.count(item)) return false;
-  const Vocabulary& v = world().vocabulary;
-  for (ObjectId place : current().places)
-    for (PredicateId relation : {v.on, v.in})
-      if (world().state.holds(Fact(relation, {item, place}))) return true;
-  return false;
 }
 
 Status TaskLearningAgent::Session::learn_goal(ObjectId object, const Goal& goal, const std::string& source,
@@ -500,7 +491,7 @@ Status TaskLearningAgent::Session::correct_goal(ObjectId object, const language:
   // The things of its kind already put away go where it now says, by the
   // agent's own search; what was closed is closed again after.
   const GoalKnowledge* learned = keys.empty() ? nullptr : agent_.knowledge_.goals.find(keys.back());
-  if (learned == nullptr) return {};
+  if (learned == nullptr) return learn_goals_of_others(object, object, given, text, source);
   std::vector<Literal> closed_before;
   for (ObjectId place : w.universe->of_kind(ObjectKind::kReceptacle))
     if (const Fact closed(w.vocabulary.closed, {place}); w.state.holds(closed)) closed_before.push_back(Literal{closed, true});
@@ -521,7 +512,9 @@ Status TaskLearningAgent::Session::correct_goal(ObjectId object, const language:
     }
   }
   if (!done.empty()) say(language::report_actions(w, done), Voice::kResponse);
-  return {};
+  // "the jeans go in the hamper and the dirty towel goes in the washer":
+  // the others said with it, corrected or learned too.
+  return learn_goals_of_others(object, object, given, text, source);
 }
 
 }  // namespace apprentice

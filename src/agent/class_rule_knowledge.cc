@@ -27,16 +27,7 @@ std::vector<std::string> plain_words(std::string_view text) {
   return out;
 }
 
-// "fruits" -> "fruit", "boxes" -> "box", "clothes" stays (and "clothe" too).
-std::string singular(const std::string& word) {
-  if (word.size() > 3 && word.ends_with("ies")) return word.substr(0, word.size() - 3) + "y";
-  if (word.size() > 3 && (word.ends_with("xes") || word.ends_with("ches") || word.ends_with("shes") || word.ends_with("sses")))
-    return word.substr(0, word.size() - 2);
-  if (word.size() > 2 && word.ends_with("s") && !word.ends_with("ss")) return word.substr(0, word.size() - 1);
-  return word;
-}
-
-bool same_word(const std::string& a, const std::string& b) { return a == b || singular(a) == singular(b); }
+bool same_word(const std::string& a, const std::string& b) { return a == b || singular_noun(a) == singular_noun(b); }
 
 // Whether `said` are the last words of `words` (each the same word, up to
 // the plural).
@@ -68,10 +59,10 @@ bool names_subject(const ClassRule& rule, const std::vector<std::string>& said) 
     words.erase(words.begin(), words.begin() + static_cast<std::ptrdiff_t>(modifiers.size()));
   std::vector<std::string> class_words = plain_words(rule.class_name);
   if (class_words.empty()) {
-    // A rule of modifiers alone: "plastic", "plastic things", "plastic items".
+    // A rule of modifiers alone: "plastic", "plastic things", "plastic
+    // items", "plastic stuff".
     std::vector<std::string> bare = said;
-    if (bare.size() > modifiers.size() &&
-        (bare.back() == "things" || bare.back() == "thing" || bare.back() == "items" || bare.back() == "item"))
+    if (bare.size() > modifiers.size() && is_one_of(bare.back(), {"things", "thing", "items", "item", "stuff"}))
       bare.pop_back();
     return !modifiers.empty() && bare.size() == modifiers.size() &&
            std::equal(bare.begin(), bare.end(), modifiers.begin(), same_word);
@@ -105,6 +96,8 @@ std::vector<ClassRule> rules_named(std::span<const ClassRule> rules, std::string
   for (const char* lead : {"rule", "that", "about", "for", "what", "you", "know"})
     if (!words.empty() && words.front() == lead) words.erase(words.begin());
   if (!words.empty() && words.front() == "that") words.erase(words.begin());
+  // "the paper rule", "that paper stuff rule".
+  while (!words.empty() && (words.back() == "rule" || words.back() == "rules")) words.pop_back();
   // Where the subject ends: at "go"/"goes" or at the relation.
   std::vector<std::string> subject = words, place;
   for (std::size_t i = 0; i < words.size(); ++i) {

@@ -46,6 +46,15 @@ void Curriculum::object_done() {
 
 void Curriculum::thing_left(ObjectId object) { left_by_teacher.push_back(object); }
 
+bool Curriculum::still_to_come(const World& world, ObjectId item) const {
+  if (!current || evaluated.count(item)) return false;
+  const Vocabulary& v = world.vocabulary;
+  for (ObjectId place : current->places)
+    for (PredicateId relation : {v.on, v.in})
+      if (world.state.holds(Fact(relation, {item, place}))) return true;
+  return false;
+}
+
 void Curriculum::part_left(ObjectId asked, const std::vector<std::pair<ObjectId, ObjectReport>>& left) {
   thing_left(asked);
   for (const auto& [object, report] : left) {

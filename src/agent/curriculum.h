@@ -33,6 +33,7 @@
 #include "world/action.h"
 #include "world/goal.h"
 #include "world/state.h"
+#include "world/world.h"
 
 namespace apprentice::teaching {
 
@@ -116,6 +117,11 @@ struct Curriculum {
   // The teacher said to leave `object` ("leave it"): its report comes when
   // it is done; it is not a thing the agent failed to deal with.
   void thing_left(ObjectId object);
+
+  // Whether `item` is in or on a place of the subtask under way and not yet
+  // dealt with (false with none under way): a goal said for it now is used
+  // when it comes.
+  bool still_to_come(const World& world, ObjectId item) const;
 };
 
 }  // namespace apprentice::teaching

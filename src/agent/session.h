@@ -102,16 +102,11 @@ class TaskLearningAgent::Session : private ActingHelp {
   // may fit the reply better), else the question's.
   void explain(const std::string& reason, const language::ReplyContext& context,
                std::vector<std::string> examples = {});
-  void help(const Question& question, const language::ReplyContext& context);
-  void status(const Question& question);
   Status forget(const std::string& kind);
   // "forget fruit" where no goal is known for such a kind: the rule about
   // that class (agent/class_rule_knowledge.h), for good. Whether a rule was
   // named (and something said).
   Result<bool> forget_rule_named(const std::string& what);
-  // The kinds of object with a learned goal that `phrase` names: exactly,
-  // by a plural, or by the last word ("plates": ceramic-plate, paper-plate).
-  std::vector<std::string> known_kinds(std::string_view phrase) const;
   void say(const std::string& statement, Voice voice = Voice::kNarration);
   // Executes `action` in the simulator; once it is done, the instructor
   // sees it (Instructor::observe).
@@ -258,9 +253,6 @@ class TaskLearningAgent::Session : private ActingHelp {
   // corrected (correct_goal), `text` being the teacher's words.
   Status learn_goals_of_others(ObjectId asked, ObjectId about, const language::GoalGiven& given,
                                const std::string& text, const std::string& source);
-  // Whether `item` is in or on a place of the current subtask and not yet
-  // dealt with: a goal said for it now will be used when it comes.
-  bool still_to_come(ObjectId item) const;
   GoalKey goal_key(ObjectId object) const;
   llm::TaskContext llm_context(ObjectId object) const;
 
@@ -308,11 +300,9 @@ class TaskLearningAgent::Session : private ActingHelp {
   // stays asked: an undo keeps them.
   std::vector<ProposalAsked> proposals_asked_;
 
-  // The teacher's own questions and one-off actions (agent_dialogue.cc).
-  void answer_whats_left();
-  std::string whats_left_of_task() const;
-  void answer_where(const language::Command& command);
-  // What the teacher's "why?" reads (agent/teacher_questions.h).
+  // The teacher's own questions are answered by agent/teacher_questions.h,
+  // from what this reads; one-off actions ("close the top drawer") are done
+  // by do_now (agent_dialogue.cc).
   TeachingSoFar so_far() const;
   void do_now(const std::vector<Action>& actions);
 };

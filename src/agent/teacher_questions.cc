@@ -7,6 +7,8 @@
 #include "agent/goal_repair.h"
 #include "language/generation.h"
 #include "language/narration_conversation.h"
+#include "language/utterance.h"
+#include "util/text.h"
 
 namespace apprentice {
 
@@ -189,6 +191,58 @@ std::string answer_why(const TeachingSoFar& so_far, std::span<const ObjectId> na
     }
   return so_far.last_reply == nullptr ? language::why_without_a_reply()
                                       : language::because_of_last_reply(*so_far.last_reply);
+}
+
+std::string answer_whats_left(const TeachingSoFar& so_far) {
+  const World& w = so_far.world;
+  const teaching::Curriculum& progress = so_far.progress;
+  if (!progress.current) {
+    if (progress.task.name.empty()) return language::no_task_yet();
+    std::vector<language::PartLearned> parts;
+    for (const LearnedSubtask& s : progress.task.subtasks) parts.push_back({s.verb, s.relation, s.place_category});
+    std::vector<ObjectId> not_dealt_with;
+    for (ObjectId o : w.universe->of_kind(ObjectKind::kItem))
+      if (!progress.evaluated.count(o)) not_dealt_with.push_back(o);
+    return language::whats_left_of_task(w, parts, not_dealt_with);
+  }
+  std::vector<ObjectId> left;
+  for (ObjectId o : w.universe->of_kind(ObjectKind::kItem))
+    if (progress.still_to_come(w, o) && (!progress.in_progress || progress.in_progress->object != o)) left.push_back(o);
+  const teaching::Current& part = *progress.current;
+  return language::whats_left_of_subtask(w, {part.verb, part.relation, part.places}, left);
+}
+
+std::vector<std::string> answer_status(const TeachingSoFar& so_far, std::optional<ObjectId> asking_about,
+                                       StatusCounts counts) {
+  const World& w = so_far.world;
+  const teaching::Curriculum& progress = so_far.progress;
+  language::WhatIAmDoing doing;
+  doing.task = progress.task.name;
+  if (progress.current)
+    doing.subtask = language::SubtaskUnderWay{progress.current->verb, progress.current->relation, progress.current->places};
+  if (progress.in_progress) doing.working_on = progress.in_progress->object;
+  doing.asking_about = asking_about;
+  doing.goals = static_cast<long long>(so_far.goals.size());
+  doing.rules = counts.rules;
+  doing.instructions = counts.instructions;
+  return {language::what_i_see(w), language::what_i_am_doing(w, doing)};
+}
+
+std::vector<std::string> kinds_known_by(const GoalMemory& goals, std::string_view phrase) {
+  std::string key = to_lower(trim(phrase));
+  for (std::string_view article : {"the ", "a ", "an "})
+    if (key.starts_with(article)) key = key.substr(article.size());
+  std::replace(key.begin(), key.end(), ' ', '-');
+  const std::vector<std::string> forms = key.empty() ? std::vector<std::string>{} : singular_forms(key);
+  std::vector<std::string> fits;
+  for (const GoalKnowledge& g : goals.all()) {
+    const std::string& c = g.key.category;
+    const bool fit = std::any_of(forms.begin(), forms.end(), [&](const std::string& k) {
+      return !k.empty() && (c == k || (c.size() > k.size() && c.ends_with("-" + k)));
+    });
+    if (fit && std::find(fits.begin(), fits.end(), c) == fits.end()) fits.push_back(c);
+  }
+  return fits;
 }
 
 }  // namespace apprentice

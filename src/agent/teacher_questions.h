@@ -1,9 +1,9 @@
-// The teacher's "why?" answered from what the agent knows and how far the
-// teaching has come: "why did you do that?", "why did you put the glove in
-// the right basket?", "why is the closet still open?". A part of the
-// teaching session (agent/session.h) with no state of its own: it reads,
-// says one sentence, and changes nothing, so it is tested without a
-// session or a teacher.
+// The teacher's own questions answered from what the agent knows and how
+// far the teaching has come: "why did you do that?", "why did you put the
+// glove in the right basket?", "why is the closet still open?", "what's
+// left?", "status". A part of the teaching session (agent/session.h) with
+// no state of its own: it reads, says what to say, and changes nothing,
+// so it is tested without a session or a teacher.
 #pragma once
 
 #include <span>
@@ -53,5 +53,26 @@ const GoalKnowledge* goal_known_for(const TeachingSoFar& so_far, const std::stri
 // Asked `kAsking`, it is answered with the evidence of the last yes/no
 // about a thing named (a thing of its kind, else the last yes/no asked).
 std::string answer_why(const TeachingSoFar& so_far, std::span<const ObjectId> named, WhyAbout about = WhyAbout::kNow);
+
+// "what's left?": within a part of the task, the things still on its
+// places (not the one being worked on); between parts, the parts done and
+// every thing not dealt with yet, where it is (the agent cannot know which
+// of them the task means); before the task, that there is none yet.
+std::string answer_whats_left(const TeachingSoFar& so_far);
+
+// "status": what the agent sees, then what it is doing, asking about
+// `asking_about` (the question pending), with the counts learned and of
+// the teacher's instructions.
+struct StatusCounts {
+  long long rules = 0;
+  long long instructions = 0;
+};
+std::vector<std::string> answer_status(const TeachingSoFar& so_far, std::optional<ObjectId> asking_about,
+                                       StatusCounts counts);
+
+// The kinds of thing with a learned goal that `phrase` names, here or not:
+// exactly, by a plural, or by the last word ("plates": ceramic-plate,
+// paper-plate). What "forget plates" forgets.
+std::vector<std::string> kinds_known_by(const GoalMemory& goals, std::string_view phrase);
 
 }  // namespace apprentice

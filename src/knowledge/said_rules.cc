@@ -11,27 +11,17 @@ namespace apprentice {
 
 namespace {
 
-// "toys" -> "toy", "boxes" -> "box", "supplies" -> "supply": enough to
-// find a class's own word in a thing's name ("toy hammer", "tissue box").
-std::string singular(std::string word) {
-  if (word.size() > 4 && word.ends_with("ies")) return word.substr(0, word.size() - 3) + "y";
-  if (word.size() > 4 && (word.ends_with("ches") || word.ends_with("shes") || word.ends_with("sses") || word.ends_with("xes")))
-    return word.substr(0, word.size() - 2);
-  if (word.size() > 3 && word.ends_with("s") && !word.ends_with("ss")) return word.substr(0, word.size() - 1);
-  return word;
-}
-
 std::vector<std::string> name_words_of(const KindProfile& thing) {
   std::vector<std::string> words;
   for (const std::string& m : thing.modifiers)
-    for (const std::string& w : split_words(m)) words.push_back(singular(w));
-  for (const std::string& w : split_words(thing.head)) words.push_back(singular(w));
+    for (const std::string& w : split_words(m)) words.push_back(singular_noun(w));
+  for (const std::string& w : split_words(thing.head)) words.push_back(singular_noun(w));
   return words;
 }
 
 bool in_name(const KindProfile& thing, const std::string& word) {
   const std::vector<std::string> words = name_words_of(thing);
-  auto has = [&](const std::string& w) { return std::find(words.begin(), words.end(), singular(w)) != words.end(); };
+  auto has = [&](const std::string& w) { return std::find(words.begin(), words.end(), singular_noun(w)) != words.end(); };
   if (has(word)) return true;
   // A compound modifier is in the name when its words are ("stainless-steel
   // spoon": "stainless steel"), or its first word is and the rest says how
@@ -61,6 +51,7 @@ ClassRule as_head_and_modifiers(const ClassRule& rule, const ConceptSource& conc
 ClauseEvidence clause_evidence(const ClassRule& as_said, const KindProfile& thing, const ConceptSource& concepts) {
   ClauseEvidence e;
   e.said_a_class = !as_said.class_id.empty() || !as_said.class_name.empty() || !as_said.modifiers.empty();
+  e.modifiers_only = as_said.class_id.empty() && as_said.class_name.empty() && !as_said.modifiers.empty();
   const ClassRule rule = as_head_and_modifiers(as_said, concepts);
   if (!rule.class_id.empty()) {
     e.wordnet = std::any_of(thing.classes.begin(), thing.classes.end(), [&](const ConceptClass& c) { return c.id == rule.class_id; });
@@ -109,12 +100,19 @@ ClauseEvidence clause_evidence(const ClassRule& as_said, const KindProfile& thin
 bool ClauseEvidence::sure() const { return wordnet || word_in_name; }
 
 bool ClauseEvidence::only_related() const {
+  // A class of modifiers alone ("paper things", "heavy items") that the
+  // thing's name does not carry: only the vectors speak for it, and they
+  // put "paper" near half of a garage. Asked, never acted on alone.
+  if (modifiers_only && !modifiers_in_name) return true;
   return said_a_class && wordnet_knows_both && !sure() && !wordnet_parent && !modifiers_in_name &&
          (ancestor_cosine < kNearClassCosine || word_cosine < kFitCosine);
 }
 
 bool ClauseEvidence::fits() const {
   if (!said_a_class || sure() || wordnet_parent || modifiers_in_name) return true;
+  // (The names of its WordNet classes say what a thing is, not what it is
+  // made of: "material" is near "paper".)
+  if (modifiers_only) return has_vectors && word_cosine >= kFitCosine;
   return has_vectors && std::max(word_cosine, class_cosine) >= kFitCosine;
 }
 

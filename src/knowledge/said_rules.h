@@ -64,6 +64,7 @@ struct ClauseEvidence {
   // for "everything else" fits everything.
   bool fits() const;
   bool said_a_class = false;  // the clause names a class or modifiers (not "everything else")
+  bool modifiers_only = false;  // it names modifiers and no class: "paper things", "heavy items"
 };
 
 // The least cosine that counts as evidence of a class (the vectors of

@@ -19,6 +19,8 @@ namespace {
 std::string kind_named(const Grounder& grounder, const World& world, std::vector<std::string> words) {
   std::erase_if(words, [](const std::string& w) { return is_determiner(w) || w == "about" || w == "everything"; });
   if (words.empty()) return "";
+  // "the towel rule": a rule, named by its words (the agent looks it up).
+  if (is_one_of(words.back(), {"rule", "rules"})) return join(words, " ");
   ReferenceContext context{world, grounder.lexicon(), std::nullopt};
   context.partial_names = true;
   auto found = candidates_for(NounPhrase{"", words}, Role::kItem, context);
@@ -30,32 +32,6 @@ std::string kind_named(const Grounder& grounder, const World& world, std::vector
   return join(words, " ");
 }
 
-std::optional<Command> command(const Grounder& grounder, const World& world, std::string_view text) {
-  std::vector<std::string> words = reply_words(text);
-  std::erase_if(words, [](const std::string& w) { return w == "," || w == "please"; });
-  if (words.empty()) return std::nullopt;
-  auto is = [&](std::initializer_list<std::string_view> phrase) {
-    return words.size() == phrase.size() && std::equal(phrase.begin(), phrase.end(), words.begin());
-  };
-  if (is({"help"}) || is({"help", "me"}) || is({"what", "can", "i", "say"}) || is({"i", "need", "help"}) ||
-      is({"what", "do", "i", "say"}) || is({"what", "should", "i", "say"}) || text == "?")
-    return Command{Command::Kind::kHelp, ""};
-  if (is({"status"}) || is({"where", "are", "we"}) || is({"what", "is", "the", "status"}) || is({"show", "status"}))
-    return Command{Command::Kind::kStatus, ""};
-  if (is({"undo"}) || is({"undo", "that"}) || is({"undo", "it"}) || is({"take", "that", "back"}) ||
-      is({"scratch", "that"}) || is({"undo", "the", "last", "one"}) || is({"undo", "last"}))
-    return Command{Command::Kind::kUndo, ""};
-  if (is({"quit"}) || is({"exit"}) || is({"bye"}) || is({"goodbye"}) || is({"q"}))
-    return Command{Command::Kind::kQuit, ""};
-  // ("forget it", "forget that": never mind, not a kind to forget.)
-  if (words[0] == "forget" && words.size() > 1 && !is_one_of(words[1], {"it", "that", "this"})) {
-    std::vector<std::string> rest(words.begin() + 1, words.end());
-    if (rest.size() > 3 && rest[0] == "what" && rest[1] == "you" && rest[2] == "know") rest.erase(rest.begin(), rest.begin() + 3);
-    std::string kind = kind_named(grounder, world, rest);
-    if (!kind.empty()) return Command{Command::Kind::kForget, kind};
-  }
-  return std::nullopt;
-}
 
 bool mentions(const Goal& goal, ObjectId object) {
   return std::any_of(goal.literals.begin(), goal.literals.end(),
@@ -186,6 +162,40 @@ std::vector<std::string> action_examples(const World& world, const ReplyContext&
 }
 
 }  // namespace
+
+std::optional<Command> command(const Grounder& grounder, const World& world, std::string_view text) {
+  std::vector<std::string> words = reply_words(text);
+  std::erase_if(words, [](const std::string& w) { return w == "please"; });
+  // "forget that, put it in the drawer" is never mind; "forget that paper
+  // stuff rule" forgets the rule: told apart before the commas go.
+  const bool forget_that_alone = words.size() >= 2 && words[0] == "forget" &&
+                                 is_one_of(words[1], {"it", "that", "this"}) &&
+                                 (words.size() == 2 || words[2] == "," || words[2] == ".");
+  std::erase_if(words, [](const std::string& w) { return w == ","; });
+  if (words.empty()) return std::nullopt;
+  auto is = [&](std::initializer_list<std::string_view> phrase) {
+    return words.size() == phrase.size() && std::equal(phrase.begin(), phrase.end(), words.begin());
+  };
+  if (is({"help"}) || is({"help", "me"}) || is({"what", "can", "i", "say"}) || is({"i", "need", "help"}) ||
+      is({"what", "do", "i", "say"}) || is({"what", "should", "i", "say"}) || text == "?")
+    return Command{Command::Kind::kHelp, ""};
+  if (is({"status"}) || is({"where", "are", "we"}) || is({"what", "is", "the", "status"}) || is({"show", "status"}))
+    return Command{Command::Kind::kStatus, ""};
+  if (is({"undo"}) || is({"undo", "that"}) || is({"undo", "it"}) || is({"take", "that", "back"}) ||
+      is({"scratch", "that"}) || is({"undo", "the", "last", "one"}) || is({"undo", "last"}))
+    return Command{Command::Kind::kUndo, ""};
+  if (is({"quit"}) || is({"exit"}) || is({"bye"}) || is({"goodbye"}) || is({"q"}))
+    return Command{Command::Kind::kQuit, ""};
+  // ("forget it", "forget that": never mind, not a kind to forget.)
+  if (words[0] == "forget" && words.size() > 1 && !forget_that_alone) {
+    std::vector<std::string> rest(words.begin() + 1, words.end());
+    if (rest.size() > 1 && is_one_of(rest[0], {"that", "this", "about"})) rest.erase(rest.begin());
+    if (rest.size() > 3 && rest[0] == "what" && rest[1] == "you" && rest[2] == "know") rest.erase(rest.begin(), rest.begin() + 3);
+    std::string kind = kind_named(grounder, world, rest);
+    if (!kind.empty()) return Command{Command::Kind::kForget, kind};
+  }
+  return std::nullopt;
+}
 
 std::string_view to_string(Asked asked) {
   switch (asked) {

@@ -117,6 +117,22 @@ std::vector<Action> other_closings(const Grounder& grounder, const World& world,
 
 namespace {
 
+// A piece that asks to forget something ("and forget the paper rule", "ok
+// can you forget that paper stuff rule"), after the words people open it
+// with: the command; nullopt else.
+std::optional<Command> forget_said(const Grounder& grounder, const World& world, const Words& said) {
+  Words words = without_leading_connectives(without_interjections(said));
+  for (std::initializer_list<std::string_view> frame :
+       {std::initializer_list<std::string_view>{"can", "you"}, {"could", "you"}, {"would", "you"}, {"pls"},
+        {"please"}, {"also"}, {"oh"}})
+    if (words.size() > frame.size() && std::equal(frame.begin(), frame.end(), words.begin()))
+      words.erase(words.begin(), words.begin() + static_cast<std::ptrdiff_t>(frame.size()));
+  if (words.empty() || words.front() != "forget") return std::nullopt;
+  auto read = command(grounder, world, quoted_words(words));
+  if (!read || read->kind != Command::Kind::kForget) return std::nullopt;
+  return read;
+}
+
 // "pens aren't books", "they're clothes", "because it's trash": a reason
 // said after the "too"s, which says no place and names nothing to move.
 bool is_trailing_reason(const Words& piece) {
@@ -350,6 +366,12 @@ ReplyActs read(const Grounder& grounder, const World& world, const ReplyContext&
       after.push_back(*q);
       continue;
     }
+    // "no!! blue bin w the balls. and forget the paper rule", "ok can you
+    // forget that paper stuff rule": forgetting, said along with more.
+    if (auto forget = forget_said(grounder, world, s.words)) {
+      after.push_back(*forget);
+      continue;
+    }
     if (context.asked != Asked::kAction)
       if (auto actions = door_action(grounder, world, context, s.words)) {
         door_first.push_back(answer.empty());
@@ -485,7 +507,21 @@ ReplyActs read(const Grounder& grounder, const World& world, const ReplyContext&
           (!context.object || kind != world.universe->info(*context.object).category) && said)
         names_another = true;
     }
-    if ((names_asked || names_another) && !names(last) && !(last_place && names(*last_place))) {
+    // ("wait the washer fluid is not recycling, its full! bottom shelf",
+    // asked about the washer fluid after the water bottle went in the
+    // recycling bin: the place said "not" of the thing asked about is no
+    // correction of the last goal.)
+    auto first_of = [&](auto&& is) {
+      return static_cast<std::size_t>(std::find_if(all.begin(), all.end(), is) - all.begin());
+    };
+    const std::size_t negation = first_of([](const std::string& w) { return is_negation(w) || is_one_of(w, {"isnt", "arent"}); });
+    const std::vector<std::string> asked_parts = context.object ? name_parts(world.universe->info(*context.object).category)
+                                                                : std::vector<std::string>{};
+    const bool not_of_asked = names_asked && negation < all.size() &&
+                              first_of([&](const std::string& w) {
+                                return std::find(asked_parts.begin(), asked_parts.end(), w) != asked_parts.end();
+                              }) < negation;
+    if ((names_asked || names_another) && !names(last) && (not_of_asked || !(last_place && names(*last_place)))) {
       correcting = false;
       weak = names_asked;  // the marker said of a third thing needs no note
     }

@@ -210,7 +210,12 @@ bool is_reason_word(std::string_view w) { return is_one_of(w, {"so", "because", 
 
 bool says_why(const Grounder& grounder, const World& world, const Words& said) {
   const Words words = without_leading_connectives(without_interjections(said));
-  const bool told = begins_with_a_subject(words) || (!words.empty() && is_reason_word(words.front()));
+  // "the cat gets in there": something not here, and what it does (not
+  // "the bottom one", which picks a place by what the world says of it).
+  const bool of_something_else =
+      words.size() >= 3 && is_one_of(words.front(), {"the", "your"}) && !is_one_of(words.back(), {"one", "ones"}) &&
+      std::none_of(words.begin(), words.end(), [&](const std::string& w) { return names_property_here(w, world, grounder.lexicon()); });
+  const bool told = begins_with_a_subject(words) || of_something_else || (!words.empty() && is_reason_word(words.front()));
   return told && !names_or_places(grounder, world, words);
 }
 

@@ -412,18 +412,6 @@ std::optional<Reply> goal_for_a_class(const Grounder& grounder, const World& wor
 
 }  // namespace
 
-std::vector<std::string> singular_forms(const std::string& word) {
-  std::vector<std::string> out = {word};
-  auto add = [&](std::string s) {
-    if (s.size() > 1 && std::find(out.begin(), out.end(), s) == out.end()) out.push_back(std::move(s));
-  };
-  if (word.ends_with("ies")) add(word.substr(0, word.size() - 3) + "y");
-  if (word.ends_with("ves")) add(word.substr(0, word.size() - 3) + "f");
-  if (word.ends_with("es")) add(word.substr(0, word.size() - 2));
-  if (word.ends_with("s") && !word.ends_with("ss")) add(word.substr(0, word.size() - 1));
-  return out;
-}
-
 std::optional<Reply> read_goal_with_rest(const Grounder& grounder, const World& world, const ReplyContext& context,
                                          std::string_view text, const Reply& first) {
   if (context.still_to_come.empty() || !rest_phrase(reply_words(text))) return std::nullopt;

@@ -15,6 +15,10 @@
 
 namespace apprentice::language {
 
+// A command said as the whole reply ("help", "undo", "forget the glasses"),
+// or nullopt.
+std::optional<Command> command(const Grounder& grounder, const World& world, std::string_view text);
+
 // A reply, read once into words, with what it is read against.
 struct ReplyInput {
   const Grounder& grounder;

@@ -238,6 +238,12 @@ std::optional<Command> question(const Grounder& grounder, const World& world, co
   // "what is left", not "what is left of the milk goes ...": no placing words.
   bool places = has(words, {"go"}) || has(words, {"goes"}) || has(words, {"put"});
   if (asks && left && !places && words.size() <= 10) return Command{Command::Kind::kWhatsLeft, "", {}, {}};
+  // "is everything put away now?", "are we done?" asked, not said: what is
+  // left answers it.
+  const bool everything = words.size() > 2 && is_one_of(words[1], {"everything", "it", "all", "we"}) &&
+                          (has(words, {"away"}) || has(words, {"done"}) || has(words, {"finished"}) ||
+                           has(words, {"tidy"}) || has(words, {"clean"}) || has(words, {"clear"}));
+  if (is_one_of(first, {"is", "are"}) && everything && words.size() <= 8) return Command{Command::Kind::kWhatsLeft, "", {}, {}};
   return std::nullopt;
 }
 

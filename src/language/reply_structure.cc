@@ -62,7 +62,8 @@ bool finished_words(const Words& words) {
            {"the", "end"}, {"are", "through"}, {"is", "clear"}, {"is", "empty"}, {"is", "clean"}, {"is", "tidy"},
            {"are", "clear"}, {"are", "empty"}, {"is", "cleared"}, {"is", "emptied"}, {"is", "tidied"},
            {"is", "cleaned"}, {"are", "cleared"}, {"is", "clear", "now"}, {"whole", "task"}, {"whole", "thing"}, {"whole", "job"},
-           {"entire", "task"}, {"nothing", "to", "do"}, {"all", "clear"}, {"the", "lot"}})
+           {"entire", "task"}, {"nothing", "to", "do"}, {"all", "clear"}, {"the", "lot"}, {"we", "are", "good"},
+           {"were", "good"}})
     if (contains(words, phrase)) return true;
   return words.size() == 1 && is_one_of(words[0], {"nothing", "enough", "stop"});
 }

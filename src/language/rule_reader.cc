@@ -422,6 +422,13 @@ class SentenceReader {
   // wrapper); nullopt when they hold a pronoun after a verb ("coil it"),
   // which names no class.
   static std::optional<Words> class_phrase(Words words) {
+    // "close the lid after, the cat gets in there": a door closed or opened
+    // before a comma names nothing that goes anywhere.
+    while (!words.empty() && is_one_of(words.front(), {"close", "shut", "open", "lock", "latch"})) {
+      const auto comma = std::find(words.begin(), words.end(), ",");
+      if (comma == words.end()) return std::nullopt;
+      words.erase(words.begin(), comma + 1);
+    }
     // "fix the candy wrapper, it goes ...": "it" after a comma is what was
     // named before it.
     for (std::size_t i = 0; i + 1 < words.size(); ++i)

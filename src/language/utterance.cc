@@ -172,8 +172,14 @@ void expand(const std::string& word, const std::string& next, std::vector<std::s
 void expand_shorthand(std::vector<std::string>& words) {
   std::vector<std::string> out;
   out.reserve(words.size());
-  for (std::string& word : words) {
+  for (std::size_t i = 0; i < words.size(); ++i) {
+    std::string& word = words[i];
     word = std::string(without_drawl(word));
+    // "ya", first, is a yes, as reply_words reads it.
+    if (word == "ya" && out.empty() && (i + 1 == words.size() || words[i + 1] != "know")) {
+      out.emplace_back("yeah");
+      continue;
+    }
     const auto* written = std::find_if(kShorthand.begin(), kShorthand.end(), [&](const auto& entry) { return entry.first == word; });
     if (written == kShorthand.end()) {
       out.push_back(std::move(word));

@@ -13,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "util/text.h"
 #include "world/universe.h"
 
 namespace apprentice::language {
@@ -55,10 +56,7 @@ std::string quoted_words(const std::vector<std::string>& words);
 // The words of a category or id, split on '-': "walk-in-pantry" -> {walk, in, pantry}.
 std::vector<std::string> name_parts(std::string_view name);
 
-// A word and its singular forms by English suffixes, most likely last:
-// "boxes" -> {"boxes", "boxe", "box"}; "shelves" -> {..., "shelf"}. For
-// matching against names, never for saying.
-std::vector<std::string> singular_forms(const std::string& word);
+// (A word's singular forms: singular_forms, util/text.h.)
 
 // --- Closed classes of English words ---------------------------------------
 bool is_determiner(std::string_view w);       // the, a, this, my, all, every, ...

@@ -1,5 +1,6 @@
 #include "util/text.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cstdio>
 
@@ -9,6 +10,28 @@ bool is_one_of(std::string_view word, std::initializer_list<std::string_view> se
   for (std::string_view w : set)
     if (w == word) return true;
   return false;
+}
+
+std::string singular_noun(std::string_view word) {
+  const std::string w(word);
+  if (w.size() > 4 && w.ends_with("ies")) return w.substr(0, w.size() - 3) + "y";
+  if (w.size() > 4 && (w.ends_with("ches") || w.ends_with("shes") || w.ends_with("sses") || w.ends_with("xes")))
+    return w.substr(0, w.size() - 2);
+  if (w.size() > 3 && w.ends_with("s") && !w.ends_with("ss")) return w.substr(0, w.size() - 1);
+  return w;
+}
+
+std::vector<std::string> singular_forms(std::string_view word) {
+  const std::string w(word);
+  std::vector<std::string> out = {w};
+  auto add = [&](std::string s) {
+    if (s.size() > 1 && std::find(out.begin(), out.end(), s) == out.end()) out.push_back(std::move(s));
+  };
+  if (w.ends_with("ies")) add(w.substr(0, w.size() - 3) + "y");
+  if (w.ends_with("ves")) add(w.substr(0, w.size() - 3) + "f");
+  if (w.ends_with("es")) add(w.substr(0, w.size() - 2));
+  if (w.ends_with("s") && !w.ends_with("ss")) add(w.substr(0, w.size() - 1));
+  return out;
 }
 
 std::string to_lower(std::string_view text) {

@@ -169,6 +169,10 @@ TEST_F(ClassRuleKnowledge, ARuleIsNamedByWhatItIsAboutAndWhereItSendsThings) {
   EXPECT_THAT(classes("Edible Fruit goes on the coffee-table"), ElementsAre("edible fruit"));
   EXPECT_THAT(classes("plastic things"), ElementsAre("plastic things"));
   EXPECT_THAT(classes("plastic"), ElementsAre("plastic things"));
+  // As a fresh user named a rule read back as "paper stuff".
+  EXPECT_THAT(classes("plastic stuff"), ElementsAre("plastic things"));
+  EXPECT_THAT(classes("the plastic rule"), ElementsAre("plastic things"));
+  EXPECT_THAT(classes("that plastic stuff rule"), ElementsAre("plastic things"));
   EXPECT_THAT(classes("vegetables"), IsEmpty());
   EXPECT_THAT(classes("fruit in the fridge"), IsEmpty());
   EXPECT_THAT(classes(""), IsEmpty());

@@ -247,5 +247,26 @@ intent:
   EXPECT_THAT(out, HasSubstr("Agent: Next, the mitten on the floor: it goes in the top drawer")) << out;
 }
 
+// Found by a fresh user: "ok now the jeans go in the hamper and the dirty
+// towel goes in the washer", "detergent and stain remover go on the top
+// shelf now": only the first thing was corrected, the rest dropped. Every
+// thing a correction names goes where it says.
+TEST_F(TeachCorrections, ACorrectionOfSeveralThingsMovesEach) {
+  Process teach({APPRENTICE_BINARY, "teach", "--scenario", write("study.yaml", kStudy).string()});
+  ASSERT_TRUE(teach.write(testing::typed_lines({"tidy the study", "clear the desk", "filing cabinet", "bookshelf",
+                                                "ok now the notebook goes on the bookshelf and the pen goes in the "
+                                                "wastebasket",
+                                                "quit"})));
+  teach.wait();
+  const std::string& out = teach.out();
+  EXPECT_THAT(out, HasSubstr("Agent: So the notebook goes on the bookshelf.\n"
+                             "Agent: I opened the filing cabinet, took the notebook out of it, put it on the "
+                             "bookshelf, and closed the filing cabinet.\n"))
+      << out;
+  EXPECT_THAT(out, HasSubstr("Agent: So the pen goes in the wastebasket.\n"
+                             "Agent: I put the pen in the wastebasket.\n"))
+      << out;
+}
+
 }  // namespace
 }  // namespace apprentice

@@ -372,5 +372,42 @@ TEST_F(FreshUsers, TheCraftRoomsNextStepReplies) {
   EXPECT_THAT(out, Not(HasSubstr("cool what is"))) << out;
 }
 
+// The fourth pair (stop 39: a garage and a laundry room, their own worlds).
+// "ya. paper stuff all goes in recycling" was read with "ya" as "you";
+// "forget paper" then forgot the newspaper's goal, not the rule, and the
+// question about the rule was asked again after it was forgotten.
+TEST_F(FreshUsers, ARuleIsForgottenByItsWordsAndTheQuestionOnItGoes) {
+  const std::string out = teach("garage.yaml", {"tidy the garage", "start with the floor",
+                                                "all the paint goes on the top shelf",
+                                                "ya. paper stuff all goes in recycling", "forget paper", "quit"});
+  EXPECT_THAT(out, HasSubstr("Instructor: ya. paper stuff all goes in recycling\n"
+                             "Agent: So paper stuff goes in the recycling bin.\n"))
+      << out;
+  EXPECT_THAT(out, Not(HasSubstr("I did not follow \"you\""))) << out;
+  EXPECT_THAT(out, HasSubstr("Instructor: forget paper\n"
+                             "Agent: I forgot that paper things go in the recycling bin, as said: \"ya. paper stuff "
+                             "all goes in recycling\"; I will ask where such things go.\n"
+                             "Agent: Where should the cardboard box on the floor go?\n"))
+      << out;
+}
+
+// "hamper. close the lid after, the cat gets in there": the t-shirt goes in
+// the hamper, closed, and the cat is a reason. It was kept as a rule that
+// "lid after" and "cat" go in the left basket, which then took the jeans,
+// the towel and the dryer sheet alone.
+TEST_F(FreshUsers, AReasonAboutSomethingNotHereMakesNoRule) {
+  const std::string out =
+      teach("laundry.yaml", {"ok so the laundry room is a disaster, can you help me clean it up",
+                             "um start with the floor, all that stuff needs picking up",
+                             "socks go in the left basket, thats my whites pile",
+                             "hamper. close the lid after, the cat gets in there", "quit"});
+  EXPECT_THAT(out, HasSubstr("Instructor: hamper. close the lid after, the cat gets in there\n"
+                             "Agent: I took \"the cat gets in there\" as a reason, not an instruction.\n"
+                             "Agent: So the dirty red t shirt goes in the hamper, and the hamper ends closed.\n"))
+      << out;
+  EXPECT_THAT(out, Not(HasSubstr("So lid after"))) << out;
+  EXPECT_THAT(out, Not(HasSubstr("with lid after"))) << out;
+}
+
 }  // namespace
 }  // namespace apprentice

@@ -14,6 +14,7 @@ namespace apprentice {
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::Not;
 using ::testing::StartsWith;
 
 constexpr const char* kMudroom = R"(name: mudroom
@@ -149,6 +150,56 @@ TEST_F(TeacherQuestions, WithNothingNamedTheLastLessonOrNothingYet) {
   // A thing the teacher said to leave.
   progress_.left_by_teacher.push_back(id("scarf1"));
   EXPECT_EQ(why({id("scarf1")}), "You told me to leave the scarf where it is.");
+}
+
+// "what's left?": before a task, none; within a part, what is still on its
+// places but the thing being worked on; between parts, the parts done and
+// every thing not dealt with, where it is.
+TEST_F(TeacherQuestions, WhatsLeftFollowsHowFarTheTeachingHasCome) {
+  const TeachingSoFar so_far{world(), goals_, progress_};
+  teaching::Curriculum none;
+  EXPECT_EQ(answer_whats_left(TeachingSoFar{world(), goals_, none}), "I have not been given a task yet.");
+  progress_.current = teaching::Current{"clear", "on", {id("bench1")}};
+  EXPECT_EQ(answer_whats_left(so_far), "Still on the bench: the scarf.");
+  progress_.in_progress.emplace();
+  progress_.in_progress->object = id("scarf1");
+  EXPECT_EQ(answer_whats_left(so_far), "Nothing else is left on the bench.");
+  progress_.in_progress.reset();
+  progress_.evaluated.insert(id("scarf1"));
+  progress_.task.subtasks.push_back(LearnedSubtask{"clear", "on", "bench"});
+  progress_.current.reset();
+  const std::string between = answer_whats_left(so_far);
+  EXPECT_THAT(between, HasSubstr("bench")) << between;
+  EXPECT_THAT(between, HasSubstr("glove")) << between;
+  EXPECT_THAT(between, Not(HasSubstr("scarf"))) << between;
+}
+
+// "status": what it sees, then the part under way and the counts.
+TEST_F(TeacherQuestions, StatusSaysWhatItSeesAndWhatItIsDoing) {
+  progress_.current = teaching::Current{"clear", "on", {id("bench1")}};
+  learn("glove1", "basket2", "instructor: \"right basket\"");
+  const std::vector<std::string> lines =
+      answer_status(TeachingSoFar{world(), goals_, progress_}, id("scarf1"), StatusCounts{4, 7});
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_THAT(lines[0], HasSubstr("scarf")) << lines[0];
+  EXPECT_THAT(lines[1], HasSubstr("scarf")) << lines[1];
+  EXPECT_THAT(lines[1], HasSubstr("1 goal")) << lines[1];
+  EXPECT_THAT(lines[1], HasSubstr("4 rules")) << lines[1];
+  EXPECT_THAT(lines[1], HasSubstr("7 instructions")) << lines[1];
+}
+
+// "forget gloves" names the glove's kind by its plural, and "forget
+// baskets" none; a kind named by the last word of its name counts too.
+TEST_F(TeacherQuestions, KindsKnownAreNamedByPluralsAndLastWords) {
+  learn("glove1", "basket2", "instructor: \"right basket\"");
+  EXPECT_EQ(kinds_known_by(goals_, "gloves"), std::vector<std::string>{"glove"});
+  EXPECT_EQ(kinds_known_by(goals_, "the glove"), std::vector<std::string>{"glove"});
+  EXPECT_TRUE(kinds_known_by(goals_, "baskets").empty());
+  EXPECT_TRUE(kinds_known_by(goals_, "").empty());
+  GoalMemory more;
+  for (const char* kind : {"ceramic-plate", "paper-plate", "mug"})
+    more.add(GoalKnowledge{GoalKey{"t", "clear", kind, "table"}, {}, {}});
+  EXPECT_EQ(kinds_known_by(more, "plates"), (std::vector<std::string>{"ceramic-plate", "paper-plate"}));
 }
 
 }  // namespace

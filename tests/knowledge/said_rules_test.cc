@@ -34,7 +34,7 @@ class TableConcepts final : public ConceptSource {
   std::vector<float> vector_of(std::string_view words) const override {
     static const std::map<std::string, std::vector<float>, std::less<>> kVectors = {
         {"toys", {1, 0}}, {"electronics", {0.6f, 0.8f}}, {"clothes", {0, 1}}, {"outerwear", {0.1f, 0.995f}},
-        {"sports equipment", {0.8f, 0.6f}}};
+        {"sports equipment", {0.8f, 0.6f}}, {"paper", {0.28f, 0.96f}}, {"material", {0.28f, 0.96f}}};
     auto found = kVectors.find(words);
     return found == kVectors.end() ? std::vector<float>{} : found->second;
   }
@@ -256,6 +256,34 @@ TEST(SaidRules, AnLlmsSummaryIsReadLessSurelyThanThePersonsOwnWords) {
   ASSERT_FALSE(llm.empty());
   EXPECT_EQ(llm.front().destination, person.front().destination);
   EXPECT_LT(llm.front().confidence, person.front().confidence);
+}
+
+// A class of modifiers alone ("paper stuff", found by a fresh user in a
+// garage: the water bottle, the soda can and the washer fluid went in the
+// recycling "with paper things", alone): the names of a thing's WordNet
+// classes say what it is, not what it is made of, so only its own name's
+// words count, and only the name carrying the modifier places it alone.
+TEST(SaidRules, AClassOfModifiersAloneIsAskedUnlessTheNameCarriesThem) {
+  TableConcepts concepts;
+  std::vector<ClassRule> rules = {said("", in("recycling-bin"), false, {"paper"})};
+  // A class named near "paper" ("material") and a name far from it.
+  const KindProfile bottle = thing("water bottle", {"material"}, {1, 0});
+  EXPECT_FALSE(clause_evidence(rules[0], bottle, concepts).fits());
+  EXPECT_TRUE(said_rule_proposals(rules, bottle, RuleSource::kPerson, concepts).empty());
+  // A name near "paper": offered, to be asked.
+  const KindProfile newspaper = thing("newspaper", {}, {0.3f, 0.95f});
+  const ClauseEvidence near = clause_evidence(rules[0], newspaper, concepts);
+  EXPECT_TRUE(near.fits());
+  EXPECT_TRUE(near.only_related());
+  auto asked = said_rule_proposals(rules, newspaper, RuleSource::kPerson, concepts);
+  ASSERT_EQ(asked.size(), 1u);
+  EXPECT_LE(asked.front().confidence, SaidRuleWeights{}.only_related_at_most * 0.95 + 1e-9);
+  // "paper plate": the name carries it, and nothing holds it back.
+  const KindProfile plate = thing("paper plate", {}, {}, {"paper"});
+  EXPECT_FALSE(clause_evidence(rules[0], plate, concepts).only_related());
+  auto placed = said_rule_proposals(rules, plate, RuleSource::kPerson, concepts);
+  ASSERT_EQ(placed.size(), 1u);
+  EXPECT_GT(placed.front().confidence, SaidRuleWeights{}.only_related_at_most * 0.95);
 }
 
 }  // namespace
