@@ -298,7 +298,8 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
     if (!goal) return std::optional<Goal>();
     // A destination says the doors the examples or the rule said; a door
     // they said nothing of is closed after, as the teacher's goals are.
-    goal = with_closings(w, *goal, closings_to_complete(w, *goal, object, agent_.knowledge_.goals));
+    goal = with_closings(w, *goal,
+                         closings_to_complete(w, *goal, object, agent_.knowledge_.goals, progress_.doors_left_open));
     if (first) {
       if (const std::vector<ObjectId> places = destinations(w, *goal, object); !places.empty())
         report.proposed = w.universe->name(places.front());

@@ -304,13 +304,48 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::obey(const language
       say(answer_why(so_far(), command.things, about), Voice::kResponse);
       return {};
     }
-    case language::Command::Kind::kDo: do_now(command.actions); return {};
+    case language::Command::Kind::kDo:
+      if (!command.left_open.empty()) {
+        if (auto s = keep_open(command.left_open, command.argument); !s) return stop(s.error());
+        if (!command.actions.empty()) do_now(command.actions);
+        return {};
+      }
+      do_now(command.actions);
+      return {};
   }
   return {};
 }
 
 TeachingSoFar TaskLearningAgent::Session::so_far() const {
   return TeachingSoFar{world(), agent_.knowledge_.goals, progress_, lessons_.last_reply(), proposals_asked_};
+}
+
+Status TaskLearningAgent::Session::keep_open(const std::vector<ObjectId>& places, const std::string& text) {
+  const World& w = world();
+  begin_lesson(text);
+  const std::string& closed = w.domain->predicates[w.vocabulary.closed].name;
+  std::vector<std::string> kinds;
+  for (ObjectId place : places) {
+    const std::string& category = w.universe->info(place).category;
+    progress_.doors_left_open.insert(category);
+    std::vector<GoalKnowledge> closing;
+    for (const GoalKnowledge& g : agent_.knowledge_.goals.all())
+      if (std::any_of(g.literals.begin(), g.literals.end(), [&](const GoalTemplateLiteral& l) {
+            return l.positive && l.predicate == closed && l.arguments.size() == 1 && l.arguments[0].category == category;
+          }))
+        closing.push_back(g);
+    for (GoalKnowledge g : closing) {
+      std::erase_if(g.literals, [&](const GoalTemplateLiteral& l) {
+        return l.positive && l.predicate == closed && l.arguments.size() == 1 && l.arguments[0].category == category;
+      });
+      g.provenance.source += " (" + language::spoken_category(category) + " left open from then on, as said: " +
+                             apprentice::quoted(text) + ")";
+      if (auto s = lessons_.learn_goal(agent_.knowledge_, g); !s) return s;
+      if (std::find(kinds.begin(), kinds.end(), g.key.category) == kinds.end()) kinds.push_back(g.key.category);
+    }
+  }
+  say(language::will_leave_open(w, places, kinds), Voice::kResponse);
+  return {};
 }
 
 void TaskLearningAgent::Session::do_now(const std::vector<Action>& actions) {

@@ -7,6 +7,7 @@
 #include "language/generation.h"
 #include "language/narration.h"
 #include "language/narration_conversation.h"
+#include "language/utterance.h"
 #include "util/log.h"
 #include "util/text.h"
 
@@ -328,7 +329,8 @@ language::GoalGiven TaskLearningAgent::Session::with_doors_closed(ObjectId about
   const World& w = world();
   bool by_norm = false;
   auto close = [&](ObjectId object, Goal& goal) {
-    const std::vector<ClosingToAdd> closings = closings_to_complete(w, goal, object, agent_.knowledge_.goals);
+    const std::vector<ClosingToAdd> closings =
+        closings_to_complete(w, goal, object, agent_.knowledge_.goals, progress_.doors_left_open);
     if (closings.empty()) return;
     goal = with_closings(w, goal, closings);
     by_norm = by_norm || std::any_of(closings.begin(), closings.end(), [](const ClosingToAdd& c) { return c.by_norm; });
@@ -407,12 +409,13 @@ Status TaskLearningAgent::Session::learn_goal(ObjectId object, const Goal& goal,
 
 std::vector<GoalKey> TaskLearningAgent::Session::goals_corrected_by(ObjectId object, const std::string& text) const {
   const std::string& kind = world().universe->info(object).category;
-  const std::vector<ObjectId> things = things_corrected_along(object, text);
+  const std::vector<std::string> properties = language::properties_said(*world().universe, object, text);
+  const std::vector<ObjectId> things = progress_.dealt_with_like(world(), object, properties);
   if (things.empty()) return {};
   // "the clean diapers go in the bottom drawer": only the parts the clean
   // ones were dealt with in, not the floor's dirty diaper.
   std::vector<GoalKey> keys;
-  if (!properties_said(object, text).empty()) {
+  if (!properties.empty()) {
     for (ObjectId thing : things)
       if (std::optional<GoalKey> key = key_dealt_with(thing); key && std::find(keys.begin(), keys.end(), *key) == keys.end())
         keys.push_back(*key);
@@ -425,30 +428,6 @@ std::vector<GoalKey> TaskLearningAgent::Session::goals_corrected_by(ObjectId obj
   if (keys.empty())
     if (std::optional<GoalKey> key = key_dealt_with(things.back())) keys.push_back(*key);
   return keys;
-}
-
-std::vector<std::string> TaskLearningAgent::Session::properties_said(ObjectId object, const std::string& text) const {
-  const std::vector<std::string> words = split_words(to_lower(text));
-  std::vector<std::string> said;
-  for (const std::string& property : world().universe->info(object).properties)
-    if (std::find(words.begin(), words.end(), property) != words.end()) said.push_back(property);
-  return said;
-}
-
-std::vector<ObjectId> TaskLearningAgent::Session::things_corrected_along(ObjectId object, const std::string& text) const {
-  const ObjectInfo& info = world().universe->info(object);
-  const std::vector<std::string> said = properties_said(object, text);
-  std::vector<ObjectId> things;
-  for (ObjectId o : progress_.evaluated_order) {
-    const ObjectInfo& other = world().universe->info(o);
-    if (other.category != info.category) continue;
-    if (!std::all_of(said.begin(), said.end(), [&](const std::string& p) {
-          return std::find(other.properties.begin(), other.properties.end(), p) != other.properties.end();
-        }))
-      continue;
-    things.push_back(o);
-  }
-  return things;
 }
 
 std::optional<GoalKey> TaskLearningAgent::Session::key_dealt_with(ObjectId thing) const {
@@ -496,7 +475,7 @@ Status TaskLearningAgent::Session::correct_goal(ObjectId object, const language:
   for (ObjectId place : w.universe->of_kind(ObjectKind::kReceptacle))
     if (const Fact closed(w.vocabulary.closed, {place}); w.state.holds(closed)) closed_before.push_back(Literal{closed, true});
   std::vector<Action> done;
-  for (ObjectId thing : things_corrected_along(object, text)) {
+  for (ObjectId thing : progress_.dealt_with_like(w, object, language::properties_said(*w.universe, object, text))) {
     std::optional<Goal> placed = instantiate_goal(w, *learned, thing);
     if (!placed) continue;
     std::vector<Literal> literals = placed->literals;

@@ -1,5 +1,6 @@
 #include "agent/curriculum.h"
 
+#include <algorithm>
 #include <utility>
 
 namespace apprentice::teaching {
@@ -45,6 +46,20 @@ void Curriculum::object_done() {
 }
 
 void Curriculum::thing_left(ObjectId object) { left_by_teacher.push_back(object); }
+
+std::vector<ObjectId> Curriculum::dealt_with_like(const World& world, ObjectId thing,
+                                                  const std::vector<std::string>& properties) const {
+  const std::string& kind = world.universe->info(thing).category;
+  std::vector<ObjectId> out;
+  for (ObjectId o : evaluated_order) {
+    const ObjectInfo& other = world.universe->info(o);
+    if (other.category == kind && std::all_of(properties.begin(), properties.end(), [&](const std::string& p) {
+          return std::find(other.properties.begin(), other.properties.end(), p) != other.properties.end();
+        }))
+      out.push_back(o);
+  }
+  return out;
+}
 
 bool Curriculum::still_to_come(const World& world, ObjectId item) const {
   if (!current || evaluated.count(item)) return false;

@@ -87,6 +87,9 @@ struct Curriculum {
   // The goal the last object was given, learned or remembered: what "socks
   // too" and "same again" mean.
   std::optional<GoalKey> last_goal;
+  // The kinds of place the teacher wants left open from now on ("leave the
+  // washer open from now on"): never closed by the norm.
+  std::set<std::string> doors_left_open;
 
   // What comes next; `learning`: a teacher is teaching (else the agent
   // performs alone and finishes when nothing is left).
@@ -122,6 +125,10 @@ struct Curriculum {
   // dealt with (false with none under way): a goal said for it now is used
   // when it comes.
   bool still_to_come(const World& world, ObjectId item) const;
+  // The things of `thing`'s kind already dealt with, in order, with every
+  // one of `properties` ("clean"): what a correction of `thing` moves.
+  std::vector<ObjectId> dealt_with_like(const World& world, ObjectId thing,
+                                        const std::vector<std::string>& properties) const;
 };
 
 }  // namespace apprentice::teaching

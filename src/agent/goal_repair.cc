@@ -144,11 +144,11 @@ std::optional<bool> learned_closing(const World& world, const GoalMemory& learne
 }  // namespace
 
 std::vector<ClosingToAdd> closings_to_complete(const World& world, const Goal& goal, ObjectId object,
-                                               const GoalMemory& learned) {
+                                               const GoalMemory& learned, const std::set<std::string>& left_open) {
   const Vocabulary& v = world.vocabulary;
   std::vector<ClosingToAdd> out;
   for (ObjectId place : destinations(world, goal, object)) {
-    if (!world.state.holds(Fact(v.openable, {place}))) continue;
+    if (!world.state.holds(Fact(v.openable, {place})) || left_open.count(world.universe->info(place).category)) continue;
     const Fact closed(v.closed, {place});
     // Closed or open, as said ("leave it open": not closed).
     const bool said = std::any_of(goal.literals.begin(), goal.literals.end(), [&](const Literal& l) { return l.fact == closed; });

@@ -31,6 +31,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -117,8 +118,10 @@ struct ClosingToAdd {
   ObjectId place = 0;
   bool by_norm = false;  // not from goals learned for it
 };
+// A kind of place in `left_open` (the teacher wants it left open) is never
+// closed so.
 std::vector<ClosingToAdd> closings_to_complete(const World& world, const Goal& goal, ObjectId object,
-                                               const GoalMemory& learned);
+                                               const GoalMemory& learned, const std::set<std::string>& left_open = {});
 // The places `goal` puts `object` in or on (its positive on/in literals).
 std::vector<ObjectId> destinations(const World& world, const Goal& goal, ObjectId object);
 // `goal` with `closings` added.

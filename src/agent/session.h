@@ -167,11 +167,6 @@ class TaskLearningAgent::Session : private ActingHelp {
   // they name a property of `object` ("the clean diapers"), only the parts
   // the things with it were dealt with in.
   std::vector<GoalKey> goals_corrected_by(ObjectId object, const std::string& text) const;
-  // The properties of `object` that `text` names ("clean").
-  std::vector<std::string> properties_said(ObjectId object, const std::string& text) const;
-  // The things of `object`'s kind already dealt with, with every property
-  // of it that `text` names: what a correction of it moves.
-  std::vector<ObjectId> things_corrected_along(ObjectId object, const std::string& text) const;
   // The key `thing` was dealt with under in this task (the part it was
   // cleared in), from its report; nullopt when it was not dealt with.
   std::optional<GoalKey> key_dealt_with(ObjectId thing) const;
@@ -305,6 +300,10 @@ class TaskLearningAgent::Session : private ActingHelp {
   // by do_now (agent_dialogue.cc).
   TeachingSoFar so_far() const;
   void do_now(const std::vector<Action>& actions);
+  // "leave the washer open from now on": a lesson of its own (undo takes
+  // it back); the closing norm no longer closes those kinds of place, and
+  // the goals learned that close them are learned again leaving them open.
+  Status keep_open(const std::vector<ObjectId>& places, const std::string& text);
 };
 
 }  // namespace apprentice

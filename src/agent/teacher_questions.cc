@@ -44,6 +44,8 @@ std::optional<std::string> why_thing(const TeachingSoFar& so_far, ObjectId thing
 std::string why_door(const TeachingSoFar& so_far, ObjectId place) {
   const World& w = so_far.world;
   const bool closed = w.state.holds(Fact(w.vocabulary.closed, {place}));
+  if (!closed && so_far.progress.doors_left_open.count(w.universe->info(place).category))
+    return language::door_left_open_as_told(w, place);
   std::optional<std::pair<ObjectId, std::string>> left_open;
   for (ObjectId thing : w.universe->of_kind(ObjectKind::kItem)) {
     if (closed || left_open || language::place_of(w, thing) != place) continue;
@@ -229,10 +231,9 @@ std::vector<std::string> answer_status(const TeachingSoFar& so_far, std::optiona
 }
 
 std::vector<std::string> kinds_known_by(const GoalMemory& goals, std::string_view phrase) {
-  std::string key = to_lower(trim(phrase));
-  for (std::string_view article : {"the ", "a ", "an "})
-    if (key.starts_with(article)) key = key.substr(article.size());
-  std::replace(key.begin(), key.end(), ' ', '-');
+  std::vector<std::string> words = split_words(to_lower(phrase));
+  while (!words.empty() && language::is_determiner(words.front())) words.erase(words.begin());
+  const std::string key = join(words, "-");
   const std::vector<std::string> forms = key.empty() ? std::vector<std::string>{} : singular_forms(key);
   std::vector<std::string> fits;
   for (const GoalKnowledge& g : goals.all()) {

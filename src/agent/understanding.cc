@@ -7,6 +7,7 @@
 #include "language/grounding.h"
 #include "language/parser.h"
 #include "language/reference.h"
+#include "language/utterance.h"
 #include "util/text.h"
 
 namespace apprentice {
@@ -147,7 +148,7 @@ std::optional<std::string> Understanding::other_name_of_asked(const World& world
 
 std::vector<ObjectId> Understanding::may_name(const World& world, std::string_view phrase) const {
   language::NounPhrase noun{"", split_words(to_lower(phrase))};
-  while (!noun.words.empty() && is_one_of(noun.words.front(), {"the", "a", "an", "those", "these", "that", "this"}))
+  while (!noun.words.empty() && language::is_determiner(noun.words.front()))
     noun.words.erase(noun.words.begin());
   if (noun.words.empty()) return {};
   language::ReferenceContext context{world, impl_->grounder.lexicon(), std::nullopt};

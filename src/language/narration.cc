@@ -6,6 +6,7 @@
 #include <variant>
 
 #include "language/generation.h"
+#include "language/utterance.h"
 #include "util/text.h"
 #include "world/state_lookup.h"
 
@@ -391,8 +392,6 @@ std::string_view relation_word(const World& world, ObjectId place) {
 }
 
 std::string task_phrase(std::string_view task_name) {
-  static const std::set<std::string> kDeterminers = {"the", "a", "an", "my", "your", "our", "this", "that",
-                                                     "these", "those", "all", "every", "some", "his", "her", "their"};
   static const std::set<std::string> kParticles = {"up", "away", "out", "off", "down"};
   // "tidy exam-room": a location's hyphen is said as a space, as a name's.
   std::string said(task_name);
@@ -403,7 +402,7 @@ std::string task_phrase(std::string_view task_name) {
   // "clean up after party" -> "clean up after the party".
   static const std::set<std::string> kPrepositions = {"after", "before", "around", "for", "with"};
   if (kPrepositions.count(words[object_start]) && words.size() > object_start + 1) ++object_start;
-  if (kDeterminers.count(words[object_start])) return join(words, " ");
+  if (is_determiner(words[object_start])) return join(words, " ");
   words.insert(words.begin() + static_cast<std::ptrdiff_t>(object_start), "the");
   return join(words, " ");
 }

@@ -4,6 +4,7 @@
 
 #include "language/narration.h"
 #include "language/reference.h"
+#include "language/utterance.h"
 #include "util/text.h"
 
 namespace apprentice::language {
@@ -138,10 +139,9 @@ std::string whats_left_of_task(const World& w, std::span<const PartLearned> part
 
 std::vector<std::string> where_things_are(const World& w, std::string_view phrase, std::span<const ObjectId> things) {
   if (things.empty()) {
-    std::string said(phrase);
-    for (std::string_view article : {"the ", "a ", "an ", "my "})
-      if (said.starts_with(article)) said = said.substr(article.size());
-    return {not_seen_message(said, w)};
+    std::vector<std::string> words = split_words(phrase);
+    while (!words.empty() && is_determiner(words.front())) words.erase(words.begin());
+    return {not_seen_message(join(words, " "), w)};
   }
   std::vector<std::string> said;
   for (ObjectId o : things) {
@@ -234,6 +234,20 @@ std::string why_i_asked(const World& world, ObjectId thing, const Goal& proposed
                     ": it seemed likely, but not enough to do it without asking.";
   if (now) out += " Now " + goal_outcome(world, thing, *now, name) + ".";
   return out;
+}
+
+std::string door_left_open_as_told(const World& world, ObjectId place) {
+  return capitalize(spoken_name(world, place)) + " is open: you told me to leave it open from now on.";
+}
+
+std::string will_leave_open(const World& world, const std::vector<ObjectId>& places,
+                            const std::vector<std::string>& kinds) {
+  std::vector<std::string> doors, things;
+  for (ObjectId place : places) doors.push_back(spoken_name(world, place));
+  for (const std::string& kind : kinds) things.push_back("the " + spoken_category(kind));
+  std::string out = "I will leave " + list_phrase(doors) + " open from now on";
+  if (!things.empty()) out += ", also after putting " + list_phrase(things) + (places.size() == 1 ? " in it" : " in them");
+  return out + ".";
 }
 
 std::string remember_again(std::string_view category) { return "I know again where " + kind_goes(category) + "."; }

@@ -134,6 +134,14 @@ std::string why_earlier_placement(const World& world, ObjectId thing, const Goal
 // (may be empty), `now` the thing's goal since, if it differs.
 std::string why_i_asked(const World& world, ObjectId thing, const Goal& proposed, std::string_view evidence,
                         const std::optional<Goal>& now);
+// "why is the washer open?", after "leave the washer open from now on":
+// "The washer is open: you told me to leave it open from now on."
+std::string door_left_open_as_told(const World& world, ObjectId place);
+// "leave the washer open from now on": "I will leave the washer open from
+// now on, also after putting the towel and the jeans in it." `kinds`: the
+// kinds whose goals closed it before (may be empty).
+std::string will_leave_open(const World& world, const std::vector<ObjectId>& places,
+                            const std::vector<std::string>& kinds);
 // An undo of "forget mug": "I know again where the mug goes."
 std::string remember_again(std::string_view category);
 // Several rules fit what was named: "I have several rules about fruit: ...;

@@ -569,6 +569,7 @@ std::string format_reply(const World& world, const Reply& reply) {
         case Command::Kind::kDo: {
           std::string out = "command do";
           for (const Action& a : r.actions) out += " " + format_action(*world.domain, u, a);
+          if (!r.left_open.empty()) out += "; left open from now on: " + list(r.left_open);
           return out;
         }
       }

@@ -180,6 +180,9 @@ struct Command {
   // kWhy: asked about what was done before ("why'd you throw out the bottle
   // before?"), not about how things are now.
   bool earlier = false;
+  // kDo: the doors the teacher wants left open from now on ("leave the
+  // washer open from now on"); `actions` opens those closed now.
+  std::vector<ObjectId> left_open = {};
   // kWhy: asked about a question the agent asked ("why did you ask if the
   // blanket goes with clean diapers?", "why do you keep asking about
   // diapers"), not about where things went.

@@ -366,6 +366,18 @@ ReplyActs read(const Grounder& grounder, const World& world, const ReplyContext&
       after.push_back(*q);
       continue;
     }
+    // "leave the washer open from now on", "i want it left open": a door
+    // the teacher wants left open, opened now if it is closed.
+    if (auto places = doors_left_open(grounder, world, context, s.words)) {
+      Command keep{Command::Kind::kDo, s.text, {}, {}};
+      keep.left_open = *places;
+      for (ObjectId place : *places)
+        if (world.state.holds(Fact(world.vocabulary.closed, {place})))
+          if (auto opening = door_action(grounder, world, context, {"open", world.universe->name(place)}))
+            keep.actions.insert(keep.actions.end(), opening->begin(), opening->end());
+      after.push_back(std::move(keep));
+      continue;
+    }
     // "no!! blue bin w the balls. and forget the paper rule", "ok can you
     // forget that paper stuff rule": forgetting, said along with more.
     if (auto forget = forget_said(grounder, world, s.words)) {

@@ -74,6 +74,13 @@ std::size_t what_someone_did_from(const Words& words);
 // the segment is not such a command.
 std::optional<std::vector<Action>> door_action(const Grounder& grounder, const World& world,
                                                const ReplyContext& context, const Words& said);
+// A door the teacher wants left open from now on: "leave the washer open
+// from now on", "always keep the cabinet open", "i want it left open",
+// "the hamper should stay open", "don't close the washer anymore". The
+// places (each with a door), by door_action's reading of "open X"; nullopt
+// when the words say no such thing.
+std::optional<std::vector<ObjectId>> doors_left_open(const Grounder& grounder, const World& world,
+                                                     const ReplyContext& context, const Words& said);
 
 // --- The answer's words (reply_answer_words.cc) ---------------------------
 

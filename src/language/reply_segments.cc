@@ -442,4 +442,61 @@ std::optional<std::vector<Action>> door_action(const Grounder& grounder, const W
   return actions;
 }
 
+std::optional<std::vector<ObjectId>> doors_left_open(const Grounder& grounder, const World& world,
+                                                     const ReplyContext& context, const Words& said) {
+  Words words = without_leading_connectives(without_interjections(said));
+  while (!words.empty() && (is_marker(words.front()) || is_one_of(words.front(), {"please", "pls", "also", "just"})))
+    words.erase(words.begin());
+  if (words.size() < 2) return std::nullopt;
+  const bool standing = has(words, {"from", "now", "on"}) || has(words, {"always"}) || has(words, {"anymore"}) ||
+                        has(words, {"any", "more"}) || has(words, {"for", "good"}) || has(words, {"permanently"}) ||
+                        has(words, {"all", "the", "time"}) || has(words, {"in", "the", "future"}) ||
+                        has(words, {"never"});
+  auto open_at = [&](std::size_t from) {
+    return static_cast<std::size_t>(std::find(words.begin() + static_cast<std::ptrdiff_t>(from), words.end(), "open") -
+                                    words.begin());
+  };
+  Words place;
+  if (words.front() == "always") words.erase(words.begin());
+  const bool open_said = open_at(0) < words.size();
+  if (is_one_of(words.front(), {"leave", "keep"}) && standing && open_said) {
+    // "leave the washer open from now on", "always keep it open".
+    place.assign(words.begin() + 1, words.begin() + static_cast<std::ptrdiff_t>(open_at(1)));
+  } else if (words.size() > 3 && words[0] == "i" && is_one_of(words[1], {"want", "need"}) && open_said) {
+    // "i want it left open", "i want the washer open from now on".
+    place.assign(words.begin() + 2, words.begin() + static_cast<std::ptrdiff_t>(open_at(2)));
+  } else if (is_one_of(words.front(), {"do", "dont", "never", "stop"})) {
+    // "don't close the washer anymore", "never shut the hamper", "stop
+    // closing the cabinet".
+    // ("don't close it", with no "anymore": this time only, as said.)
+    if ((words.front() == "dont" || words.front() == "do") && !standing) return std::nullopt;
+    const std::size_t verb = words.front() == "do" && words.size() > 2 && words[1] == "not" ? 2 : 1;
+    if (verb >= words.size() || !is_one_of(words[verb], {"close", "closing", "shut", "shutting"})) return std::nullopt;
+    place.assign(words.begin() + static_cast<std::ptrdiff_t>(verb) + 1, words.end());
+  } else {
+    // "the hamper should stay open", "the washer needs to be left open".
+    const auto stay = std::find_if(words.begin(), words.end(), [](const std::string& w) {
+      return is_one_of(w, {"stay", "stays", "remain", "remains", "left", "kept"});
+    });
+    const auto modal = std::find_if(words.begin(), stay, [](const std::string& w) {
+      return is_one_of(w, {"should", "must", "needs", "need", "can", "has", "have"});
+    });
+    if (stay == words.end() || modal == stay || modal == words.begin() || open_at(0) >= words.size()) return std::nullopt;
+    place.assign(words.begin(), modal);
+  }
+  std::erase_if(place, [](const std::string& w) {
+    return is_one_of(w, {"left", "kept", "always", "anymore", "now", "from", "on", "again", "please"});
+  });
+  if (place.empty()) return std::nullopt;
+  ReplyContext as_step = context;
+  as_step.asked = Asked::kTaskStep;  // "it": the place named last
+  Words open_it = {"open"};
+  open_it.insert(open_it.end(), place.begin(), place.end());
+  const auto opened = door_action(grounder, world, as_step, open_it);
+  if (!opened) return std::nullopt;
+  std::vector<ObjectId> places;
+  for (const Action& action : *opened) places.push_back(action.arguments()[0]);
+  return places;
+}
+
 }  // namespace apprentice::language::acts

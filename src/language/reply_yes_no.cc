@@ -193,6 +193,13 @@ std::optional<GoalGiven> goal_in_rest(const Grounder& grounder, const World& wor
   if (answer.rest.empty() || !context.object) return std::nullopt;
   ReplyContext at = context;
   at.asked = Asked::kGoal;
+  // "yes. spray bottle in there too": after a yes, "there" is the place
+  // proposed, not the one named before the question, and "too" is the goal
+  // proposed.
+  if (answer.yes && context.proposal) {
+    if (auto proposed = acts::destination(world, GoalGiven{*context.proposal, {}})) at.recent_place = proposed;
+    at.last_goal = ReplyContext::LastGoal{*context.object, *context.proposal};
+  }
   // "yeah, and envelopes as well", "no, top drawer. ruler and calculator
   // too": the things said too get the same goal as the one asked about.
   if (auto [before, toos] = acts::without_trailing_toos(answer.rest); !toos.empty()) {

@@ -143,11 +143,6 @@ bool is_separator(const std::string& token) {
   return is_punctuation(token) || is_one_of(token, {"and", "or", "then", "while", "but", "plus"});
 }
 
-bool is_determiner(const std::string& word) {
-  return is_one_of(word, {"the", "a", "an", "my", "your", "our", "his", "her", "their", "this", "that", "these",
-                          "those", "each", "every", "any", "some", "all"});
-}
-
 // Verbs and adverbs between a class and its place: "shoes always go on",
 // "books should be kept in", "toys belong in".
 bool is_linking_word(const std::string& word) {

@@ -294,6 +294,14 @@ void join_world_names(std::vector<std::string>& words, const Universe& universe)
   separate_listed_names(words, universe);
 }
 
+std::vector<std::string> properties_said(const Universe& universe, ObjectId thing, std::string_view text) {
+  const std::vector<std::string> words = split_words(to_lower(text));
+  std::vector<std::string> said;
+  for (const std::string& property : universe.info(thing).properties)
+    if (std::find(words.begin(), words.end(), property) != words.end()) said.push_back(property);
+  return said;
+}
+
 void separate_listed_names(std::vector<std::string>& words, const Universe& universe) {
   std::set<std::string> one_word;  // the one-word kinds of things here: "rake", "hoe"
   std::set<std::string> two_words;  // "paper plate", for its words said together

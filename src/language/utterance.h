@@ -58,6 +58,10 @@ std::vector<std::string> name_parts(std::string_view name);
 
 // (A word's singular forms: singular_forms, util/text.h.)
 
+// The properties of `thing` that `text` names as words ("the clean
+// diapers": {"clean"}).
+std::vector<std::string> properties_said(const Universe& universe, ObjectId thing, std::string_view text);
+
 // --- Closed classes of English words ---------------------------------------
 bool is_determiner(std::string_view w);       // the, a, this, my, all, every, ...
 bool is_object_pronoun(std::string_view w);   // it, this, that, them, they, these, those

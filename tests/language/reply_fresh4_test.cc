@@ -158,5 +158,36 @@ TEST_F(ReplyActsTest, APlaceSaidNotOfTheThingAskedIsNoCorrectionOfTheLast) {
   EXPECT_THAT(acts(c, "wait the towel is not hamper stuff, top drawer"), StartsWith("command undo"));
 }
 
+// "yes. spray bottle in there too", asked whether the fabric softener goes
+// in the cabinet just after the detergent went on the lower shelf: "there"
+// is the cabinet proposed (it was the lower shelf, named last).
+TEST_F(ReplyActsTest, ThereAfterAYesIsThePlaceProposed) {
+  ReplyContext c = goal_question("jeans1", "towel1", "shelf1");
+  c.asked = Asked::kYesNo;
+  c.proposal = Goal({Literal{Fact(world().vocabulary.in, {id("jeans1"), id("hamper1")}), true}});
+  c.still_to_come = {id("toothbrush1")};
+  const ReplyActs read = read_acts(grounder(), world(), c, "yes. toothbrush in there too");
+  ASSERT_EQ(read.acts.size(), 1u);
+  const auto* yes = std::get_if<YesNo>(&read.acts.front());
+  ASSERT_NE(yes, nullptr) << format_reply(world(), read.acts.front());
+  const std::optional<GoalGiven> rest = goal_in_rest(grounder(), world(), c, *yes);
+  ASSERT_TRUE(rest.has_value());
+  EXPECT_EQ(format_reply(world(), Reply(*rest)), "goal (in toothbrush1 hamper1)");
+}
+
+// A door the teacher wants left open from now on, said at any question;
+// "leave the cabinet open for now" is this time only.
+TEST_F(ReplyActsTest, ADoorLeftOpenFromNowOnIsAStandingWish) {
+  ReplyContext step = step_question();
+  EXPECT_EQ(acts(step, "leave the hamper open from now on"),
+            "command do (open hamper1); left open from now on: hamper1");
+  EXPECT_EQ(acts(step, "the hamper should stay open"), "command do (open hamper1); left open from now on: hamper1");
+  EXPECT_EQ(acts(step, "dont close the hamper anymore"), "command do (open hamper1); left open from now on: hamper1");
+  EXPECT_EQ(acts(step, "leave the hamper open for now"), "command do (open hamper1)");
+  ReplyContext c = goal_question("jeans1", "towel1", "hamper1");
+  EXPECT_EQ(acts(c, "why is the hamper shut? i want it left open"),
+            "command why about hamper1 | command do (open hamper1); left open from now on: hamper1");
+}
+
 }  // namespace
 }  // namespace apprentice::language
