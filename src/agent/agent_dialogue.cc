@@ -194,6 +194,7 @@ TaskLearningAgent::Session::Flow<TaskLearningAgent::Session::Heard> TaskLearning
     }
     if (!why) {
       conversation_.steps_ahead(read.then);
+      for (const std::string& goals : read.goals_ahead) conversation_.answer_ahead(goals);
       return Heard{reply, text, refused};
     }
     explain(*why, context, examples);

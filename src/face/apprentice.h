@@ -305,6 +305,7 @@ struct ReplyReading {
   std::vector<std::string> examples;  // unusable: replies that would work
   std::vector<std::string> notes;     // how words were taken: "I took "nah" as a no."
   std::vector<std::string> then;      // parts said for after this one: "the bucket"
+  std::vector<std::string> goals_ahead;  // where things go, said after a part: for its first question
   std::string text;      // what `interpret --asked` prints
   std::string json;      // what `interpret --asked --json` prints
 };

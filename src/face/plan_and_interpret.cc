@@ -203,6 +203,7 @@ void render(ReplyReading& reading) {
   if (!reading.examples.empty()) j["examples"] = reading.examples;
   if (!reading.notes.empty()) j["notes"] = reading.notes;
   if (!reading.then.empty()) j["then"] = reading.then;
+  if (!reading.goals_ahead.empty()) j["goals_ahead"] = reading.goals_ahead;
   reading.json = dump_json(j) + "\n";
   std::string text = "reply: " + reading.reply + "\nasked: " + reading.asked + "\nmeaning: " + reading.meaning + "\n";
   if (!reading.reason.empty()) text += "reason: " + reading.reason + "\n";
@@ -210,6 +211,7 @@ void render(ReplyReading& reading) {
   for (const std::string& e : reading.examples) text += "example: " + e + "\n";
   for (const std::string& n : reading.notes) text += "note: " + n + "\n";
   for (const std::string& t : reading.then) text += "then: " + t + "\n";
+  for (const std::string& g : reading.goals_ahead) text += "then, where things go: " + g + "\n";
   reading.text = std::move(text);
 }
 
@@ -317,6 +319,7 @@ Result<ReplyReading> interpret_reply(const Scenario& scenario, std::string_view 
   reading.meaning = join(meanings, " ; ");
   reading.notes = read.notes;
   reading.then = read.then;
+  reading.goals_ahead = read.goals_ahead;
   render(reading);
   return reading;
 }

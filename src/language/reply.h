@@ -233,6 +233,10 @@ struct ReplyActs {
   // bookshelf"), to be read at the next question about the task's steps,
   // with the first part's verb where they have none ("clear the table").
   std::vector<std::string> then = {};
+  // Where things go, said after a part of the task ("the folding table
+  // next. detergent and stain remover go in the cabinet"): to be read at
+  // the next question, about the part's first thing.
+  std::vector<std::string> goals_ahead = {};
 };
 ReplyActs read_acts(const Grounder& grounder, const World& world, const ReplyContext& context, std::string_view text);
 

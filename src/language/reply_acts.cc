@@ -275,11 +275,12 @@ ReplyActs read(const Grounder& grounder, const World& world, const ReplyContext&
     out.acts.push_back(std::move(whole));
     return out;
   }
-  if (auto steps = several_steps(grounder, world, context, text, whole)) {
+  if (auto steps = several_steps(grounder, world, context, text, whole, out.goals_ahead)) {
     out.acts.push_back(std::move(steps->first));
     out.then = std::move(steps->second);
     return out;
   }
+  out.goals_ahead.clear();
   std::vector<Segment> parts = segments(text);
   // "crayons go in the left bin no wait, the right one": a strong marker
   // said last in a piece begins the next one, which corrects it.

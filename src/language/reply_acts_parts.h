@@ -115,9 +115,13 @@ std::string joined(const std::vector<const Segment*>& parts);
 // "clear the counter, then the table": the first step's reading and the
 // further steps as said; nullopt when the reply is one step, or a part does
 // not read. `whole`: the reply read whole at the question (read_reply).
+// Where things go, said after a part ("the folding table next. detergent
+// and stain remover go in the cabinet"), is no step: it goes to
+// `goals_ahead`, as said.
 std::optional<std::pair<Reply, std::vector<std::string>>> several_steps(const Grounder& grounder, const World& world,
                                                                       const ReplyContext& context,
-                                                                      std::string_view text, const Reply& whole);
+                                                                      std::string_view text, const Reply& whole,
+                                                                      std::vector<std::string>& goals_ahead);
 
 // --- read_acts (reply_acts.cc) -------------------------------------------
 

@@ -75,6 +75,24 @@ bool names_a_place_alone(const Grounder& grounder, const World& world, const Wor
   return !places_named_alone(grounder, world, part).empty();
 }
 
+// "detergent and stain remover go in the cabinet": a verb of going and a
+// thing here it is said of.
+bool says_where_things_go(const Grounder& grounder, const World& world, const Words& part) {
+  const bool going = std::any_of(part.begin(), part.end(), [](const std::string& w) {
+    return is_one_of(w, {"go", "goes", "belong", "belongs", "live", "lives"});
+  });
+  if (!going) return false;
+  ReferenceContext context{world, grounder.lexicon(), std::nullopt};
+  return std::any_of(part.begin(), part.end(), [&](const std::string& w) {
+    if (is_determiner(w) || is_object_pronoun(w)) return false;
+    const auto found = candidates_for(NounPhrase{"", {w}}, Role::kItem, context);
+    const auto* set = std::get_if<CandidateSet>(&found);
+    return set != nullptr && std::any_of(set->objects.begin(), set->objects.end(), [&](ObjectId o) {
+             return world.universe->info(o).kind == ObjectKind::kItem;
+           });
+  });
+}
+
 // "clear" and "the table": the part with the verb before it.
 Words with_verb(const std::string& verb, const Words& part) {
   Words with = split_words(verb);
@@ -94,7 +112,8 @@ bool starts_with_verb(const Words& part, const std::string& verb) {
 // one step, or a part does not read.
 std::optional<std::pair<Reply, std::vector<std::string>>> several_steps(const Grounder& grounder, const World& world,
                                                                       const ReplyContext& context,
-                                                                      std::string_view text, const Reply& whole) {
+                                                                      std::string_view text, const Reply& whole,
+                                                                      std::vector<std::string>& goals_ahead) {
   if (context.asked != Asked::kTaskStep && context.asked != Asked::kSubtaskEnd) return std::nullopt;
   std::vector<Words> parts = parts_at_and(step_parts(text));
   // ("you know this one?? desk first, then the floor": a remark before
@@ -124,6 +143,11 @@ std::optional<std::pair<Reply, std::vector<std::string>>> several_steps(const Gr
       if (i > 0) return std::nullopt;
       first = Command{Command::Kind::kDo, "", {}, *actions};
       at.asked = Asked::kTaskStep;
+      continue;
+    }
+    // Where things go, said after a part: for the part's questions.
+    if (i > 0 && first && std::holds_alternative<SubtaskNamed>(*first) && says_where_things_go(grounder, world, part)) {
+      goals_ahead.push_back(quoted_words(part));
       continue;
     }
     // ("the folding table, clear it": "it" is the place of the part before.)

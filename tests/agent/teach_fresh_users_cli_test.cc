@@ -438,5 +438,20 @@ TEST_F(FreshUsers, ADoorLeftOpenFromNowOnStaysOpen) {
       << out;
 }
 
+// "ok the folding table next. detergent and stain remover go in the
+// cabinet" started the part and dropped the goals. Where things go, said
+// after a part, answers the part's first question.
+TEST_F(FreshUsers, WhereThingsGoSaidWithAPartAnswersItsFirstQuestion) {
+  const std::string out =
+      teach("laundry.yaml", {"tidy the laundry room", "clear the floor", "i'm done", "yes",
+                             "ok the folding table next. detergent and stain remover go in the cabinet", "quit"});
+  EXPECT_THAT(out, HasSubstr("Instructor: ok the folding table next. detergent and stain remover go in the cabinet\n"
+                             "Agent: So I clear what is on the folding table, one thing at a time.\n"
+                             "Agent: So the detergent goes in the cabinet, and the cabinet ends closed."))
+      << out;
+  EXPECT_THAT(out, HasSubstr("Agent: The same goes for the stain remover, when I come to it.\n")) << out;
+  EXPECT_THAT(out, Not(HasSubstr("Where should the detergent"))) << out;
+}
+
 }  // namespace
 }  // namespace apprentice

@@ -189,5 +189,18 @@ TEST_F(ReplyActsTest, ADoorLeftOpenFromNowOnIsAStandingWish) {
             "command why about hamper1 | command do (open hamper1); left open from now on: hamper1");
 }
 
+// Where things go, said after a part of the task, is no further part: it
+// is kept for the part's first question (it was "clear the detergent goes
+// in the cabinet", a part).
+TEST_F(ReplyActsTest, WhereThingsGoSaidAfterAPartIsKeptForItsQuestions) {
+  ReplyContext step = step_question();
+  const ReplyActs read =
+      read_acts(grounder(), world(), step, "clear the counter, the toothbrush goes on the shelf, then the floor");
+  ASSERT_EQ(read.acts.size(), 1u);
+  EXPECT_EQ(format_reply(world(), read.acts.front()), "subtask clear on counter1");
+  EXPECT_EQ(read.then, std::vector<std::string>{"clear the floor"});
+  EXPECT_EQ(read.goals_ahead, std::vector<std::string>{"the toothbrush goes on the shelf"});
+}
+
 }  // namespace
 }  // namespace apprentice::language
