@@ -306,11 +306,8 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::obey(const language
       return {};
     }
     case language::Command::Kind::kDo:
-      if (!command.left_open.empty()) {
+      if (!command.left_open.empty())
         if (auto s = keep_open(command.left_open, command.argument); !s) return stop(s.error());
-        if (!command.actions.empty()) do_now(command.actions);
-        return {};
-      }
       do_now(command.actions);
       return {};
   }
@@ -329,16 +326,14 @@ Status TaskLearningAgent::Session::keep_open(const std::vector<ObjectId>& places
   for (ObjectId place : places) {
     const std::string& category = w.universe->info(place).category;
     progress_.doors_left_open.insert(category);
-    std::vector<GoalKnowledge> closing;
+    auto closes_it = [&](const GoalTemplateLiteral& l) {
+      return l.positive && l.predicate == closed && l.arguments.size() == 1 && l.arguments[0].category == category;
+    };
+    std::vector<GoalKnowledge> closing;  // copied: learning again changes the memory
     for (const GoalKnowledge& g : agent_.knowledge_.goals.all())
-      if (std::any_of(g.literals.begin(), g.literals.end(), [&](const GoalTemplateLiteral& l) {
-            return l.positive && l.predicate == closed && l.arguments.size() == 1 && l.arguments[0].category == category;
-          }))
-        closing.push_back(g);
+      if (std::any_of(g.literals.begin(), g.literals.end(), closes_it)) closing.push_back(g);
     for (GoalKnowledge g : closing) {
-      std::erase_if(g.literals, [&](const GoalTemplateLiteral& l) {
-        return l.positive && l.predicate == closed && l.arguments.size() == 1 && l.arguments[0].category == category;
-      });
+      std::erase_if(g.literals, closes_it);
       g.provenance.source += " (" + language::spoken_category(category) + " left open from then on, as said: " +
                              apprentice::quoted(text) + ")";
       if (auto s = lessons_.learn_goal(agent_.knowledge_, g); !s) return s;

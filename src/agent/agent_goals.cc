@@ -362,7 +362,7 @@ Status TaskLearningAgent::Session::learn_goals_of_others(ObjectId asked, ObjectI
     const ObjectId item = items.front();
     if (!progress_.still_to_come(world(), item)) {
       if (!progress_.evaluated.count(item)) later.push_back(item);
-      else if (!goals_corrected_by(item, "").empty() && !goal.satisfied_by(w.state)) corrected.emplace_back(item, goal);
+      else if (!goals_corrected_by(item, {}).empty() && !goal.satisfied_by(w.state)) corrected.emplace_back(item, goal);
       continue;
     }
     if (auto s = learn_goal(item, goal, source); !s) return s;
@@ -407,9 +407,9 @@ Status TaskLearningAgent::Session::learn_goal(ObjectId object, const Goal& goal,
   return lessons_.learn_goal(agent_.knowledge_, *knowledge);
 }
 
-std::vector<GoalKey> TaskLearningAgent::Session::goals_corrected_by(ObjectId object, const std::string& text) const {
+std::vector<GoalKey> TaskLearningAgent::Session::goals_corrected_by(ObjectId object,
+                                                                  const std::vector<std::string>& properties) const {
   const std::string& kind = world().universe->info(object).category;
-  const std::vector<std::string> properties = language::properties_said(*world().universe, object, text);
   const std::vector<ObjectId> things = progress_.dealt_with_like(world(), object, properties);
   if (things.empty()) return {};
   // "the clean diapers go in the bottom drawer": only the parts the clean
@@ -453,7 +453,7 @@ std::optional<ObjectId> TaskLearningAgent::Session::thing_corrected(const langua
   if (given == nullptr) return std::nullopt;
   for (ObjectId o : given->goal.objects())
     if (world().universe->info(o).kind == ObjectKind::kItem)
-      return goals_corrected_by(o, "").empty() ? std::nullopt : std::optional<ObjectId>(o);
+      return goals_corrected_by(o, {}).empty() ? std::nullopt : std::optional<ObjectId>(o);
   return std::nullopt;
 }
 
@@ -463,7 +463,9 @@ Status TaskLearningAgent::Session::correct_goal(ObjectId object, const language:
   bool say_norm = false;
   const language::GoalGiven given = with_doors_closed(object, said, say_norm);
   const std::string source = "instructor: " + apprentice::quoted(text) + " (a correction)";
-  const std::vector<GoalKey> keys = goals_corrected_by(object, text);
+  // "the clean diapers": the properties said pick the things and parts.
+  const std::vector<std::string> properties = language::properties_said(*w.universe, object, text);
+  const std::vector<GoalKey> keys = goals_corrected_by(object, properties);
   for (const GoalKey& key : keys)
     if (auto s = learn_goal(object, given.goal, source, key); !s) return s;
   say(language::read_back_goal(w, object, given.goal) + (say_norm ? " " + language::closing_norm_note() : ""));
@@ -475,7 +477,7 @@ Status TaskLearningAgent::Session::correct_goal(ObjectId object, const language:
   for (ObjectId place : w.universe->of_kind(ObjectKind::kReceptacle))
     if (const Fact closed(w.vocabulary.closed, {place}); w.state.holds(closed)) closed_before.push_back(Literal{closed, true});
   std::vector<Action> done;
-  for (ObjectId thing : progress_.dealt_with_like(w, object, language::properties_said(*w.universe, object, text))) {
+  for (ObjectId thing : progress_.dealt_with_like(w, object, properties)) {
     std::optional<Goal> placed = instantiate_goal(w, *learned, thing);
     if (!placed) continue;
     std::vector<Literal> literals = placed->literals;

@@ -163,10 +163,10 @@ class TaskLearningAgent::Session : private ActingHelp {
   // A goal said at a question about the task's steps ("the notebook goes
   // on the bookshelf", after it was put in the filing cabinet): the kinds
   // whose goal it corrects, those learned in this task; none when no thing
-  // of its kind was dealt with yet. `text`, the teacher's words: where
-  // they name a property of `object` ("the clean diapers"), only the parts
-  // the things with it were dealt with in.
-  std::vector<GoalKey> goals_corrected_by(ObjectId object, const std::string& text) const;
+  // of its kind was dealt with yet. With `properties` of `object` said
+  // ("the clean diapers": {"clean"}), only the parts the things with them
+  // were dealt with in.
+  std::vector<GoalKey> goals_corrected_by(ObjectId object, const std::vector<std::string>& properties) const;
   // The key `thing` was dealt with under in this task (the part it was
   // cleared in), from its report; nullopt when it was not dealt with.
   std::optional<GoalKey> key_dealt_with(ObjectId thing) const;

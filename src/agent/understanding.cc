@@ -1,12 +1,11 @@
 #include "agent/understanding.h"
 
-#include "language/rule_in_reply.h"
-
 #include <algorithm>
 
 #include "language/grounding.h"
 #include "language/parser.h"
 #include "language/reference.h"
+#include "language/rule_in_reply.h"
 #include "language/utterance.h"
 #include "util/text.h"
 

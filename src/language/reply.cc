@@ -395,8 +395,8 @@ std::optional<GoalGiven> goal_said_at_a_step(const Grounder& grounder, const Wor
   bool placing = false;
   for (std::size_t i = 0; i < words.size(); ++i)
     placing = placing ||
-              is_one_of(words[i], {"go", "goes", "belong", "belongs", "belonged", "put", "move", "moved", "lives", "live",
-                                   "hang", "hangs", "sit", "sits", "stay", "stays"}) ||
+              is_verb_of_going(words[i]) ||
+              is_one_of(words[i], {"belonged", "put", "move", "moved", "hang", "hangs", "sit", "sits", "stay", "stays"}) ||
               (words[i] == "be" && i > 0 && is_one_of(words[i - 1], {"should", "must", "to", "can", "could", "would"}));
   if (!placing) return std::nullopt;
   std::optional<std::string> kind = the_kind_named(world, words);

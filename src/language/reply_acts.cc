@@ -121,12 +121,8 @@ namespace {
 // can you forget that paper stuff rule"), after the words people open it
 // with: the command; nullopt else.
 std::optional<Command> forget_said(const Grounder& grounder, const World& world, const Words& said) {
-  Words words = without_leading_connectives(without_interjections(said));
-  for (std::initializer_list<std::string_view> frame :
-       {std::initializer_list<std::string_view>{"can", "you"}, {"could", "you"}, {"would", "you"}, {"pls"},
-        {"please"}, {"also"}, {"oh"}})
-    if (words.size() > frame.size() && std::equal(frame.begin(), frame.end(), words.begin()))
-      words.erase(words.begin(), words.begin() + static_cast<std::ptrdiff_t>(frame.size()));
+  const Words words = without_fillers(without_leading_connectives(without_interjections(said)),
+                                      ReplyVocabulary(*world.universe, grounder.lexicon()));
   if (words.empty() || words.front() != "forget") return std::nullopt;
   auto read = command(grounder, world, quoted_words(words));
   if (!read || read->kind != Command::Kind::kForget) return std::nullopt;
@@ -369,13 +365,13 @@ ReplyActs read(const Grounder& grounder, const World& world, const ReplyContext&
     }
     // "leave the washer open from now on", "i want it left open": a door
     // the teacher wants left open, opened now if it is closed.
-    if (auto places = doors_left_open(grounder, world, context, s.words)) {
+    if (auto openings = doors_left_open(grounder, world, context, s.words)) {
       Command keep{Command::Kind::kDo, s.text, {}, {}};
-      keep.left_open = *places;
-      for (ObjectId place : *places)
-        if (world.state.holds(Fact(world.vocabulary.closed, {place})))
-          if (auto opening = door_action(grounder, world, context, {"open", world.universe->name(place)}))
-            keep.actions.insert(keep.actions.end(), opening->begin(), opening->end());
+      for (const Action& opening : *openings) {
+        const ObjectId place = opening.arguments()[0];
+        keep.left_open.push_back(place);
+        if (world.state.holds(Fact(world.vocabulary.closed, {place}))) keep.actions.push_back(opening);
+      }
       after.push_back(std::move(keep));
       continue;
     }

@@ -77,10 +77,10 @@ std::optional<std::vector<Action>> door_action(const Grounder& grounder, const W
 // A door the teacher wants left open from now on: "leave the washer open
 // from now on", "always keep the cabinet open", "i want it left open",
 // "the hamper should stay open", "don't close the washer anymore". The
-// places (each with a door), by door_action's reading of "open X"; nullopt
-// when the words say no such thing.
-std::optional<std::vector<ObjectId>> doors_left_open(const Grounder& grounder, const World& world,
-                                                     const ReplyContext& context, const Words& said);
+// openings of those doors (door_action's reading of "open X"; each action's
+// first argument is a door); nullopt when the words say no such thing.
+std::optional<std::vector<Action>> doors_left_open(const Grounder& grounder, const World& world,
+                                                   const ReplyContext& context, const Words& said);
 
 // --- The answer's words (reply_answer_words.cc) ---------------------------
 

@@ -197,7 +197,7 @@ bool names_or_places(const Grounder& grounder, const World& world, const Words& 
     if (is_one_of(w, {"can", "will", "would", "could", "might", "must", "may", "shall", "need", "needs", "have",
                       "has", "had", "do", "does", "did", "not", "still", "just", "already"}))
       continue;
-    if (is_one_of(w, {"go", "goes", "belong", "belongs", "live", "lives", "stay", "stays", "should"})) return true;
+    if (is_verb_of_going(w) || is_one_of(w, {"stay", "stays", "should"})) return true;
     if (std::holds_alternative<CandidateSet>(candidates_for(NounPhrase{"", {w}}, Role::kItem, context))) return true;
     if (std::holds_alternative<CandidateSet>(candidates_for(NounPhrase{"", {w}}, Role::kPlace, context))) return true;
   }

@@ -442,8 +442,8 @@ std::optional<std::vector<Action>> door_action(const Grounder& grounder, const W
   return actions;
 }
 
-std::optional<std::vector<ObjectId>> doors_left_open(const Grounder& grounder, const World& world,
-                                                     const ReplyContext& context, const Words& said) {
+std::optional<std::vector<Action>> doors_left_open(const Grounder& grounder, const World& world,
+                                                   const ReplyContext& context, const Words& said) {
   Words words = without_leading_connectives(without_interjections(said));
   while (!words.empty() && (is_marker(words.front()) || is_one_of(words.front(), {"please", "pls", "also", "just"})))
     words.erase(words.begin());
@@ -492,11 +492,7 @@ std::optional<std::vector<ObjectId>> doors_left_open(const Grounder& grounder, c
   as_step.asked = Asked::kTaskStep;  // "it": the place named last
   Words open_it = {"open"};
   open_it.insert(open_it.end(), place.begin(), place.end());
-  const auto opened = door_action(grounder, world, as_step, open_it);
-  if (!opened) return std::nullopt;
-  std::vector<ObjectId> places;
-  for (const Action& action : *opened) places.push_back(action.arguments()[0]);
-  return places;
+  return door_action(grounder, world, as_step, open_it);
 }
 
 }  // namespace apprentice::language::acts

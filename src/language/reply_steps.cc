@@ -78,10 +78,7 @@ bool names_a_place_alone(const Grounder& grounder, const World& world, const Wor
 // "detergent and stain remover go in the cabinet": a verb of going and a
 // thing here it is said of.
 bool says_where_things_go(const Grounder& grounder, const World& world, const Words& part) {
-  const bool going = std::any_of(part.begin(), part.end(), [](const std::string& w) {
-    return is_one_of(w, {"go", "goes", "belong", "belongs", "live", "lives"});
-  });
-  if (!going) return false;
+  if (std::none_of(part.begin(), part.end(), [](const std::string& w) { return is_verb_of_going(w); })) return false;
   ReferenceContext context{world, grounder.lexicon(), std::nullopt};
   return std::any_of(part.begin(), part.end(), [&](const std::string& w) {
     if (is_determiner(w) || is_object_pronoun(w)) return false;

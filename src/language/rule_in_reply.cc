@@ -55,7 +55,7 @@ namespace {
 bool says_things_go(std::string_view text) {
   const std::vector<std::string> words = split_words(to_lower(text));
   return std::any_of(words.begin(), words.end(), [](const std::string& w) {
-    return is_one_of(w, {"go", "goes", "belong", "belongs", "live", "lives", "stay", "stays", "kept"});
+    return is_verb_of_going(w) || is_one_of(w, {"stay", "stays", "kept"});
   });
 }
 

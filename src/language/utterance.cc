@@ -404,6 +404,8 @@ bool is_generic_noun(std::string_view w) {
 
 bool is_door_word(std::string_view w) { return is_one_of(w, {"door", "doors", "lid", "lids", "cover", "hatch"}); }
 
+bool is_verb_of_going(std::string_view w) { return is_one_of(w, {"go", "goes", "belong", "belongs", "live", "lives"}); }
+
 bool is_particle(std::string_view w) {
   return is_one_of(w, {"away", "up", "down", "back", "out", "off", "over", "aside"});
 }

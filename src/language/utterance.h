@@ -70,6 +70,7 @@ bool is_auxiliary(std::string_view w);        // should, must, will, can, need, 
 bool is_negation(std::string_view w);         // not, never
 bool is_generic_noun(std::string_view w);     // thing(s), stuff, everything, object(s), item(s), ...
 bool is_door_word(std::string_view w);        // door, lid, cover, hatch
+bool is_verb_of_going(std::string_view w);    // go, goes, belong, belongs, live, lives: where things go
 bool is_state_word(std::string_view w);       // open, opened, closed, shut: a door's state
 bool is_particle(std::string_view w);         // away, up, down, back, out, off, over, aside
 bool is_filler(std::string_view w);           // please, ok, just, now, um, ...
