@@ -364,8 +364,13 @@ ReplyActs read(const Grounder& grounder, const World& world, const ReplyContext&
       continue;
     }
     // "leave the washer open from now on", "i want it left open": a door
-    // the teacher wants left open, opened now if it is closed.
-    if (auto openings = doors_left_open(grounder, world, context, s.words)) {
+    // the teacher wants left open, opened now if it is closed. ("filing
+    // cabinet, and leave that open from now on": "that" is the place the
+    // answer before it names.)
+    ReplyContext wish = context;
+    if (!answer.empty() && std::find(s.words.begin(), s.words.end(), "open") != s.words.end())
+      if (auto place = destination(world, read_reply(grounder, world, context, joined(answer)))) wish.recent_place = place;
+    if (auto openings = doors_left_open(grounder, world, wish, s.words)) {
       Command keep{Command::Kind::kDo, s.text, {}, {}};
       for (const Action& opening : *openings) {
         const ObjectId place = opening.arguments()[0];

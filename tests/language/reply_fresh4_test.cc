@@ -187,6 +187,11 @@ TEST_F(ReplyActsTest, ADoorLeftOpenFromNowOnIsAStandingWish) {
   ReplyContext c = goal_question("jeans1", "towel1", "hamper1");
   EXPECT_EQ(acts(c, "why is the hamper shut? i want it left open"),
             "command why about hamper1 | command do (open hamper1); left open from now on: hamper1");
+  // Said with an answer, "that" is the answer's place (found teaching at
+  // the terminal: "filing cabinet, and leave that open from now on" was
+  // read without the wish).
+  EXPECT_EQ(acts(goal_question("jeans1"), "the cabinet, and leave that open from now on"),
+            "goal (in jeans1 cabinet1) | command do (open cabinet1); left open from now on: cabinet1");
 }
 
 // Where things go, said after a part of the task, is no further part: it
