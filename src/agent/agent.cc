@@ -124,6 +124,28 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::next_step() {
 
 // --- The task and its structure ---------------------------------------------
 
+namespace {
+
+// A known task with the verb of `name` over a room whose name ends the
+// other's: "tidy gym" for "tidy garage gym" (taught in the gym, said in the
+// garage gym), "tidy home office" for "tidy office"; not "tidy dorm room"
+// for "tidy living room". nullptr when there is none.
+const TaskKnowledge* task_over_a_room_like(const Knowledge& knowledge, const std::string& name) {
+  const std::vector<std::string> said = split_words(name);
+  if (said.size() < 2) return nullptr;
+  auto ends = [](const std::vector<std::string>& whole, const std::vector<std::string>& end) {
+    return end.size() > 1 && end.size() <= whole.size() && std::equal(end.begin() + 1, end.end(), whole.end() - static_cast<std::ptrdiff_t>(end.size() - 1));
+  };
+  for (const TaskKnowledge& task : knowledge.tasks) {
+    const std::vector<std::string> known = split_words(task.name);
+    if (known.size() < 2 || known.front() != said.front()) continue;
+    if (ends(known, said) || ends(said, known)) return &task;
+  }
+  return nullptr;
+}
+
+}  // namespace
+
 TaskLearningAgent::Session::Step TaskLearningAgent::Session::learn_task_name() {
   auto heard = converse(question(QuestionKind::kTaskName, language::ask_task()), context(language::Asked::kTask),
                         [](const language::Reply& r) -> std::optional<std::string> {
@@ -135,15 +157,11 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::learn_task_name() {
     return stop(Error{ErrorCode::kInvalidInput,
                       "the instructor's replies could not be understood: " + apprentice::quoted(heard->text)});
   begin_lesson(heard->text);
+  // ("tidy the office" in a home office is "tidy home office": the reader
+  // names the task by the room, language/reply_task.cc.)
   std::string name = std::get<language::TaskNamed>(*heard->reply).name;
-  // "tidy the office" in a home office, where "tidy home office" is known:
-  // the room named by the last word of its name is the room.
-  const std::string location = to_lower(world().location);
-  if (const auto space = location.rfind(' '); !agent_.knowledge_.find_task(name) && space != std::string::npos)
-    if (const std::string last = location.substr(space); name.ends_with(last)) {
-      const std::string whole = name.substr(0, name.size() - last.size()) + " " + location;
-      if (agent_.knowledge_.find_task(whole)) name = whole;
-    }
+  if (!agent_.knowledge_.find_task(name))
+    if (const TaskKnowledge* like = task_over_a_room_like(agent_.knowledge_, name)) name = like->name;
   if (const TaskKnowledge* known = agent_.knowledge_.find_task(name)) {
     progress_.task = *known;
     progress_.known_to_do.assign(known->subtasks.begin(), known->subtasks.end());
@@ -289,11 +307,14 @@ void TaskLearningAgent::Session::finish_subtask() {
     // left" would be false (issue 25: 30 of 30 were still on the table).
     // Things the teacher said to leave were read back then ("I will leave
     // ...", "So I leave ..."), and are not failures.
-    const long long left = static_cast<long long>(std::count_if(
-        progress_.left_by_teacher.begin(), progress_.left_by_teacher.end(), [&](ObjectId o) {
-          std::optional<ObjectId> at = language::place_of(world(), o);
-          return at && std::find(c.places.begin(), c.places.end(), *at) != c.places.end();
-        }));
+    // So are the things it put there for this time only, as told.
+    auto here = [&](ObjectId o) {
+      std::optional<ObjectId> at = language::place_of(world(), o);
+      return at && std::find(c.places.begin(), c.places.end(), *at) != c.places.end();
+    };
+    const long long left =
+        static_cast<long long>(std::count_if(progress_.left_by_teacher.begin(), progress_.left_by_teacher.end(), here) +
+                               std::count_if(progress_.placed_this_time.begin(), progress_.placed_this_time.end(), here));
     const long long remaining = static_cast<long long>(items_at(world(), c.places)) - left;
     if (remaining == 0 && left == 0)
       say(language::nothing_left(c.relation, world(), c.places, c.mode == Current::Mode::kFirstObject));

@@ -8,7 +8,9 @@
 
 #include "agent/class_rule_knowledge.h"
 #include "agent/explanation.h"
+#include "agent/forgetting.h"
 #include "agent/goal_proposals.h"
+#include "agent/goal_repair.h"
 #include "agent/session.h"
 #include "agent/teacher_questions.h"
 #include "knowledge/goal_memory.h"
@@ -104,6 +106,10 @@ TaskLearningAgent::Session::Flow<TaskLearningAgent::Session::Heard> TaskLearning
       else if (command->kind == language::Command::Kind::kUndo) ++undos;
     }
     for (const std::string& note : read.notes) say(note, Voice::kResponse);
+    // "undo" asked which one: the reply the question came from is what is
+    // taken back, not the lesson before it.
+    if (undos > 0 && !answer && context.asked == language::Asked::kWhich)
+      return Heard{language::Reply(language::YesNo{false}), text, refused};
     if (undos > 0) conversation_.drop_steps_ahead();
     if (undos > 0) {
       // Each undo goes one lesson back; the loop then asks that lesson's
@@ -224,6 +230,10 @@ TaskLearningAgent::Session::Flow<language::Reply> TaskLearningAgent::Session::se
     if (!heard) return tl::unexpected(heard.error());
     if (!heard->reply)
       return language::Reply(language::Unusable{language::could_not_tell_which(ambiguous.phrase), {}, {}});
+    // "neither", "skip it": none of them; the reply is set aside and its
+    // question asked again.
+    if (!std::holds_alternative<language::Chosen>(*heard->reply))
+      return language::Reply(language::Unusable{language::reply_set_aside(text), {}, {}});
     context.settled.push_back({ambiguous.phrase, std::get<language::Chosen>(*heard->reply).object});
     // Read again as a whole reply: its answer, or else the one-off action
     // it asked for ("open the drawer", then "the top one"), for the caller
@@ -246,6 +256,7 @@ TaskLearningAgent::Session::Accept TaskLearningAgent::Session::chosen_among(std:
   return [choices = std::move(choices)](const language::Reply& r) -> std::optional<std::string> {
     if (const auto* chosen = std::get_if<language::Chosen>(&r))
       if (std::find(choices.begin(), choices.end(), chosen->object) != choices.end()) return std::nullopt;
+    if (const auto* said = std::get_if<language::YesNo>(&r); said && !said->yes) return std::nullopt;  // none of them
     return language::asked_which_one();
   };
 }
@@ -307,7 +318,9 @@ TaskLearningAgent::Session::Step TaskLearningAgent::Session::obey(const language
     }
     case language::Command::Kind::kDo:
       if (!command.left_open.empty())
-        if (auto s = keep_open(command.left_open, command.argument); !s) return stop(s.error());
+        if (auto s = keep_doors(command.left_open, command.argument, true); !s) return stop(s.error());
+      if (!command.kept_closed.empty())
+        if (auto s = keep_doors(command.kept_closed, command.argument, false); !s) return stop(s.error());
       do_now(command.actions);
       return {};
   }
@@ -318,29 +331,21 @@ TeachingSoFar TaskLearningAgent::Session::so_far() const {
   return TeachingSoFar{world(), agent_.knowledge_.goals, progress_, lessons_.last_reply(), proposals_asked_};
 }
 
-Status TaskLearningAgent::Session::keep_open(const std::vector<ObjectId>& places, const std::string& text) {
+Status TaskLearningAgent::Session::keep_doors(const std::vector<ObjectId>& places, const std::string& text, bool open) {
   const World& w = world();
   begin_lesson(text);
-  const std::string& closed = w.domain->predicates[w.vocabulary.closed].name;
   std::vector<std::string> kinds;
   for (ObjectId place : places) {
-    const std::string& category = w.universe->info(place).category;
-    progress_.doors_left_open.insert(category);
-    auto closes_it = [&](const GoalTemplateLiteral& l) {
-      return l.positive && l.predicate == closed && l.arguments.size() == 1 && l.arguments[0].category == category;
-    };
-    std::vector<GoalKnowledge> closing;  // copied: learning again changes the memory
-    for (const GoalKnowledge& g : agent_.knowledge_.goals.all())
-      if (std::any_of(g.literals.begin(), g.literals.end(), closes_it)) closing.push_back(g);
-    for (GoalKnowledge g : closing) {
-      std::erase_if(g.literals, closes_it);
-      g.provenance.source += " (" + language::spoken_category(category) + " left open from then on, as said: " +
-                             apprentice::quoted(text) + ")";
+    if (open) progress_.doors_left_open.insert(door_key(w, place));
+    else progress_.doors_left_open.erase(door_key(w, place));
+    const std::vector<GoalKnowledge> again = open ? goals_leaving_open(w, agent_.knowledge_.goals, place, text)
+                                                  : goals_closing(w, agent_.knowledge_.goals, place, text);
+    for (const GoalKnowledge& g : again) {
       if (auto s = lessons_.learn_goal(agent_.knowledge_, g); !s) return s;
       if (std::find(kinds.begin(), kinds.end(), g.key.category) == kinds.end()) kinds.push_back(g.key.category);
     }
   }
-  say(language::will_leave_open(w, places, kinds), Voice::kResponse);
+  say(language::will_keep_doors(w, places, kinds, open), Voice::kResponse);
   return {};
 }
 
@@ -365,63 +370,24 @@ void TaskLearningAgent::Session::do_now(const std::vector<Action>& actions) {
   if (!done.empty()) say(language::report_actions(world(), done), Voice::kResponse);
 }
 
-Status TaskLearningAgent::Session::forget(const std::string& kind) {
-  std::optional<std::string> category = agent_.understanding_.category(world(), kind);
-  // "forget paper", with a rule about paper things: the rule, not the
-  // newspaper that WordNet calls paper. A kind named by its own words
-  // ("forget the mug") is the kind.
-  if (category && kinds_known_by(agent_.knowledge_.goals, kind) != std::vector<std::string>{*category} &&
-      !rules_named(sources_.rules_in_use(), kind).empty())
-    category.reset();
-  if (!category) {
-    // A kind that is not here may still be known.
-    std::vector<std::string> fits = kinds_known_by(agent_.knowledge_.goals, kind);
-    if (fits.size() > 1) {
-      say(language::which_kind_to_forget(fits), Voice::kResponse);
-      return {};
-    }
-    if (fits.size() == 1) category = fits.front();
+Status TaskLearningAgent::Session::forget(const std::string& what) {
+  const std::vector<ClassRule> rules = sources_.rules_in_use();
+  const ForgetDecision decided =
+      decide_forget(what, agent_.understanding_.category(world(), what), agent_.knowledge_.goals, rules);
+  if (decided.kind == ForgetDecision::Kind::kGoals) {
+    // A lesson of its own, so that "undo" right after brings it back.
+    begin_lesson("forget " + what);
+    for (const GoalKey& key : decided.goals)
+      if (auto s = lessons_.forget_goal(agent_.knowledge_, key); !s) return s;
   }
-  std::vector<GoalKey> keys;
-  if (category)
-    for (const GoalKnowledge& g : agent_.knowledge_.goals.all())
-      if (g.key.category == *category) keys.push_back(g.key);
-  if (keys.empty()) {
-    auto rule = forget_rule_named(kind);
-    if (!rule) return tl::unexpected(rule.error());
-    if (*rule) return {};
-    say(language::nothing_to_forget(category ? std::optional<std::string_view>(*category) : std::nullopt, kind),
-        Voice::kResponse);
-    return {};
-  }
-  // A lesson of its own, so that "undo" right after brings it back.
-  begin_lesson("forget " + kind);
-  for (const GoalKey& key : keys)
-    if (auto s = lessons_.forget_goal(agent_.knowledge_, key); !s) return s;
-  say(language::forgot_where_kind_goes(*category), Voice::kResponse);
-  return {};
-}
-
-Result<bool> TaskLearningAgent::Session::forget_rule_named(const std::string& what) {
-  std::vector<ClassRule> named = rules_named(sources_.rules_in_use(), what);
-  if (named.empty()) return false;
-  std::vector<std::string> said;
-  for (const ClassRule& rule : named)
-    if (std::find(said.begin(), said.end(), say_class_rule(rule)) == said.end()) said.push_back(say_class_rule(rule));
-  if (said.size() > 1) {
-    const ClassRule& first = named.front();
-    say(language::which_rule_to_forget(what, said, rule_subject(first) + " " + rule_destination(first)),
-        Voice::kResponse);
-    return true;
-  }
-  for (const ClassRule& rule : named) {
-    if (auto s = forget_rule(agent_.knowledge_, agent_.store_, rule); !s) return tl::unexpected(s.error());
+  for (const ClassRule& rule : decided.rules) {
+    if (auto s = forget_rule(agent_.knowledge_, agent_.store_, rule); !s) return s;
     // An undo must not bring it back either.
     lessons_.forget_class_rule(rule);
     sources_.forget_rule(rule);
   }
-  say(language::forgot_rule(said.front()), Voice::kResponse);
-  return true;
+  say(decided.reply, Voice::kResponse);
+  return {};
 }
 
 }  // namespace apprentice

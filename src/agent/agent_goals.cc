@@ -220,6 +220,13 @@ TaskLearningAgent::Session::Flow<std::optional<Goal>> TaskLearningAgent::Session
     const std::string source = "instructor: " + apprentice::quoted(heard->text);
     say((ahead ? language::read_back_goal_for_later(w, about, given.goal) : language::read_back_goal(w, about, given.goal)) +
         (say_norm ? " " + language::closing_norm_note() : ""));
+    // "just for tonight, the locker": done now, not learned for the kind.
+    if (given.this_time_only && !ahead) {
+      say(language::this_time_only_note());
+      progress_.placed_this_time.push_back(object);
+      report.goal_source = GoalSource::kInstructor;
+      return std::optional<Goal>(given.goal);
+    }
     if (auto s = learn_goal(about, given.goal, source); !s) return stop(s.error());
     if (auto s = learn_goals_of_others(object, about, given, heard->text, source); !s) return stop(s.error());
     if (ahead) continue;
@@ -464,23 +471,14 @@ Status TaskLearningAgent::Session::correct_goal(ObjectId object, const language:
   const language::GoalGiven given = with_doors_closed(object, said, say_norm);
   const std::string source = "instructor: " + apprentice::quoted(text) + " (a correction)";
   // "the clean diapers": the properties said pick the things and parts.
-  const std::vector<std::string> properties = language::properties_said(*w.universe, object, text);
-  const std::vector<GoalKey> keys = goals_corrected_by(object, properties);
-  for (const GoalKey& key : keys)
-    if (auto s = learn_goal(object, given.goal, source, key); !s) return s;
-  say(language::read_back_goal(w, object, given.goal) + (say_norm ? " " + language::closing_norm_note() : ""));
-  // The things of its kind already put away go where it now says, by the
-  // agent's own search; what was closed is closed again after.
-  const GoalKnowledge* learned = keys.empty() ? nullptr : agent_.knowledge_.goals.find(keys.back());
-  if (learned == nullptr) return learn_goals_of_others(object, object, given, text, source);
+  // The things moved go where it now says, by the agent's own search; what
+  // was closed is closed again after.
   std::vector<Literal> closed_before;
   for (ObjectId place : w.universe->of_kind(ObjectKind::kReceptacle))
     if (const Fact closed(w.vocabulary.closed, {place}); w.state.holds(closed)) closed_before.push_back(Literal{closed, true});
   std::vector<Action> done;
-  for (ObjectId thing : progress_.dealt_with_like(w, object, properties)) {
-    std::optional<Goal> placed = instantiate_goal(w, *learned, thing);
-    if (!placed) continue;
-    std::vector<Literal> literals = placed->literals;
+  auto move = [&](ObjectId thing, const Goal& placed) {
+    std::vector<Literal> literals = placed.literals;
     literals.insert(literals.end(), closed_before.begin(), closed_before.end());
     const Goal goal(std::move(literals));
     OwnActions own;
@@ -491,7 +489,25 @@ Status TaskLearningAgent::Session::correct_goal(ObjectId object, const language:
       if (!next.action || !execute(*next.action)) break;
       done.push_back(*next.action);
     }
+  };
+  // "the blanket goes on the sofa, its cold tonight": this thing is moved,
+  // and nothing is learned.
+  if (given.this_time_only) {
+    say(language::read_back_goal(w, object, given.goal) + " " + language::this_time_only_note());
+    progress_.placed_this_time.push_back(object);
+    move(object, given.goal);
+    if (!done.empty()) say(language::report_actions(w, done), Voice::kResponse);
+    return {};
   }
+  const std::vector<std::string> properties = language::properties_said(*w.universe, object, text);
+  const std::vector<GoalKey> keys = goals_corrected_by(object, properties);
+  for (const GoalKey& key : keys)
+    if (auto s = learn_goal(object, given.goal, source, key); !s) return s;
+  say(language::read_back_goal(w, object, given.goal) + (say_norm ? " " + language::closing_norm_note() : ""));
+  const GoalKnowledge* learned = keys.empty() ? nullptr : agent_.knowledge_.goals.find(keys.back());
+  if (learned == nullptr) return learn_goals_of_others(object, object, given, text, source);
+  for (ObjectId thing : progress_.dealt_with_like(w, object, properties))
+    if (std::optional<Goal> placed = instantiate_goal(w, *learned, thing)) move(thing, *placed);
   if (!done.empty()) say(language::report_actions(w, done), Voice::kResponse);
   // "the jeans go in the hamper and the dirty towel goes in the washer":
   // the others said with it, corrected or learned too.

@@ -91,8 +91,10 @@ TaskLearningAgent::Session::Flow<std::optional<ObjectId>> TaskLearningAgent::Ses
   context.choices = clause.places;
   auto heard = converse(q, context, chosen_among(clause.places));
   if (!heard) return tl::unexpected(heard.error());
-  if (!heard->reply) return std::optional<ObjectId>();
-  return std::optional<ObjectId>(std::get<language::Chosen>(*heard->reply).object);
+  // ("neither": the clause keeps every place it fits.)
+  const auto* chosen = heard->reply ? std::get_if<language::Chosen>(&*heard->reply) : nullptr;
+  if (chosen == nullptr) return std::optional<ObjectId>();
+  return std::optional<ObjectId>(chosen->object);
 }
 
 Status TaskLearningAgent::Session::store_class_rule(const ClassRule& rule) {

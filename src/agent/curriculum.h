@@ -81,14 +81,19 @@ struct Curriculum {
   // The things the teacher said to leave (part_left, thing_left): not
   // things the agent failed to deal with.
   std::vector<ObjectId> left_by_teacher;
+  // The things the teacher had put somewhere for this time only ("the
+  // blanket goes on the sofa, its cold tonight"): where they are was said,
+  // and not learned.
+  std::vector<ObjectId> placed_this_time;
   std::vector<ObjectReport> objects;
   int goals_learned = 0;
   int rules_learned = 0;
   // The goal the last object was given, learned or remembered: what "socks
   // too" and "same again" mean.
   std::optional<GoalKey> last_goal;
-  // The kinds of place the teacher wants left open from now on ("leave the
-  // washer open from now on"): never closed by the norm.
+  // The places the teacher wants left open from now on ("leave the washer
+  // open from now on"), by door_key (agent/goal_repair.h): never closed by
+  // the norm.
   std::set<std::string> doors_left_open;
 
   // What comes next; `learning`: a teacher is teaching (else the agent

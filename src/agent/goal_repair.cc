@@ -5,6 +5,7 @@
 #include <map>
 
 #include "language/generation.h"
+#include "language/narration.h"
 #include "search/iterative_deepening.h"
 #include "util/text.h"
 
@@ -113,31 +114,51 @@ bool can_never_hold(MeaningFailure failure_kind) {
   return failure_kind == MeaningFailure::kAffordanceMismatch || failure_kind == MeaningFailure::kUnknownPredicate;
 }
 
-// Whether goals learned so far for receptacles of `category` end closed:
-// true if one does, false if some put things into it and none closes it,
-// nothing if none is about it. A goal that says to leave it open ("the
-// umbrella goes in the closet, leave it open so it can dry") is that
-// kind's own exception, and says nothing of other kinds.
-std::optional<bool> learned_closing(const World& world, const GoalMemory& learned, std::string_view category) {
+// Whether a goal's argument stands for `place`: its category, with every
+// property that told it apart where it was learned (the top drawer's goal
+// is not the bottom drawer's; a drawer's learned where there was one is
+// every drawer's).
+bool argument_fits(const World& world, const GoalTemplateArgument& argument, ObjectId place) {
+  const ObjectInfo& info = world.universe->info(place);
+  if (argument.object_of_interest || argument.category != info.category) return false;
+  return std::all_of(argument.properties.begin(), argument.properties.end(), [&](const std::string& p) {
+    return std::find(info.properties.begin(), info.properties.end(), p) != info.properties.end();
+  });
+}
+
+// Whether goals learned so far for `place` end closed: true if one does,
+// false if some put things into it and none closes it; with none about it,
+// true if one closes a look-alike (the middle drawer's goals close the top
+// drawer too), else nothing. A goal that says to leave a place open ("the
+// umbrella goes in the closet, leave it open so it can dry", "the top
+// drawer should stay open") is that place's own exception, and says
+// nothing of others.
+std::optional<bool> learned_closing(const World& world, const GoalMemory& learned, ObjectId place) {
   const std::string& in = world.domain->predicates[world.vocabulary.in].name;
   const std::string& closed = world.domain->predicates[world.vocabulary.closed].name;
+  const std::string& category = world.universe->info(place).category;
   std::optional<bool> verdict;
+  bool a_look_alike_closes = false;
   for (const GoalKnowledge& knowledge : learned.all()) {
     bool into = false, closes = false, left_open = false;
     for (const GoalTemplateLiteral& literal : knowledge.literals) {
       const bool its_door = literal.predicate == closed && literal.arguments.size() == 1 &&
-                            literal.arguments[0].category == category;
+                            argument_fits(world, literal.arguments[0], place);
+      a_look_alike_closes = a_look_alike_closes || (literal.positive && literal.predicate == closed &&
+                                                    literal.arguments.size() == 1 &&
+                                                    literal.arguments[0].category == category);
       if (!literal.positive) {
         left_open = left_open || its_door;
         continue;
       }
-      if (literal.predicate == in && literal.arguments.size() == 2 && literal.arguments[1].category == category)
+      if (literal.predicate == in && literal.arguments.size() == 2 && argument_fits(world, literal.arguments[1], place))
         into = true;
       closes = closes || its_door;
     }
     if (closes) return true;
     if (into && !left_open) verdict = false;
   }
+  if (!verdict && a_look_alike_closes) return true;
   return verdict;
 }
 
@@ -148,12 +169,12 @@ std::vector<ClosingToAdd> closings_to_complete(const World& world, const Goal& g
   const Vocabulary& v = world.vocabulary;
   std::vector<ClosingToAdd> out;
   for (ObjectId place : destinations(world, goal, object)) {
-    if (!world.state.holds(Fact(v.openable, {place})) || left_open.count(world.universe->info(place).category)) continue;
+    if (!world.state.holds(Fact(v.openable, {place})) || left_open.count(door_key(world, place))) continue;
     const Fact closed(v.closed, {place});
     // Closed or open, as said ("leave it open": not closed).
     const bool said = std::any_of(goal.literals.begin(), goal.literals.end(), [&](const Literal& l) { return l.fact == closed; });
     if (said) continue;
-    std::optional<bool> learned_verdict = learned_closing(world, learned, world.universe->info(place).category);
+    std::optional<bool> learned_verdict = learned_closing(world, learned, place);
     // Closed now: the agent will have opened it.
     const bool close = learned_verdict ? *learned_verdict : world.state.holds(closed);
     if (close) out.push_back(ClosingToAdd{place, !learned_verdict.has_value()});
@@ -350,6 +371,58 @@ std::string describe_repairs(const World& world, const AnalysedGoal& goal) {
   for (std::size_t i = 0; i < goal.closings.size(); ++i)
     out += std::string(out.empty() ? "" : "; ") + "added that " + language::noun_for(world, goal.closings[i]) +
            " is closed (" + (goal.closing_by_norm[i] ? "close what you opened" : "as the goals learned for it") + ")";
+  return out;
+}
+
+std::string door_key(const World& world, ObjectId place) {
+  const ObjectInfo& info = world.universe->info(place);
+  if (world.universe->with_category(info.category).size() < 2) return info.category;
+  std::string key;
+  for (const std::string& p : info.properties) key += p + " ";
+  return key + info.category;
+}
+
+std::vector<GoalKnowledge> goals_closing(const World& world, const GoalMemory& learned, ObjectId place,
+                                         const std::string& said) {
+  const std::string& in = world.domain->predicates[world.vocabulary.in].name;
+  const std::string& closed = world.domain->predicates[world.vocabulary.closed].name;
+  std::vector<GoalKnowledge> out;
+  for (const GoalKnowledge& g : learned.all()) {
+    auto into = std::find_if(g.literals.begin(), g.literals.end(), [&](const GoalTemplateLiteral& l) {
+      return l.positive && l.predicate == in && l.arguments.size() == 2 && argument_fits(world, l.arguments[1], place);
+    });
+    if (into == g.literals.end()) continue;
+    auto its_door = [&](const GoalTemplateLiteral& l) {
+      return l.predicate == closed && l.arguments.size() == 1 && argument_fits(world, l.arguments[0], place);
+    };
+    if (std::any_of(g.literals.begin(), g.literals.end(), [&](const GoalTemplateLiteral& l) { return l.positive && its_door(l); }))
+      continue;
+    GoalKnowledge closing = g;
+    const GoalTemplateArgument door = into->arguments[1];
+    std::erase_if(closing.literals, its_door);
+    closing.literals.push_back(GoalTemplateLiteral{closed, true, {door}});
+    closing.provenance.source += " (" + language::spoken_name(world, place) + " closed from then on, as said: " +
+                                 apprentice::quoted(said) + ")";
+    out.push_back(std::move(closing));
+  }
+  return out;
+}
+
+std::vector<GoalKnowledge> goals_leaving_open(const World& world, const GoalMemory& learned, ObjectId place,
+                                              const std::string& said) {
+  const std::string& closed = world.domain->predicates[world.vocabulary.closed].name;
+  auto closes_it = [&](const GoalTemplateLiteral& l) {
+    return l.positive && l.predicate == closed && l.arguments.size() == 1 && argument_fits(world, l.arguments[0], place);
+  };
+  std::vector<GoalKnowledge> out;
+  for (const GoalKnowledge& g : learned.all()) {
+    if (std::none_of(g.literals.begin(), g.literals.end(), closes_it)) continue;
+    GoalKnowledge open = g;
+    std::erase_if(open.literals, closes_it);
+    open.provenance.source += " (" + language::spoken_name(world, place) + " left open from then on, as said: " +
+                              apprentice::quoted(said) + ")";
+    out.push_back(std::move(open));
+  }
   return out;
 }
 

@@ -118,10 +118,27 @@ struct ClosingToAdd {
   ObjectId place = 0;
   bool by_norm = false;  // not from goals learned for it
 };
-// A kind of place in `left_open` (the teacher wants it left open) is never
-// closed so.
+// A place whose door_key is in `left_open` (the teacher wants it left
+// open) is never closed so.
 std::vector<ClosingToAdd> closings_to_complete(const World& world, const Goal& goal, ObjectId object,
                                                const GoalMemory& learned, const std::set<std::string>& left_open = {});
+// How a place is kept among the doors the teacher wants left open
+// (Curriculum::doors_left_open): its category, with the properties that
+// tell it apart where the world has several ("top drawer").
+std::string door_key(const World& world, ObjectId place);
+// "leave the top drawer open from now on": the goals `learned` that close
+// `place` (a goal learned for its category where there was one such place,
+// or for it by its properties), without that closing, each one's
+// provenance saying why, with the teacher's words `said`. What the session
+// learns again in their place.
+std::vector<GoalKnowledge> goals_leaving_open(const World& world, const GoalMemory& learned, ObjectId place,
+                                              const std::string& said);
+// "this one stays closed": the goals `learned` that put things in `place`
+// and do not close it after, with that closing (and without a wish to
+// leave it open), each one's provenance saying why. What the session
+// learns again in their place.
+std::vector<GoalKnowledge> goals_closing(const World& world, const GoalMemory& learned, ObjectId place,
+                                         const std::string& said);
 // The places `goal` puts `object` in or on (its positive on/in literals).
 std::vector<ObjectId> destinations(const World& world, const Goal& goal, ObjectId object);
 // `goal` with `closings` added.

@@ -102,11 +102,8 @@ class TaskLearningAgent::Session : private ActingHelp {
   // may fit the reply better), else the question's.
   void explain(const std::string& reason, const language::ReplyContext& context,
                std::vector<std::string> examples = {});
-  Status forget(const std::string& kind);
-  // "forget fruit" where no goal is known for such a kind: the rule about
-  // that class (agent/class_rule_knowledge.h), for good. Whether a rule was
-  // named (and something said).
-  Result<bool> forget_rule_named(const std::string& what);
+  // "forget X", as agent/forgetting.h decides it.
+  Status forget(const std::string& what);
   void say(const std::string& statement, Voice voice = Voice::kNarration);
   // Executes `action` in the simulator; once it is done, the instructor
   // sees it (Instructor::observe).
@@ -300,10 +297,13 @@ class TaskLearningAgent::Session : private ActingHelp {
   // by do_now (agent_dialogue.cc).
   TeachingSoFar so_far() const;
   void do_now(const std::vector<Action>& actions);
-  // "leave the washer open from now on": a lesson of its own (undo takes
-  // it back); the closing norm no longer closes those kinds of place, and
-  // the goals learned that close them are learned again leaving them open.
-  Status keep_open(const std::vector<ObjectId>& places, const std::string& text);
+  // A standing wish about doors, a lesson of its own (undo takes it back).
+  // `open` ("leave the washer open from now on"): the closing norm no
+  // longer closes those places, and the goals learned that close them are
+  // learned again leaving them open. Else ("this one stays closed"): they
+  // are no longer left open, and the goals that put things in them are
+  // learned again closing them.
+  Status keep_doors(const std::vector<ObjectId>& places, const std::string& text, bool open);
 };
 
 }  // namespace apprentice

@@ -31,6 +31,9 @@ bool left_by_teacher(const teaching::Curriculum& progress, ObjectId thing) {
 std::optional<std::string> why_thing(const TeachingSoFar& so_far, ObjectId thing) {
   const World& w = so_far.world;
   if (left_by_teacher(so_far.progress, thing)) return language::left_as_told(w, thing);
+  const std::vector<ObjectId>& for_now = so_far.progress.placed_this_time;
+  if (std::find(for_now.begin(), for_now.end(), thing) != for_now.end())
+    return language::placed_this_time_only(w, thing);
   const GoalKnowledge* known = goal_known_for(so_far, w.universe->info(thing).category);
   std::optional<Goal> goal = known ? instantiate_goal(w, *known, thing) : std::nullopt;
   if (!goal) return std::nullopt;
@@ -44,7 +47,7 @@ std::optional<std::string> why_thing(const TeachingSoFar& so_far, ObjectId thing
 std::string why_door(const TeachingSoFar& so_far, ObjectId place) {
   const World& w = so_far.world;
   const bool closed = w.state.holds(Fact(w.vocabulary.closed, {place}));
-  if (!closed && so_far.progress.doors_left_open.count(w.universe->info(place).category))
+  if (!closed && so_far.progress.doors_left_open.count(door_key(w, place)))
     return language::door_left_open_as_told(w, place);
   std::optional<std::pair<ObjectId, std::string>> left_open;
   for (ObjectId thing : w.universe->of_kind(ObjectKind::kItem)) {

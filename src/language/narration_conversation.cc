@@ -1,5 +1,6 @@
 #include "language/narration_conversation.h"
 
+#include <algorithm>
 #include <map>
 
 #include "language/narration.h"
@@ -141,9 +142,19 @@ std::vector<std::string> where_things_are(const World& w, std::string_view phras
   if (things.empty()) {
     std::vector<std::string> words = split_words(phrase);
     while (!words.empty() && is_determiner(words.front())) words.erase(words.begin());
+    // "where is that now": no thing named.
+    if (words.empty() || (words.size() == 1 && is_object_pronoun(words.front())))
+      return {"Which thing do you mean? Name it, for example \"where is the " +
+              (w.universe->of_kind(ObjectKind::kItem).empty()
+                   ? std::string("mug")
+                   : language::spoken_category(w, w.universe->of_kind(ObjectKind::kItem).front())) +
+              "?\"."};
     return {not_seen_message(join(words, " "), w)};
   }
   std::vector<std::string> said;
+  // Things of one kind at one place are said once: "Both slippers are on
+  // the shoe rack.", not the same sentence twice.
+  std::vector<std::pair<std::string, ObjectId>> done;
   for (ObjectId o : things) {
     if (said.size() == 3) break;
     if (w.state.holds(Fact(w.vocabulary.holding, {o}))) {
@@ -152,8 +163,18 @@ std::vector<std::string> where_things_are(const World& w, std::string_view phras
     }
     std::optional<ObjectId> at = place_of(w, o);
     if (!at) continue;
-    said.push_back(capitalize(spoken_name(w, o)) + " is " + std::string(relation_word(w, *at)) + " " +
-                   spoken_name(w, *at) + ".");
+    const std::string& kind = w.universe->info(o).category;
+    if (std::find(done.begin(), done.end(), std::pair{kind, *at}) != done.end()) continue;
+    done.emplace_back(kind, *at);
+    const auto alike = std::count_if(things.begin(), things.end(), [&](ObjectId other) {
+      return w.universe->info(other).category == kind && place_of(w, other) == at &&
+             spoken_name(w, other) == spoken_name(w, o);
+    });
+    const std::string where = std::string(relation_word(w, *at)) + " " + spoken_name(w, *at) + ".";
+    if (alike == 1) said.push_back(capitalize(spoken_name(w, o)) + " is " + where);
+    else
+      said.push_back((alike == 2 ? std::string("Both ") : "All " + std::to_string(alike) + " ") +
+                     spoken_plural(kind) + " are " + where);
   }
   if (said.empty()) return {"I don't know where " + std::string(phrase) + " is."};
   return said;
@@ -240,12 +261,13 @@ std::string door_left_open_as_told(const World& world, ObjectId place) {
   return capitalize(spoken_name(world, place)) + " is open: you told me to leave it open from now on.";
 }
 
-std::string will_leave_open(const World& world, const std::vector<ObjectId>& places,
-                            const std::vector<std::string>& kinds) {
+std::string will_keep_doors(const World& world, const std::vector<ObjectId>& places,
+                            const std::vector<std::string>& kinds, bool open) {
   std::vector<std::string> doors, things;
   for (ObjectId place : places) doors.push_back(spoken_name(world, place));
   for (const std::string& kind : kinds) things.push_back("the " + spoken_category(kind));
-  std::string out = "I will leave " + list_phrase(doors) + " open from now on";
+  std::string out = (open ? "I will leave " + list_phrase(doors) + " open" : "I will close " + list_phrase(doors)) +
+                    " from now on";
   if (!things.empty()) out += ", also after putting " + list_phrase(things) + (places.size() == 1 ? " in it" : " in them");
   return out + ".";
 }
@@ -285,6 +307,14 @@ std::string still_cannot_tell_which(std::string_view phrase) {
 
 std::string could_not_tell_which(std::string_view phrase) {
   return "I could not tell which " + std::string(phrase) + " you mean.";
+}
+
+std::string reply_set_aside(std::string_view said) { return "Then I leave " + apprentice::quoted(said) + " aside."; }
+
+std::string this_time_only_note() { return "This time only: I will not remember it as where that goes."; }
+
+std::string placed_this_time_only(const World& world, ObjectId thing) {
+  return "You told me to put " + spoken_name(world, thing) + " there this time only.";
 }
 
 std::string could_not_reach_llm(std::string_view failure, bool will_ask) {

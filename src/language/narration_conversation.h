@@ -137,11 +137,13 @@ std::string why_i_asked(const World& world, ObjectId thing, const Goal& proposed
 // "why is the washer open?", after "leave the washer open from now on":
 // "The washer is open: you told me to leave it open from now on."
 std::string door_left_open_as_told(const World& world, ObjectId place);
-// "leave the washer open from now on": "I will leave the washer open from
-// now on, also after putting the towel and the jeans in it." `kinds`: the
-// kinds whose goals closed it before (may be empty).
-std::string will_leave_open(const World& world, const std::vector<ObjectId>& places,
-                            const std::vector<std::string>& kinds);
+// A standing wish about doors, read back. `open`: "leave the washer open
+// from now on": "I will leave the washer open from now on, also after
+// putting the towel and the jeans in it."; else "this one stays closed":
+// "I will close the locker from now on, also after putting the headphones
+// in it." `kinds`: the kinds whose goals change with it (may be empty).
+std::string will_keep_doors(const World& world, const std::vector<ObjectId>& places,
+                            const std::vector<std::string>& kinds, bool open);
 // An undo of "forget mug": "I know again where the mug goes."
 std::string remember_again(std::string_view category);
 // Several rules fit what was named: "I have several rules about fruit: ...;
@@ -169,6 +171,15 @@ std::string says_what_becomes_of_others(const World& world, std::span<const Obje
 std::string still_cannot_tell_which(std::string_view phrase);
 // "I could not tell which mug you mean.": no usable choice was given.
 std::string could_not_tell_which(std::string_view phrase);
+// "Then I leave "the hook" aside.": none of the choices was meant, so the
+// reply the question came from (`said`) is not taken.
+std::string reply_set_aside(std::string_view said);
+// A goal said for this time only (GoalGiven::this_time_only): "This time
+// only: I will not remember it as where that goes."
+std::string this_time_only_note();
+// Why a thing is where the teacher had it put this time only: "You told me
+// to put the blanket there this time only."
+std::string placed_this_time_only(const World& world, ObjectId thing);
 
 // --- Goals and actions ------------------------------------------------------------
 

@@ -141,6 +141,9 @@ struct GoalGiven {
   // The goals the same reply gave other things, one each ("plates and forks
   // go in the dishwasher", asked about a plate: the fork's).
   std::vector<Goal> others = {};
+  // "just for tonight put the shaker in the locker": done now, never
+  // learned as where such things go (read_acts).
+  bool this_time_only = false;
 };
 
 struct ActionGiven {
@@ -183,6 +186,10 @@ struct Command {
   // kDo: the doors the teacher wants left open from now on ("leave the
   // washer open from now on"); `actions` opens those closed now.
   std::vector<ObjectId> left_open = {};
+  // kDo: the doors the teacher wants closed from now on ("this one stays
+  // closed", "the bottom drawer should always be shut"); `actions` closes
+  // those open now.
+  std::vector<ObjectId> kept_closed = {};
   // kWhy: asked about a question the agent asked ("why did you ask if the
   // blanket goes with clean diapers?", "why do you keep asking about
   // diapers"), not about where things went.

@@ -351,6 +351,13 @@ ReplyActs read(const Grounder& grounder, const World& world, const ReplyContext&
       correcting = true;
       continue;
     }
+    // "put it back, shelf was right": the place confirms the undo.
+    if (!before.empty() && confirms_the_old_place(s.words)) continue;
+    // "put it back, it leaks": why, said after an undo, answers nothing.
+    if (!before.empty() && answer.empty() && is_remark(grounder, world, s.words)) {
+      out.notes.push_back("I took " + quote(s.text) + " as a reason, not an instruction.");
+      continue;
+    }
     if (ends_session(s.words, context.asked)) {
       out.acts = {Command{Command::Kind::kQuit, "", {}, {}}};
       return out;
@@ -376,6 +383,25 @@ ReplyActs read(const Grounder& grounder, const World& world, const ReplyContext&
         const ObjectId place = opening.arguments()[0];
         keep.left_open.push_back(place);
         if (world.state.holds(Fact(world.vocabulary.closed, {place}))) keep.actions.push_back(opening);
+      }
+      after.push_back(std::move(keep));
+      continue;
+    }
+    // "this one stays closed, the cat gets in there": a door the teacher
+    // wants closed from now on, closed now if it is open. ("this one" is
+    // the place the reply closed or named before it.)
+    if (!door_actions.empty() && !door_actions.back().empty() && !door_actions.back().front().arguments().empty())
+      wish.recent_place = door_actions.back().front().arguments()[0];
+    if (auto closings = doors_kept_closed(grounder, world, wish, s.words)) {
+      Command keep{Command::Kind::kDo, s.text, {}, {}};
+      for (const Action& closing : *closings) {
+        const ObjectId place = closing.arguments()[0];
+        keep.kept_closed.push_back(place);
+        // ("shut the locker. this one stays closed": closed once.)
+        const bool said_before = std::any_of(door_actions.begin(), door_actions.end(), [&](const std::vector<Action>& a) {
+          return std::find(a.begin(), a.end(), closing) != a.end();
+        });
+        if (!said_before && !world.state.holds(Fact(world.vocabulary.closed, {place}))) keep.actions.push_back(closing);
       }
       after.push_back(std::move(keep));
       continue;
@@ -658,8 +684,55 @@ ReplyActs read(const Grounder& grounder, const World& world, const ReplyContext&
 
 }  // namespace acts
 
+namespace {
+
+// Whether `lower` has `phrase` at `at` as whole words.
+bool phrase_at(const std::string& lower, std::size_t at, std::string_view phrase) {
+  auto word_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '\''; };
+  if (lower.compare(at, phrase.size(), phrase) != 0) return false;
+  if (at > 0 && word_char(lower[at - 1])) return false;
+  const std::size_t end = at + phrase.size();
+  return end == lower.size() || !word_char(lower[end]);
+}
+
+// "just for tonight put the shaker in the locker", "the blanket goes on the
+// sofa, its cold tonight": `text` without the words that say a placement
+// holds this time only, and those words; nullopt when it has none.
+std::optional<std::pair<std::string, std::string>> without_this_time_only(std::string_view text) {
+  // Longest first, so that "just for tonight" goes whole.
+  static constexpr std::array<std::string_view, 16> kOneOff = {
+      "just for tonight", "just for today", "just for now", "just this once", "just this time", "for tonight",
+      "for today", "for the night", "for now", "this once", "this time", "until tomorrow", "till tomorrow",
+      "tonight", "for a bit", "for a while"};
+  std::string out(text);
+  std::string said;
+  for (std::string_view phrase : kOneOff) {
+    std::string lower = to_lower(out);
+    for (std::size_t at = lower.find(phrase); at != std::string::npos; at = lower.find(phrase, at + 1)) {
+      if (!phrase_at(lower, at, phrase)) continue;
+      if (said.empty()) said = out.substr(at, phrase.size());
+      out.erase(at, phrase.size());
+      lower.erase(at, phrase.size());
+    }
+  }
+  if (said.empty()) return std::nullopt;
+  return std::pair{out, said};
+}
+
+}  // namespace
+
 ReplyActs read_acts(const Grounder& grounder, const World& world, const ReplyContext& context, std::string_view text) {
-  ReplyActs out = acts::read(grounder, world, context, text);
+  // A goal said for this time only is read without the words that say so,
+  // and marked; they change no other reading (a task "for today" is the
+  // task).
+  const auto one_off = context.asked == Asked::kTask ? std::nullopt : without_this_time_only(text);
+  ReplyActs out = acts::read(grounder, world, context, one_off ? std::string_view(one_off->first) : text);
+  bool for_now = false;
+  if (one_off)
+    for (Reply& act : out.acts)
+      if (auto* given = std::get_if<GoalGiven>(&act)) for_now = given->this_time_only = true;
+  if (for_now) out.notes.push_back("I took " + acts::quote(one_off->second) + " as this time only.");
+  if (one_off && !for_now) out = acts::read(grounder, world, context, text);
   // A task or part named with another verb than the agent's says how it
   // was taken ("I took \"clean up\" as tidying.").
   for (const Reply& act : out.acts) {

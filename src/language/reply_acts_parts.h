@@ -40,6 +40,9 @@ bool has(const Words& words, std::initializer_list<std::string_view> phrase);
 // "undo", "scratch that", "go back one", "that was wrong": how many undos
 // (0: not an undo).
 int undos(const Words& said);
+// "shelf was right", "the bottom was right before": the place a thing was
+// at, said right, which confirms an undo said with it.
+bool confirms_the_old_place(const Words& said);
 
 // Leading marker words of a correction, and whether they are strong ("no
 // wait", "oops", "I meant") or could be a filler ("nah", "no").
@@ -81,6 +84,13 @@ std::optional<std::vector<Action>> door_action(const Grounder& grounder, const W
 // first argument is a door); nullopt when the words say no such thing.
 std::optional<std::vector<Action>> doors_left_open(const Grounder& grounder, const World& world,
                                                    const ReplyContext& context, const Words& said);
+// A door the teacher wants closed from now on: "this one stays closed",
+// "the bottom drawer should always be shut", "keep the cabinet closed from
+// now on", "always close the toy box". The closings of those doors
+// (door_action's reading of "close X"); nullopt when the words say no such
+// thing (a closing said for now, "close the drawer", is door_action's).
+std::optional<std::vector<Action>> doors_kept_closed(const Grounder& grounder, const World& world,
+                                                     const ReplyContext& context, const Words& said);
 
 // --- The answer's words (reply_answer_words.cc) ---------------------------
 

@@ -47,6 +47,21 @@ std::vector<Segment> segments(std::string_view text) {
     else current.push_back(c);
   }
   flush();
+  // "the dirty towel goes in the hamper not on the hook": where a thing does
+  // not go, said after where it goes, is a segment of its own, as with a
+  // comma before it. (Not "does not go", "is not in".)
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    const Words& w = out[k].words;
+    for (std::size_t i = 2; i + 1 < w.size(); ++i)
+      if (w[i] == "not" && is_one_of(w[i + 1], {"in", "on", "into", "onto", "inside", "the", "a", "my", "your"}) &&
+          !is_copula(w[i - 1]) && !is_auxiliary(w[i - 1]) && !is_one_of(w[i - 1], {"do", "does", "did"})) {
+        Words first(w.begin(), w.begin() + static_cast<std::ptrdiff_t>(i));
+        Words second(w.begin() + static_cast<std::ptrdiff_t>(i), w.end());
+        out[k] = {quoted_words(first), first};
+        out.insert(out.begin() + static_cast<std::ptrdiff_t>(k + 1), Segment{quoted_words(second), second});
+        break;
+      }
+  }
   // "leave the rake where it is and tell me what's left": a request to be
   // told something is a segment of its own.
   for (std::size_t k = 0; k < out.size(); ++k) {
@@ -83,11 +98,31 @@ bool has(const Words& words, std::initializer_list<std::string_view> phrase) {
 
 // "undo", "scratch that", "go back one", "that was wrong": how many undos
 // (0: not an undo).
+// "put it back", "move them back where they were": the last thing moved,
+// back where it was, with no place said after "back".
+bool puts_it_back(const Words& words) {
+  const auto back = std::find(words.begin(), words.end(), "back");
+  if (back == words.end() || back == words.begin()) return false;
+  const Words before(words.begin(), back);
+  if (!is_one_of(before.front(), {"put", "move", "bring", "take"}) || before.size() > 3) return false;
+  if (!std::all_of(before.begin() + 1, before.end(),
+                   [](const std::string& w) { return is_object_pronoun(w) || is_one_of(w, {"that", "those", "them"}); }))
+    return false;
+  return std::all_of(back + 1, words.end(), [](const std::string& w) {
+    return is_one_of(w, {"where", "it", "they", "was", "were", "before", "to", "how", "please", "now"});
+  });
+}
+
 int undos(const Words& said) {
   Words words;
   for (const std::string& w : said)
     if (!is_marker(w) && !is_interjection(w)) words.push_back(w);
   if (words.empty()) return 0;
+  // ("put it back, it leaks": with why after it.)
+  const auto comma = std::find(words.begin(), words.end(), ",");
+  const bool why_after = comma != words.end() && comma + 1 != words.end() &&
+                         is_one_of(*(comma + 1), {"it", "its", "it's", "they", "theyre", "they're", "that", "thats"});
+  if (puts_it_back(why_after ? Words(words.begin(), comma) : words)) return 1;
   bool all = std::all_of(words.begin(), words.end(), [](const std::string& w) {
     return is_one_of(w, {"undo", "scratch", "that", "take", "back", "go", "one", "was", "is", "wrong", "the", "last",
                          "it", "not", "right", "mistake", "my", "bad", "step", "answer", "revert"});
@@ -97,6 +132,17 @@ int undos(const Words& said) {
         has(words, {"go", "back"}) || has(words, {"wrong"}) || has(words, {"mistake"}) || has(words, {"revert"})))
     return 0;
   return std::max<int>(1, static_cast<int>(std::count(words.begin(), words.end(), "undo")));
+}
+
+bool confirms_the_old_place(const Words& said) {
+  // (Markers only before the place: "right" ends the phrase.)
+  std::size_t from = 0;
+  while (from < said.size() && (is_marker(said[from]) || is_interjection(said[from]))) ++from;
+  const Words words(said.begin() + static_cast<std::ptrdiff_t>(from), said.end());
+  if (words.size() < 2 || words.size() > 6) return false;
+  const auto was = std::find_if(words.begin(), words.end(), [](const std::string& w) { return is_one_of(w, {"was", "were"}); });
+  if (was == words.end() || was + 1 == words.end() || *(was + 1) != "right") return false;
+  return std::none_of(words.begin(), words.end(), [](const std::string& w) { return is_negation(w); });
 }
 
 Marker marker(const Words& words) {
@@ -205,6 +251,14 @@ std::optional<Command> question(const Grounder& grounder, const World& world, co
                            "suggesting"});
     });
     return why;
+  }
+  // "does the dirty towel still go in the hamper?": where it goes, and
+  // where that came from, as "why" answers it.
+  if (is_one_of(first, {"does", "do", "should", "will"}) && words.size() > 2 &&
+      std::any_of(words.begin() + 1, words.end(), [](const std::string& w) { return is_verb_of_going(w); })) {
+    std::vector<ObjectId> things = things_asked_why(grounder, world, words);
+    if (!things.empty() && world.universe->info(things.front()).kind == ObjectKind::kItem)
+      return Command{Command::Kind::kWhy, join(words, " "), things, {}};
   }
   if (first == "where" && words.size() > 1 &&
       is_one_of(words[1], {"is", "are", "did", "does", "do", "has", "have", "was", "were", "would", "had"})) {
@@ -442,11 +496,35 @@ std::optional<std::vector<Action>> door_action(const Grounder& grounder, const W
   return actions;
 }
 
-std::optional<std::vector<Action>> doors_left_open(const Grounder& grounder, const World& world,
-                                                   const ReplyContext& context, const Words& said) {
+namespace {
+
+// The words of a wish about a door, without what leads into it ("oh and
+// please, ...").
+Words wish_words(const Words& said) {
   Words words = without_leading_connectives(without_interjections(said));
   while (!words.empty() && (is_marker(words.front()) || is_one_of(words.front(), {"please", "pls", "also", "just"})))
     words.erase(words.begin());
+  return words;
+}
+
+// The doors a wish names by `place` ("the washer", "it": the place named
+// last), as door_action reads "`verb` `place`"; nullopt when none.
+std::optional<std::vector<Action>> wished_doors(const Grounder& grounder, const World& world,
+                                                const ReplyContext& context, const std::string& verb,
+                                                const Words& place) {
+  if (place.empty()) return std::nullopt;
+  ReplyContext as_step = context;
+  as_step.asked = Asked::kTaskStep;
+  Words said = {verb};
+  said.insert(said.end(), place.begin(), place.end());
+  return door_action(grounder, world, as_step, said);
+}
+
+}  // namespace
+
+std::optional<std::vector<Action>> doors_left_open(const Grounder& grounder, const World& world,
+                                                   const ReplyContext& context, const Words& said) {
+  Words words = wish_words(said);
   if (words.size() < 2) return std::nullopt;
   const bool standing = has(words, {"from", "now", "on"}) || has(words, {"always"}) || has(words, {"anymore"}) ||
                         has(words, {"any", "more"}) || has(words, {"for", "good"}) || has(words, {"permanently"}) ||
@@ -487,12 +565,52 @@ std::optional<std::vector<Action>> doors_left_open(const Grounder& grounder, con
   std::erase_if(place, [](const std::string& w) {
     return is_one_of(w, {"left", "kept", "always", "anymore", "now", "from", "on", "again", "please"});
   });
-  if (place.empty()) return std::nullopt;
-  ReplyContext as_step = context;
-  as_step.asked = Asked::kTaskStep;  // "it": the place named last
-  Words open_it = {"open"};
-  open_it.insert(open_it.end(), place.begin(), place.end());
-  return door_action(grounder, world, as_step, open_it);
+  return wished_doors(grounder, world, context, "open", place);
+}
+
+std::optional<std::vector<Action>> doors_kept_closed(const Grounder& grounder, const World& world,
+                                                     const ReplyContext& context, const Words& said) {
+  Words words = wish_words(said);
+  if (words.size() < 2) return std::nullopt;
+  auto closed_at = [&](std::size_t from) {
+    return static_cast<std::size_t>(
+        std::find_if(words.begin() + static_cast<std::ptrdiff_t>(from), words.end(),
+                     [](const std::string& w) { return is_one_of(w, {"closed", "shut", "close"}); }) -
+        words.begin());
+  };
+  if (closed_at(0) >= words.size()) return std::nullopt;
+  const bool stays = std::any_of(words.begin(), words.end(), [](const std::string& w) {
+    return is_one_of(w, {"stay", "stays", "remain", "remains"});
+  });
+  const bool standing = stays || has(words, {"from", "now", "on"}) || has(words, {"always"}) ||
+                        has(words, {"every", "time"}) || has(words, {"for", "good"}) ||
+                        has(words, {"all", "the", "time"}) || has(words, {"in", "the", "future"});
+  if (!standing) return std::nullopt;
+  Words place;
+  if (words.front() == "always") words.erase(words.begin());
+  if (is_one_of(words.front(), {"keep", "leave"})) {
+    // "keep the cabinet closed from now on".
+    place.assign(words.begin() + 1, words.begin() + static_cast<std::ptrdiff_t>(closed_at(1)));
+  } else if (is_one_of(words.front(), {"close", "shut"})) {
+    // "always close the toy box", "shut it every time".
+    place.assign(words.begin() + 1, words.end());
+  } else {
+    // "this one stays closed", "the bottom drawer should always be shut".
+    const auto verb = std::find_if(words.begin(), words.end(), [](const std::string& w) {
+      return is_one_of(w, {"stay", "stays", "remain", "remains", "should", "must", "needs", "need", "has", "is",
+                           "always"});
+    });
+    if (verb == words.begin() || verb == words.end()) return std::nullopt;
+    place.assign(words.begin(), verb);
+  }
+  std::erase_if(place, [](const std::string& w) {
+    return is_one_of(w, {"always", "from", "now", "on", "every", "time", "again", "please", "for", "good", "all", "the",
+                         "in", "future"});
+  });
+  // "this one", "that one": the place named last.
+  if (place == Words{"this", "one"} || place == Words{"that", "one"} || place == Words{"this"} || place == Words{"that"})
+    place = {"it"};
+  return wished_doors(grounder, world, context, "close", place);
 }
 
 }  // namespace apprentice::language::acts

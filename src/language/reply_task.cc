@@ -222,8 +222,13 @@ TaskNamed task_named(const ReplyInput& in, const std::string& verb, const std::s
                            return std::find(parts.begin(), parts.end(), w) != parts.end();
                          });
     };
+    auto names_a_kind_here = [&](const std::string& w) {
+      return std::any_of(in.world.universe->objects().begin(), in.world.universe->objects().end(),
+                         [&](const ObjectInfo& o) { return name_parts(o.category).back() == w; });
+    };
     auto roomlike = [&](const std::string& w) {
-      if (is_one_of(w, {"in", "here", "this", "room", "place", "it", "ugh", "um", "lol", "hmm", "oh", "so"})) return true;
+      if (is_one_of(w, {"in", "here", "this", "one", "room", "place", "it", "ugh", "um", "lol", "hmm", "oh", "so"}))
+        return true;
       if (lexicon.has_wordnet() && !lexicon.knows(w)) return true;
       std::vector<std::string> one{w};
       if (!lexicon.kinds_under("room", one).empty()) return true;
@@ -232,8 +237,12 @@ TaskNamed task_named(const ReplyInput& in, const std::string& verb, const std::s
       if (w.size() >= 3 && location.size() > w.size() && location.ends_with(w) &&
           location.find_first_of(" -") == std::string::npos)
         return true;
-      // "the laundry" in a laundry room is the washing; "the workshop" of
-      // a bike workshop stays as said.
+      // "my office" of a home office, "the gym" of a garage gym: the last
+      // word of the location's name is the room it names, when no thing
+      // here is called so (a gym bag is a bag).
+      const Words location_words = split_words(location);
+      if (location_words.size() > 1 && location_words.back() == w && !names_a_kind_here(w)) return true;
+      // "the laundry" in a laundry room is the washing.
       if (names_a_thing_here(w) || names_location(w, in)) return false;
       return std::any_of(kRoomlikeClasses.begin(), kRoomlikeClasses.end(),
                          [&](std::string_view c) { return !lexicon.kinds_under(c, one).empty(); });

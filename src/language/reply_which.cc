@@ -41,9 +41,25 @@ bool empty_word(std::string_view w) {
                        "standing", "over", "there", "here"});
 }
 
-}  // namespace
+// "neither", "no", "never mind", "skip it", "leave it": none of the things
+// offered.
+bool declines(const std::vector<std::string>& said) {
+  std::vector<std::string> words;
+  for (const std::string& w : said)
+    if (w != "," && !is_filler(w)) words.push_back(w);
+  if (words.empty()) return false;
+  if (is_one_of(words.front(), {"neither", "none", "no", "nope", "nah", "nevermind"})) return true;
+  for (std::size_t i = 0; i + 1 < words.size(); ++i) {
+    const std::string& a = words[i];
+    const std::string& b = words[i + 1];
+    if ((a == "never" && b == "mind") || (is_one_of(a, {"forget", "skip", "leave"}) && is_one_of(b, {"it", "that", "them"})))
+      return true;
+  }
+  return false;
+}
 
-Reply read_which(const ReplyInput& in) {
+// The choice the words name (read_which without a decline).
+Reply choice_named(const ReplyInput& in) {
   const World& world = in.world;
   const std::vector<ObjectId>& choices = in.context.choices;
   if (choices.empty()) return unusable(in, Problem{"I have nothing to choose from.", std::nullopt});
@@ -151,6 +167,17 @@ Reply read_which(const ReplyInput& in) {
                                 std::nullopt});
   if (kept.size() == 1) return Chosen{kept.front()};
   return Ambiguous{join(content, " "), kept, say_which_question(world, kept)};
+}
+
+}  // namespace
+
+Reply read_which(const ReplyInput& in) {
+  Reply chosen = choice_named(in);
+  if (std::holds_alternative<Chosen>(chosen) || std::holds_alternative<Ambiguous>(chosen)) return chosen;
+  // Declining every choice is a "no": the caller sets aside what the
+  // question came from.
+  if (declines(in.words)) return YesNo{false};
+  return chosen;
 }
 
 }  // namespace apprentice::language

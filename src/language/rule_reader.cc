@@ -303,8 +303,16 @@ class SentenceReader {
       // Words that name no place here are still a place when a determiner
       // says so ("in the attic") or no other preposition follows.
       if (places.empty() && !is_determiner(place_words.front()) && preposition_follows(words, end)) continue;
-      const Words class_part = class_words(words, start, p);
+      Words class_part = class_words(words, start, p);
       const std::string text = join(Words(words.begin() + static_cast<long>(start), words.begin() + static_cast<long>(end)), " ");
+      // "newspapers dont go in the magazine rack": where things do not go
+      // is no clause; "they", in the clause after, are those things.
+      if (without_negation(class_part)) {
+        negated_class_ = class_part;
+        return next;
+      }
+      if (class_part.size() == 1 && is_one_of(class_part[0], {"they", "those", "these", "them"}) && !negated_class_.empty())
+        class_part = negated_class_;
       if (class_part.empty()) {
         reading_.not_understood.push_back(text);
       } else if (places.empty()) {
@@ -325,6 +333,19 @@ class SentenceReader {
         meaningful.push_back(w);
     if (!meaningful.empty()) reading_.not_understood.push_back(join(rest, " "));
     return words.size();
+  }
+
+  // Whether the class part ends with a negation among its linking words
+  // ("newspapers do not", "bananas never"); if so, `part` without them.
+  static bool without_negation(Words& part) {
+    std::size_t end = part.size();
+    bool negated = false;
+    while (end > 0 && (is_linking_word(part[end - 1]) || is_negation(part[end - 1]))) {
+      negated = negated || is_negation(part[end - 1]);
+      --end;
+    }
+    if (negated) part.resize(end);
+    return negated;
   }
 
   static bool preposition_follows(const Words& words, std::size_t from) {
@@ -387,10 +408,21 @@ class SentenceReader {
     clause.text = text;
     clause.relation = relation;
     clause.places = std::move(places);
-    const std::optional<Words> class_part = class_phrase(said_part);
+    std::optional<Words> class_part = class_phrase(said_part);
     if (!class_part) {
       reading_.not_understood.push_back(text);
       return;
+    }
+    // "slippers by the door": where the things are now is no part of their
+    // class; it is said back as not followed.
+    for (std::size_t i = 1; i + 1 < class_part->size(); ++i) {
+      const Words& w = *class_part;
+      if (!is_one_of(w[i], {"by", "near", "beside", "behind", "under", "underneath", "outside", "around", "from"}) ||
+          w[i - 1] == "made" || !is_determiner(w[i + 1]))
+        continue;
+      reading_.not_understood.push_back(join(Words(w.begin() + static_cast<long>(i), w.end()), " "));
+      class_part->resize(i);
+      break;
     }
     const std::vector<Words> parts = split_classes(*class_part);
     if (parts.size() == 1) clause.thing = particular_thing(parts.front());
@@ -432,6 +464,17 @@ class SentenceReader {
         break;
       }
     auto drop_front = [&](std::size_t n) { words.erase(words.begin(), words.begin() + static_cast<long>(n)); };
+    // "just so you know for next time, all the books ...": a part before a
+    // comma in which the speaker or the listener is named frames the
+    // sentence; it names no things.
+    for (auto comma = std::find(words.begin(), words.end(), ","); comma != words.end();
+         comma = std::find(words.begin(), words.end(), ",")) {
+      if (std::none_of(words.begin(), comma, [](const std::string& w) {
+            return is_one_of(w, {"you", "i", "we", "me", "us", "ya", "im", "i'm", "youre", "you're"});
+          }))
+        break;
+      words.erase(words.begin(), comma + 1);
+    }
     for (bool more = true; more && !words.empty();) {
       more = false;
       // "i already said", "i meant", "i think": what the teacher says of
@@ -483,6 +526,7 @@ class SentenceReader {
   std::optional<ObjectId> last_place_;
   std::optional<ObjectId> there_;  // what "there" names
   std::vector<RuleClass> clauses_classes_;  // every class read so far: what "ones" refers to
+  Words negated_class_;  // the class of the last clause said not to go somewhere: what "they" is after it
 };
 
 }  // namespace
@@ -497,6 +541,15 @@ std::optional<RuleReading> read_rule(const World& world, const Lexicon& lexicon,
     for (std::size_t i = 0; i + 2 < sentence.size(); ++i)
       goal_statement = goal_statement || starts_with(sentence, i, {"the", "goal", "is"});
     if (goal_statement) continue;
+    // "just for tonight stick the shaker in the locker": what holds this
+    // time only is no rule (the reply reader reads it as a goal for now).
+    bool this_time = false;
+    for (std::size_t i = 0; i < sentence.size(); ++i)
+      this_time = this_time || is_one_of(sentence[i], {"tonight", "today"}) ||
+                  starts_with(sentence, i, {"for", "now"}) || starts_with(sentence, i, {"this", "time"}) ||
+                  starts_with(sentence, i, {"this", "once"}) || starts_with(sentence, i, {"till", "tomorrow"}) ||
+                  starts_with(sentence, i, {"until", "tomorrow"});
+    if (this_time) continue;
     SentenceReader reader(world, lexicon, object_of_interest, there, reading);
     reader.read(sentence);
   }

@@ -55,6 +55,15 @@ class GoalRepair : public ::testing::Test {
     return analyse_goals(*understanding_, world(), id(object), candidates, learned, options);
   }
 
+  // Learns `g`, given to `object`, as the goal of its kind.
+  void learn_for_its_kind(GoalMemory& learned, const char* object, const Goal& g) const {
+    auto k = generalize_goal(world(), GoalKey{"tidy kitchen", "store", world().universe->info(id(object)).category,
+                                              "counter"},
+                             id(object), g, Provenance{object, "instructor"});
+    ASSERT_TRUE(k.has_value());
+    learned.add(*k);
+  }
+
   static Scenario* kitchen_;
   static Understanding* understanding_;
 };
@@ -114,6 +123,47 @@ TEST_F(GoalRepair, ClosingFollowsTheGoalsLearnedForThatKindOfReceptacle) {
   GoalRepairOptions no_close;
   no_close.close = false;
   EXPECT_EQ(analyse("ketchup1", fridge, no_close).goals[0].goal->literals.size(), 1u);
+}
+
+// "leave the fridge open from now on": the goals that close the fridge are
+// learned again without that closing, saying why; a goal that closes
+// another place is not touched, and one that leaves the fridge alone is
+// not learned again.
+TEST_F(GoalRepair, AGoalLeavingADoorOpenDropsOnlyThatDoorsClosing) {
+  GoalMemory learned;
+  auto learn = [&](const char* object, const Goal& g) { learn_for_its_kind(learned, object, g); };
+  learn("milk1", goal({fact("in", {id("milk1"), id("fridge1")}), fact("closed", {id("fridge1")})}));
+  learn("ketchup1", goal({fact("in", {id("ketchup1"), id("fridge1")})}));
+  const std::string pantry_kind = world().universe->info(id("cereal-box1")).category;
+  learn("cereal-box1", goal({fact("in", {id("cereal-box1"), id("pantry1")}), fact("closed", {id("pantry1")})}));
+  const std::vector<GoalKnowledge> open =
+      goals_leaving_open(world(), learned, id("fridge1"), "leave the fridge open from now on");
+  ASSERT_EQ(open.size(), 1u);
+  EXPECT_EQ(open[0].key.category, world().universe->info(id("milk1")).category);
+  ASSERT_EQ(open[0].literals.size(), 1u);
+  EXPECT_EQ(open[0].literals[0].predicate, "in");
+  EXPECT_THAT(open[0].provenance.source, HasSubstr("fridge left open from then on"));
+  EXPECT_THAT(open[0].provenance.source, HasSubstr("leave the fridge open from now on"));
+  EXPECT_TRUE(goals_leaving_open(world(), learned, id("dishwasher1"), "leave it open").empty());
+  EXPECT_EQ(goals_leaving_open(world(), learned, id("pantry1"), "leave it open").at(0).key.category, pantry_kind);
+}
+
+// "the fridge stays closed from now on": the goals that put things in the
+// fridge and leave it open are learned again closing it; one that closes
+// it already, or is about another place, is not.
+TEST_F(GoalRepair, AGoalKeptClosedGainsThatDoorsClosing) {
+  GoalMemory learned;
+  auto learn = [&](const char* object, const Goal& g) { learn_for_its_kind(learned, object, g); };
+  learn("milk1", goal({fact("in", {id("milk1"), id("fridge1")}), fact("closed", {id("fridge1")})}));
+  learn("ketchup1", goal({fact("in", {id("ketchup1"), id("fridge1")})}));
+  learn("cereal-box1", goal({fact("in", {id("cereal-box1"), id("pantry1")})}));
+  const std::vector<GoalKnowledge> closing = goals_closing(world(), learned, id("fridge1"), "the fridge stays closed");
+  ASSERT_EQ(closing.size(), 1u);
+  EXPECT_EQ(closing[0].key.category, "ketchup");
+  ASSERT_EQ(closing[0].literals.size(), 2u);
+  EXPECT_EQ(closing[0].literals[1].predicate, "closed");
+  EXPECT_TRUE(closing[0].literals[1].positive);
+  EXPECT_THAT(closing[0].provenance.source, HasSubstr("closed from then on"));
 }
 
 TEST_F(GoalRepair, AGoalMustMoveTheObjectAndBeReachable) {

@@ -7,30 +7,15 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "common/paths.h"
-#include "common/scratch.h"
-#include "process.h"
+#include "fresh_users_fixture.h"
 
 namespace apprentice {
 namespace {
 
-using testing::Process;
 using ::testing::HasSubstr;
 using ::testing::Not;
 
-std::string world(const char* file) { return testing::source_path(std::string("tests/agent/data/fresh-users/") + file); }
-
-class FreshUsers : public testing::ScratchTest {
- protected:
-  // Teaches `file` with `replies` typed in turn, keeping what was taught in
-  // `store` (here); the whole transcript.
-  std::string teach(const char* file, std::vector<std::string> replies, const char* store = "store.sqlite") {
-    Process run({APPRENTICE_BINARY, "teach", "--scenario", world(file), "--knowledge", (dir_ / store).string()});
-    EXPECT_TRUE(run.write(testing::typed_lines(replies)));
-    run.wait();
-    return run.out();
-  }
-};
+class FreshUsers : public testing::FreshUserTeaching {};
 
 // The mudroom's first parts, as its teacher taught them.
 std::vector<std::string> mudroom_start() {

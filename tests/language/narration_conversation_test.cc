@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "language/generation.h"
 #include "language/narration_steps.h"
 #include "language/narration_summary.h"
 
@@ -73,6 +74,28 @@ TEST(NarrationConversation, WhereThingsAreSaysEachOrWhyNot) {
   for (ObjectId o : w.universe->of_kind(ObjectKind::kItem)) many.push_back(o);
   ASSERT_GT(many.size(), 3u);
   EXPECT_EQ(where_things_are(w, "everything", many).size(), 3u);
+  // "where is that now": no thing named, asked back by name (it was "I
+  // don't see a  here.").
+  const std::vector<std::string> that = where_things_are(w, "that", {});
+  ASSERT_EQ(that.size(), 1u);
+  EXPECT_THAT(that.front(), ::testing::StartsWith("Which thing do you mean? Name it, for example \"where is the "));
+}
+
+// Two things of one kind at one place are said once (a fresh user's
+// "where'd the sneakers end up" got "The sneaker is in the locker." twice).
+TEST(NarrationConversation, ThingsOfOneKindAtOnePlaceAreSaidTogether) {
+  const World& w = kitchen30().world;
+  std::vector<ObjectId> pair;
+  for (ObjectId o : w.universe->of_kind(ObjectKind::kItem))
+    if (w.universe->with_category(w.universe->info(o).category).size() == 2 &&
+        place_of(w, o) == place_of(w, w.universe->with_category(w.universe->info(o).category).back()))
+      pair.push_back(o);
+  if (pair.empty()) GTEST_SKIP() << "the kitchen has no two things of one kind at one place";
+  const std::string kind = w.universe->info(pair.front()).category;
+  std::vector<ObjectId> both(w.universe->with_category(kind).begin(), w.universe->with_category(kind).end());
+  const std::vector<std::string> said = where_things_are(w, kind, both);
+  ASSERT_EQ(said.size(), 1u);
+  EXPECT_THAT(said.front(), ::testing::StartsWith("Both ")) << said.front();
 }
 
 TEST(NarrationConversation, ARefusedReplyEndsInOnePeriodAndOffersTwoExamples) {

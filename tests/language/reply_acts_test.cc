@@ -259,6 +259,96 @@ TEST_F(ReplyActsTest, TheSameUndoSaidTwiceInOneReplyIsOneUndo) {
   EXPECT_EQ(acts(c, "undo, undo"), "command undo | command undo");
 }
 
+// Found by fresh users (stops 39 and 40): "no wait put it back, it leaks.
+// shelf was right", said after a correction moved the water bottle, began
+// a part "put back what is on the shelves"; "hmm no put it back, bottom was
+// right" likewise. Putting the last thing back is an undo, and the place
+// that "was right" confirms it; a place said after "back" is still an
+// answer.
+TEST_F(ReplyActsTest, PuttingItBackIsAnUndo) {
+  ReplyContext step;
+  step.asked = Asked::kTaskStep;
+  step.last_goal = ReplyContext::LastGoal{
+      id("comb1"), Goal({Literal{Fact(world().vocabulary.in, {id("comb1"), id("drawer1")}), true}})};
+  EXPECT_EQ(acts(step, "no wait put it back, it leaks. shelf was right"), "command undo");
+  EXPECT_EQ(acts(step, "hmm no put it back, bottom was right"), "command undo");
+  EXPECT_EQ(acts(step, "put it back where it was"), "command undo");
+  EXPECT_EQ(acts(step, "move them back please"), "command undo");
+  ReplyContext c = goal_question("lotion1", "comb1", "drawer1");
+  EXPECT_EQ(acts(c, "no wait put it back, it leaks. shelf was right"), "command undo");
+  EXPECT_EQ(read_acts(grounder(), world(), c, "no wait put it back, it leaks. shelf was right").after_undo, "");
+  EXPECT_NE(acts(c, "put it back on the counter"), "command undo");
+}
+
+// Found by the fifth pair of fresh users (stop 40): "just for tonight stick
+// the shaker in the locker" became a rule for a class "tonight stick the
+// shaker"; "the blanket goes on the sofa, its cold tonight" was learned as
+// the blanket's place for good. A goal said for this time only is read
+// without the words that say so, and marked.
+TEST_F(ReplyActsTest, AGoalSaidForThisTimeOnlyIsMarkedSo) {
+  const ReplyContext c = goal_question("lotion1");
+  for (const char* said : {"just for tonight put it in the cabinet", "in the cabinet for now",
+                           "the lotion goes in the cabinet, its cold tonight"}) {
+    const ReplyActs read = read_acts(grounder(), world(), c, said);
+    ASSERT_EQ(read.acts.size(), 1u) << said;
+    const auto* given = std::get_if<GoalGiven>(&read.acts.front());
+    ASSERT_NE(given, nullptr) << said << ": " << acts(c, said);
+    EXPECT_TRUE(given->this_time_only) << said;
+    EXPECT_FALSE(given->goal.satisfied_by(world().state)) << said;
+  }
+  const ReplyActs always = read_acts(grounder(), world(), c, "it goes in the cabinet");
+  const auto* given = std::get_if<GoalGiven>(&always.acts.front());
+  ASSERT_NE(given, nullptr);
+  EXPECT_FALSE(given->this_time_only);
+}
+
+// "hmm does the dirty towel still go in the hamper?" (a fresh user, stop
+// 40) was taken as a correction that moved the towel: a question about
+// where a thing goes is answered as "why" answers it, and teaches nothing.
+TEST_F(ReplyActsTest, AskingWhetherAThingGoesSomewhereIsAQuestion) {
+  ReplyContext step;
+  step.asked = Asked::kTaskStep;
+  step.last_goal = ReplyContext::LastGoal{
+      id("comb1"), Goal({Literal{Fact(world().vocabulary.in, {id("comb1"), id("drawer1")}), true}})};
+  EXPECT_THAT(acts(step, "hmm does the comb still go in the top drawer?"), ::testing::StartsWith("command why"));
+  EXPECT_THAT(acts(goal_question("lotion1"), "do the jeans go in the hamper?"), ::testing::StartsWith("command why"));
+  // ("do the counter next" is a step, not a question.)
+  EXPECT_THAT(acts(step, "do the counter next"), ::testing::Not(::testing::StartsWith("command why")));
+}
+
+// "no, top shelf for that one. and hey the dirty towel goes in the hamper
+// not on the hook!" (a fresh user, stop 40): the towel's goal was dropped,
+// since "not on the hook" was read inside it. Where a thing does not go,
+// said after where it goes, is read as if after a comma.
+TEST_F(ReplyActsTest, WhereAnotherThingDoesNotGoLeavesWhereItGoes) {
+  const ReplyContext c = goal_question("lotion1");
+  EXPECT_EQ(acts(c, "in the cabinet. and hey the jeans go in the hamper not on the floor!"),
+            "goal (in lotion1 cabinet1); also (in jeans1 hamper1)");
+  // ("the socks do not go on the floor" is no place said not after one.)
+  EXPECT_THAT(acts(c, "in the cabinet, the socks do not go on the floor"), ::testing::Not(::testing::HasSubstr("socks1 floor")));
+}
+
+// "shut the cabinet. this one stays closed, my brothers cat gets in
+// there" and "close the bottom drawer! it should always be shut" (fresh
+// users, stop 40) closed the door now and dropped the wish. A door to stay
+// closed from now on is a standing wish, closed once; "close the top
+// drawer" alone is one now.
+TEST_F(ReplyActsTest, ADoorKeptClosedFromNowOnIsAStandingWish) {
+  ReplyContext step;
+  step.asked = Asked::kTaskStep;
+  auto kept = [&](std::string_view said) {
+    std::vector<ObjectId> out;
+    for (const Reply& r : read_acts(grounder(), world(), step, said).acts)
+      if (const auto* c = std::get_if<Command>(&r)) out.insert(out.end(), c->kept_closed.begin(), c->kept_closed.end());
+    return out;
+  };
+  EXPECT_EQ(kept("close the top drawer. this one stays closed, the cat gets in there"), std::vector<ObjectId>{id("drawer1")});
+  EXPECT_EQ(kept("the cabinet should always be shut"), std::vector<ObjectId>{id("cabinet1")});
+  EXPECT_EQ(kept("keep the hamper closed from now on"), std::vector<ObjectId>{id("hamper1")});
+  EXPECT_TRUE(kept("close the top drawer").empty());
+  EXPECT_TRUE(kept("leave the cabinet open from now on").empty());
+}
+
 TEST_F(ReplyActsTest, AMarkerBeforeAQuestionTakesNothingBack) {
   ReplyContext c = goal_question("comb1", "hairbrush1", "drawer1");
   EXPECT_EQ(acts(c, "wait, where's the soap?"), "command where soap");
@@ -613,10 +703,11 @@ TEST_F(FreshUserRoom, SlipsAreAskedAboutAndSorryTypoCorrectsNothing) {
 }
 
 // A door left open "for now" or "this time" is a one-off, with the rest of
-// the reply read too. (The task "tidy the office" is read as said; the
-// agent knows it for the home office's: FreshUsers, teach_fresh_users_cli_test.cc.)
+// the reply read too. ("the office" of a home office is the room: the last
+// word of the location's name, since stop 40; it was "tidy office", which
+// the agent then matched to "tidy home office" when that was known.)
 TEST_F(FreshUserRoom, DoorsLeftOpenForNow) {
-  EXPECT_EQ(read(*office_, Asked::kTask, nullptr, "tidy the office"), "task tidy office");
+  EXPECT_EQ(read(*office_, Asked::kTask, nullptr, "tidy the office"), "task tidy home office");
   EXPECT_EQ(read(*office_, Asked::kTaskStep, nullptr, "leave the cupboard open for now, i'm grabbing the mug in a sec"),
             "command do (open cupboard1)");
   EXPECT_EQ(read(*office_, Asked::kTaskStep, nullptr, "keep the cupboard open this time i'm gonna put stuff in it"),
