@@ -499,6 +499,7 @@ Status TaskLearningAgent::Session::correct_goal(ObjectId object, const language:
     if (!done.empty()) say(language::report_actions(w, done), Voice::kResponse);
     return {};
   }
+  std::erase(progress_.placed_this_time, object);  // where it goes for good, said again
   const std::vector<std::string> properties = language::properties_said(*w.universe, object, text);
   const std::vector<GoalKey> keys = goals_corrected_by(object, properties);
   for (const GoalKey& key : keys)

@@ -84,23 +84,30 @@ std::string how_decided(GoalSource source) {
 // go to `place` (with none, where it went) when it was dealt with, and
 // where it goes now; nullopt when its report does not put it there, or its
 // goal still does.
-std::optional<std::string> why_earlier(const TeachingSoFar& so_far, ObjectId thing, std::optional<ObjectId> place) {
+std::optional<std::string> why_earlier(const TeachingSoFar& so_far, ObjectId thing, std::span<const ObjectId> places) {
   const World& w = so_far.world;
   const GoalKnowledge* known = goal_known_for(so_far, w.universe->info(thing).category);
   std::optional<Goal> now = known ? instantiate_goal(w, *known, thing) : std::nullopt;
   if (!now) return std::nullopt;
   const std::vector<ObjectId> now_at = destinations(w, *now, thing);
   auto now_goes = [&](ObjectId p) { return std::find(now_at.begin(), now_at.end(), p) != now_at.end(); };
-  if (place && now_goes(*place)) return std::nullopt;
+  // ("why did you put the glove in the right basket", where it goes now:
+  // not about before.)
+  if (!places.empty() && std::all_of(places.begin(), places.end(), now_goes)) return std::nullopt;
   const std::string& name = w.universe->name(thing);
   for (const ObjectReport& report : so_far.progress.objects) {
     if (report.object != name || report.goal.empty()) continue;
     auto then = parse_goal(*w.domain, *w.universe, report.goal);
     if (!then) continue;
     const std::vector<ObjectId> then_at = destinations(w, *then, thing);
-    const bool went_there = place ? std::find(then_at.begin(), then_at.end(), *place) != then_at.end()
-                                  : !then_at.empty() && std::none_of(then_at.begin(), then_at.end(), now_goes);
-    if (!went_there) continue;
+    const bool went_there = !places.empty() ? std::any_of(then_at.begin(), then_at.end(),
+                                                          [&](ObjectId p) {
+                                                            return std::find(places.begin(), places.end(), p) !=
+                                                                   places.end();
+                                                          })
+                                            : !then_at.empty() && std::none_of(then_at.begin(), then_at.end(), now_goes);
+    // (Where it still goes is no "before".)
+    if (!went_there || std::all_of(then_at.begin(), then_at.end(), now_goes)) continue;
     const std::string how = report.because.empty() ? how_decided(report.goal_source) : report.because;
     return language::why_earlier_placement(w, thing, *then, how, *now);
   }
@@ -168,16 +175,25 @@ std::string answer_why(const TeachingSoFar& so_far, std::span<const ObjectId> na
   if (about == WhyAbout::kAsking)
     if (auto said = why_asked(so_far, named)) return *said;
   const bool earlier = about == WhyAbout::kEarlier;
-  // A thing and a place named, the thing no longer going there.
-  const auto first_place = std::find_if(named.begin(), named.end(), [&](ObjectId id) {
-    return w.universe->info(id).kind != ObjectKind::kItem;
-  });
-  if (!named.empty() && (earlier || first_place != named.end()) &&
-      w.universe->info(named.front()).kind == ObjectKind::kItem) {
-    const std::optional<ObjectId> place =
-        first_place != named.end() ? std::optional<ObjectId>(*first_place) : std::nullopt;
-    if (auto said = why_earlier(so_far, named.front(), place)) return *said;
+  // A thing and a place named, the thing no longer going there. ("the
+  // towel ... on the hook", of a clean and a dirty towel and two hooks:
+  // the towel that went on a hook.)
+  std::vector<ObjectId> places;
+  for (ObjectId id : named)
+    if (w.universe->info(id).kind != ObjectKind::kItem) places.push_back(id);
+  if (!named.empty() && (earlier || !places.empty()) && w.universe->info(named.front()).kind == ObjectKind::kItem) {
+    if (auto said = why_earlier(so_far, named.front(), places)) return *said;
+    if (earlier)
+      for (ObjectId alike : w.universe->with_category(w.universe->info(named.front()).category))
+        if (alike != named.front())
+          if (auto said = why_earlier(so_far, alike, places)) return *said;
   }
+  // "why the hook at first": a place alone, asked about before; the thing
+  // last put there that goes elsewhere now.
+  if (earlier && !places.empty() && places.size() == named.size())
+    for (auto report = so_far.progress.objects.rbegin(); report != so_far.progress.objects.rend(); ++report)
+      if (const std::optional<ObjectId> thing = w.universe->find(report->object))
+        if (auto said = why_earlier(so_far, *thing, places)) return *said;
   for (ObjectId id : named) {
     if (w.universe->info(id).kind == ObjectKind::kItem) {
       if (auto said = why_thing(so_far, id)) return *said;

@@ -317,9 +317,11 @@ namespace {
 // name's words in turn, the last one maybe plural ("sticky notes"); none
 // when they name no kind or several.
 // A name said in part counts when no kind is named whole: its last words
-// ("the leash" for the dog leash). Of several kinds named, the one named
-// first ("the stapler belongs in the bottom drawer with the headset").
-std::optional<std::string> the_kind_named(const World& world, const std::vector<std::string>& words) {
+// ("the leash" for the dog leash), and then a word WordNet gives as the
+// kind's synonym ("the teddy" for the teddy bear). Of several kinds named,
+// the one named first ("the stapler belongs in the bottom drawer with the
+// headset").
+std::optional<std::string> the_kind_named(const World& world, const Lexicon& lexicon, const std::vector<std::string>& words) {
   for (std::size_t first = 0; first < 3; ++first) {
     // Where each kind's name, from its part `first` on, is first said; the
     // longest name wins where two begin at one word.
@@ -352,6 +354,18 @@ std::optional<std::string> the_kind_named(const World& world, const std::vector<
     if (named.size() == 1) return *named.begin();
     if (named.size() > 1) return std::nullopt;
   }
+  // "the teddy" for the teddy bear: a word WordNet puts in one synset with
+  // a kind's name, when it names one kind here.
+  std::set<std::string> named;
+  for (const std::string& w : words) {
+    if (is_determiner(w) || w.size() < 3) continue;
+    const std::vector<std::string> same = lexicon.synonyms(w);
+    for (ObjectId o : world.universe->of_kind(ObjectKind::kItem))
+      if (std::find(same.begin(), same.end(), spoken_category(world.universe->info(o).category)) != same.end())
+        named.insert(world.universe->info(o).category);
+    if (!named.empty()) break;
+  }
+  if (named.size() == 1) return *named.begin();
   return std::nullopt;
 }
 
@@ -399,7 +413,7 @@ std::optional<GoalGiven> goal_said_at_a_step(const Grounder& grounder, const Wor
               is_one_of(words[i], {"belonged", "put", "move", "moved", "hang", "hangs", "sit", "sits", "stay", "stays"}) ||
               (words[i] == "be" && i > 0 && is_one_of(words[i - 1], {"should", "must", "to", "can", "could", "would"}));
   if (!placing) return std::nullopt;
-  std::optional<std::string> kind = the_kind_named(world, words);
+  std::optional<std::string> kind = the_kind_named(world, grounder.lexicon(), words);
   if (!kind) return std::nullopt;
   // A thing of that kind already dealt with: the one put somewhere the
   // teacher now corrects. (Of a kind not dealt with yet, it is a rule or

@@ -222,6 +222,9 @@ std::optional<Command> question(const Grounder& grounder, const World& world, co
       words.erase(words.begin(), words.begin() + static_cast<std::ptrdiff_t>(m.length));
     } else if (!words.empty() && (is_interjection(words.front()) || is_marker(words.front())) && words.front() != "what") {
       words.erase(words.begin());
+    } else if (words.size() > 1 && is_one_of(words.front(), {"but", "and", "so"}) &&
+               is_one_of(words[1], {"why", "where", "what", "whats", "wheres", "whys", "how"})) {
+      words.erase(words.begin());  // "ok but why the hook at first"
     } else {
       break;
     }

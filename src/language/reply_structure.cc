@@ -207,8 +207,19 @@ class StructureReader {
     // (Said with more, "the bench, then the floor", where "the bench" names
     // nothing here, the part is asked, lest one be lost.)
     const bool asks = !in_.words.empty() && is_one_of(in_.words.front(), {"what", "where", "which", "why", "how", "is", "are"});
-    const bool one_phrase = comma_pieces(in_.words).size() == 1 &&
-                            std::none_of(in_.words.begin(), in_.words.end(), [](const std::string& w) {
+    // ("start with the coffee table, theres a bunch of junk on it": what
+    // the place is like, said after it, is no other part.)
+    std::vector<Words> pieces;
+    for (const Words& piece : comma_pieces(in_.words)) {
+      const bool describes = !pieces.empty() && !piece.empty() &&
+                             is_one_of(piece.front(), {"theres", "there's", "its", "it's", "thats", "that's", "there"}) &&
+                             std::none_of(piece.begin(), piece.end(), [](const std::string& w) {
+                               return is_one_of(w, {"then", "next"});
+                             });
+      if (!describes) pieces.push_back(piece);
+    }
+    const bool one_phrase = pieces.size() == 1 &&
+                            std::none_of(pieces.front().begin(), pieces.front().end(), [](const std::string& w) {
                               return is_one_of(w, {"and", "then", "after", "before"});
                             });
     if (named && in_.context.taught_subtasks.empty() && in_.context.asked == Asked::kTaskStep && !problem_ &&
@@ -379,7 +390,8 @@ class StructureReader {
       for (const Chunk& other : c.others) chunks.push_back(&other);
       for (const Chunk* chunk : chunks) {
         if (auto found = location_places(*chunk)) return found;
-        if (specific(*chunk) && in_.vocabulary.is_name_word(chunk->words.back()))
+        if (specific(*chunk) &&
+            (in_.vocabulary.is_name_word(chunk->words.back()) || names_a_place_by_synonym(chunk->words.back())))
           if (auto found = places(*chunk)) return found;
       }
       for (const PrepPhrase& p : c.phrases) {
@@ -389,6 +401,17 @@ class StructureReader {
       }
     }
     return std::nullopt;
+  }
+
+  // "now the couch", of a sofa: a word WordNet puts in one synset with a
+  // place's name.
+  bool names_a_place_by_synonym(const std::string& word) const {
+    const std::vector<std::string> same = in_.grounder.lexicon().synonyms(word);
+    if (same.empty()) return false;
+    for (const ObjectInfo& o : in_.world.universe->objects())
+      if (o.kind != ObjectKind::kItem && std::find(same.begin(), same.end(), spoken_category(o.category)) != same.end())
+        return true;
+    return false;
   }
 
   static bool says_where_a_thing_goes(const std::vector<Clause>& clauses) {

@@ -127,6 +127,21 @@ TEST_F(FreshUsersFifthPair, ADoorToStayClosedIsAStandingWish) {
   EXPECT_THAT(out, Not(HasSubstr("already closed"))) << out;
 }
 
+// "why did you put the towel on the hook before?", with a clean towel and
+// a dirty one, after the dirty one's place was corrected; "ok but why the
+// hook at first". Before: the clean towel's goal of now, and a part "clear
+// the left hook".
+TEST_F(FreshUsersFifthPair, WhyBeforeIsAboutTheTowelThatWentOnTheHook) {
+  const std::string out =
+      teach("gym.yaml", {"tidy the gym", "clear the bench first", "right hook", "top shelf", "top shelf", "left hook",
+                         "trash", "locker", "actually the dirty towel goes in the hamper",
+                         "why did you put the towel on the hook before?", "ok but why the hook at first", "quit"});
+  const std::string earlier = "Agent: Earlier I decided the dirty towel goes on the right hook, as you told me then; "
+                              "since then, the dirty towel goes in the hamper.\n";
+  EXPECT_THAT(out, HasSubstr("Instructor: why did you put the towel on the hook before?\n" + earlier)) << out;
+  EXPECT_THAT(out, HasSubstr("Instructor: ok but why the hook at first\n" + earlier)) << out;
+}
+
 // "straighten up my office" in a home office: the room is the office, and
 // "straighten up" is tidying, said so. Before: a task "straighten office".
 TEST_F(FreshUsersFifthPair, TheLastWordOfTheRoomsNameIsTheRoom) {

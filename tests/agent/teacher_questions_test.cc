@@ -130,6 +130,29 @@ TEST_F(TeacherQuestions, AnEarlierPlacementIsAnsweredByHowItWasDecided) {
   EXPECT_THAT(why({id("glove1"), id("basket1")}), HasSubstr("left basket, because it is like things you taught me;"));
 }
 
+// "why did you put the towel on the hook before?", of a clean and a dirty
+// towel, and "ok but why the hook at first" (a fresh user, stop 40): the
+// thing that went to a place named, told apart by what was done, and a
+// place alone asked about before. Both were answered with the goal of now,
+// or the last reply.
+TEST_F(TeacherQuestions, BeforeIsAboutTheThingThatWentThere) {
+  ObjectReport dealt;
+  dealt.object = "glove1";
+  dealt.goal = "(in glove1 basket1)";
+  dealt.goal_source = GoalSource::kInstructor;
+  dealt.because = "as you told me then";
+  progress_.objects.push_back(dealt);
+  learn("glove1", "basket2", "instructor: \"no the glove goes in the right one\" (a correction)");
+  const std::string earlier = "Earlier I decided the glove goes in the left basket, as you told me then; since then, "
+                              "the glove goes in the right basket.";
+  const TeachingSoFar so_far{world(), goals_, progress_, nullptr};
+  // The baskets alone, both named by "the basket".
+  EXPECT_EQ(answer_why(so_far, std::vector<ObjectId>{id("basket1"), id("basket2")}, WhyAbout::kEarlier), earlier);
+  // The mitten named with the left basket: no mitten went there, but the
+  // mitten is no look-alike of the glove either.
+  EXPECT_NE(answer_why(so_far, std::vector<ObjectId>{id("mitten1"), id("basket1")}, WhyAbout::kEarlier), earlier);
+}
+
 TEST_F(TeacherQuestions, ADoorNamedIsAnsweredByWhatLeftItOpenOrTheNorm) {
   // A closed door: the norm.
   EXPECT_EQ(why({id("cabinet1")}), "The cabinet is closed: I close what I open.");

@@ -349,6 +349,21 @@ TEST_F(ReplyActsTest, ADoorKeptClosedFromNowOnIsAStandingWish) {
   EXPECT_TRUE(kept("leave the cabinet open from now on").empty());
 }
 
+// "now the couch", of a sofa, after a part was cleared (a fresh user, stop
+// 40; set 1's living-room-013): a place's WordNet synonym names it without
+// a verb, as it did with one ("clear the couch").
+TEST_F(ReplyActsTest, APlacesSynonymNamesItWithoutAVerb) {
+  std::string error;
+  const Scenario* living = worlds_.get("living-room.yaml", error);
+  ASSERT_NE(living, nullptr) << error;
+  ReplyContext step;
+  step.asked = Asked::kTaskStep;
+  step.taught_subtasks = {"clear"};
+  const ReplyActs read = read_acts(grounder(), living->world, step, "now the couch");
+  ASSERT_EQ(read.acts.size(), 1u);
+  EXPECT_EQ(format_reply(living->world, read.acts.front()), "subtask clear on sofa1");
+}
+
 TEST_F(ReplyActsTest, AMarkerBeforeAQuestionTakesNothingBack) {
   ReplyContext c = goal_question("comb1", "hairbrush1", "drawer1");
   EXPECT_EQ(acts(c, "wait, where's the soap?"), "command where soap");

@@ -301,6 +301,19 @@ TEST(ReplyStructure, APlaceNamedAloneFirstIsItsKindsPart) {
   EXPECT_EQ(read(kitchen, step, "start with the counter"), "unusable");
 }
 
+// Found by fresh users (stop 40): "hmm lets start with the coffee table,
+// theres a bunch of junk on it" was asked back, and "now the couch" (of a
+// sofa) not understood. What the place is like, said after it, is no other
+// part. ("now the couch": ReplyActsTest.APlacesSynonymNamesItWithoutAVerb.)
+TEST(ReplyStructure, APlaceNamedAloneWithWhatItIsLikeOrByASynonym) {
+  const World& kitchen = kitchen30().world;
+  ReplyContext step = asking(Asked::kTaskStep);
+  EXPECT_EQ(read(kitchen, step, "hmm lets start with the counter, theres a bunch of junk on it"),
+            "subtask clear on counter1");
+  step.taught_subtasks = {"clear"};
+  EXPECT_EQ(read(kitchen, step, "now the junk"), "unusable");
+}
+
 // After "What should I do with the things on the counter?" (the reason
 // names the place it asks about), "clear it" and "clear" are about that
 // place; without that question they are not. (The question is asked of a
@@ -457,6 +470,17 @@ TEST(ReplyStructure, WhereAKindGoesSaidAtAStepIsItsGoal) {
   EXPECT_EQ(read(kitchen, step, "actually the milk goes in the fridge, not the pantry"), "goal (in milk1 fridge1)");
   EXPECT_EQ(read(kitchen, step, "clear the table"), "subtask clear on table1");
   EXPECT_EQ(read(kitchen, step, "now the counter"), "subtask clear on counter1");
+}
+
+// "put the teddy in the toy box", after the teddy bear was dealt with (a
+// fresh user, stop 40), was a part over the toy box: a thing may be named
+// by a word WordNet gives as its kind's synonym.
+TEST(ReplyStructure, AThingDealtWithIsNamedByASynonymToo) {
+  const World& kitchen = kitchen30().world;
+  ReplyContext step = asking(Asked::kTaskStep);
+  step.dealt_with = {in(kitchen, "ketchup1")};
+  EXPECT_EQ(read(kitchen, step, "put the catsup in the fridge"), "goal (in ketchup1 fridge1)");
+  EXPECT_EQ(read(kitchen, step, "the catsup should go in the fridge"), "goal (in ketchup1 fridge1)");
 }
 
 // A part of the task said with a verb that names no step ("covered") gives
