@@ -128,9 +128,29 @@ std::vector<DestinationProposal> GoalProposer::propose(const World& world, const
   for (const ClassRule& rule : said)
     if (rule.scope.task.empty() || rule.scope.task == key.task) applicable.push_back(rule);
   for (RuleSource source : {RuleSource::kPerson, RuleSource::kLlm})
-    for (DestinationProposal& p : said_rule_proposals(applicable, thing, source, *concepts_)) out.push_back(std::move(p));
+    for (DestinationProposal& p : said_rule_proposals(applicable, thing, source, *concepts_))
+      if (!lacks_a_property_said(world, object, p)) out.push_back(std::move(p));
   std::erase_if(out, [&](const DestinationProposal& p) { return !goal_at(world, p.destination, object); });
   return out;
+}
+
+bool lacks_a_property_said(const World& world, ObjectId object, const DestinationProposal& proposal) {
+  if (!proposal.rule) return false;
+  std::vector<std::string> words = proposal.rule->modifiers;
+  const std::vector<std::string> class_words = split_words(proposal.rule->class_name);
+  if (class_words.size() > 1) words.insert(words.end(), class_words.begin(), class_words.end() - 1);
+  const std::vector<std::string>& has = world.universe->info(object).properties;
+  const std::vector<std::string> name = language::name_parts(world.universe->info(object).category);
+  for (const std::string& word : words) {
+    if (std::find(has.begin(), has.end(), word) != has.end() || std::find(name.begin(), name.end(), word) != name.end())
+      continue;
+    // A property the world gives some thing, which this one lacks.
+    for (ObjectId other : world.universe->of_kind(ObjectKind::kItem)) {
+      const std::vector<std::string>& theirs = world.universe->info(other).properties;
+      if (std::find(theirs.begin(), theirs.end(), word) != theirs.end()) return true;
+    }
+  }
+  return false;
 }
 
 std::optional<Goal> goal_at(const World& world, const Destination& destination, ObjectId object) {

@@ -81,6 +81,12 @@ class GoalProposer {
 // place or has several that fit it.
 std::optional<Goal> goal_at(const World& world, const Destination& destination, ObjectId object);
 
+// Whether the rule a proposal came from says a word that the world gives
+// things as a property ("dirty clothes", where the socks are dirty) and
+// `object` lacks it, in its properties and its name: such a rule does not
+// fit it (the clean t-shirt is no dirty clothes).
+bool lacks_a_property_said(const World& world, ObjectId object, const DestinationProposal& proposal);
+
 // How many places here a thing could be put: every surface and receptacle
 // but `away_from` (the places being cleared).
 std::size_t place_count(const World& world, std::span<const ObjectId> away_from);

@@ -394,6 +394,7 @@ std::vector<std::string> without_places_said_not(const std::vector<std::string>&
 std::optional<GoalGiven> goal_said_at_a_step(const Grounder& grounder, const World& world,
                                              const ReplyContext& context, std::string_view said, bool dealt_with) {
   std::vector<std::string> words = reply_words(said);
+  split_hyphenated_kinds(words, *world.universe);
   // "no wait, the sketchbook should be on the shelf": the marker before a
   // correction says nothing of where the thing goes.
   std::size_t first = 0;
@@ -495,6 +496,7 @@ Reply read_reply_plain(const Grounder& grounder, const World& world, const Reply
   std::optional<Problem> grammar_failure;
   if (auto reply = scripted(grounder, world, context, text, grammar_failure)) return *reply;
   std::vector<std::string> words = reply_words(text);
+  split_hyphenated_kinds(words, *world.universe);
   join_world_names(words, *world.universe);
   if (std::all_of(words.begin(), words.end(), [](const std::string& w) { return w == ","; }))
     return Unusable{"I didn't get a reply.", example_replies(world, context), std::nullopt};

@@ -262,6 +262,13 @@ std::optional<Command> question(const Grounder& grounder, const World& world, co
     std::vector<ObjectId> things = things_asked_why(grounder, world, words);
     if (!things.empty() && world.universe->info(things.front()).kind == ObjectKind::kItem)
       return Command{Command::Kind::kWhy, join(words, " "), things, {}};
+    // ("does a dirty t shirt go in the laundry basket?", with no dirty t
+    // shirt here: a question still, answered by what is not seen.)
+    const auto going = std::find_if(words.begin() + 1, words.end(), [](const std::string& w) { return is_verb_of_going(w); });
+    Words thing;
+    for (auto w = words.begin() + 1; w != going; ++w)
+      if (!is_determiner(*w) && !is_one_of(*w, {"still", "really", "usually", "always"})) thing.push_back(*w);
+    if (!thing.empty()) return Command{Command::Kind::kWhere, join(thing, " "), {}, {}};
   }
   if (first == "where" && words.size() > 1 &&
       is_one_of(words[1], {"is", "are", "did", "does", "do", "has", "have", "was", "were", "would", "had"})) {

@@ -416,7 +416,10 @@ class StructureReader {
 
   static bool says_where_a_thing_goes(const std::vector<Clause>& clauses) {
     return std::any_of(clauses.begin(), clauses.end(), [](const Clause& c) {
-      const bool placing = c.verb_class() == VerbClass::kBe || c.verb_class() == VerbClass::kPlace;
+      // ("cleaning stuff goes in the cabinet": the verb of going, not the
+      // first verb, says what the clause is.)
+      const bool placing = c.verb_class() == VerbClass::kBe || c.verb_class() == VerbClass::kPlace ||
+                           std::any_of(c.words.begin(), c.words.end(), [](const std::string& w) { return is_verb_of_going(w); });
       return placing && std::any_of(c.phrases.begin(), c.phrases.end(), [](const PrepPhrase& p) {
                return p.preposition == Preposition::kIn || p.preposition == Preposition::kOn ||
                       p.preposition == Preposition::kTo;
@@ -481,12 +484,19 @@ class StructureReader {
   static bool names_no_subtask(const Clause& c) {
     // ("put them in the bottom drawer" puts things somewhere; "put away the
     // toys" may be a part.)
+    // ("cleaning stuff goes in the cabinet": a verb's -ing form before a
+    // verb of going names the things that go, as "cleaning supplies" does.)
+    const auto verb_at = std::find(c.words.begin(), c.words.end(), c.verb_word);
+    const bool names_things_that_go =
+        c.verb_word.ends_with("ing") && verb_at != c.words.end() &&
+        std::any_of(verb_at + 1, c.words.end(), [](const std::string& w) { return is_verb_of_going(w); });
     return c.verb.empty() || c.adjective() || c.verb_class() == VerbClass::kBe || (c.copula && c.verb_word == "done") ||
-           (c.verb == "put" && c.particle.empty()) ||
+           (c.verb == "put" && c.particle.empty()) || names_things_that_go ||
            is_one_of(c.verb, {"be", "repeat", "keep", "continue", "go", "finish", "end", "stop", "start", "begin",
                               "move", "come", "think", "know", "want", "need", "let", "say", "mean", "see", "look",
                               "leave", "forget", "wait", "belong", "thank", "hate", "like", "love", "read", "tell",
-                              "ask", "mind", "hold", "guess", "wish", "hope", "forgive"});
+                              "ask", "mind", "hold", "guess", "wish", "hope", "forgive", "remember", "recall",
+                              "notice"});
   }
 
   // Whether a part of the task read is said with a step verb the agent

@@ -82,7 +82,8 @@ std::size_t skip_openers(const Words& words, std::size_t at) {
       {"as", "a", "rule"}, {"rule", "of", "thumb"}, {"in", "general"}, {"on", "second", "thought"},
       {"fair", "enough"}, {"fyi"}, {"for", "your", "information"}, {"if", "there", "is"}, {"if", "there's"},
       {"if", "theres"}, {"if", "there", "are"}, {"whenever", "there", "is"}, {"whenever", "there's"},
-      {"whenever", "theres"}, {"ever"}, {","}, {":"}};
+      {"whenever", "theres"}, {"ever"}, {"for", "next", "time"}, {"next", "time"}, {"for", "the", "record"},
+      {","}, {":"}, {"-"}};
   for (bool more = true; more && at < words.size();) {
     more = false;
     for (const auto& opener : kOpeners) {

@@ -234,6 +234,16 @@ std::vector<std::string> name_parts(std::string_view name) {
   return parts;
 }
 
+void split_hyphenated_kinds(std::vector<std::string>& words, const Universe& universe) {
+  for (std::size_t i = 0; i < words.size(); ++i)
+    if (words[i].find('-') != std::string::npos && !universe.with_category(words[i]).empty()) {
+      std::vector<std::string> parts = name_parts(words[i]);
+      words.erase(words.begin() + static_cast<std::ptrdiff_t>(i));
+      words.insert(words.begin() + static_cast<std::ptrdiff_t>(i), parts.begin(), parts.end());
+      i += parts.size() - 1;
+    }
+}
+
 void join_world_names(std::vector<std::string>& words, const Universe& universe) {
   // The names worth joining, longest first so that the longest match wins.
   std::vector<std::pair<std::string, std::vector<std::string>>> names;

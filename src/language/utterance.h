@@ -35,6 +35,10 @@ void expand_shorthand(std::vector<std::string>& words);
 // "walk in pantries" -> "walk-in-pantry").
 // Then join_split_names and separate_listed_names.
 void join_world_names(std::vector<std::string>& words, const Universe& universe);
+// "t-shirt", typed as the world spells a kind: its words ({"t", "shirt"}),
+// as a person's reply names every kind. (Not for the scripts' sentences,
+// whose logical form keeps the category as written.)
+void split_hyphenated_kinds(std::vector<std::string>& words, const Universe& universe);
 // Three or more kinds of thing here named one after another without commas
 // ("rake shovel hoe"), or two before "and" and a third ("rake shovel and
 // hoe"), as typed in a hurry: a list, with the commas put in.

@@ -97,6 +97,45 @@ TEST_F(GoalSourcesTest, TheEvidenceNamesAKindSaidInTheSingularWithItsArticle) {
   EXPECT_EQ(evidence_phrase(world(), person_rule_only("jeans1")), "with clothes, as you said");
 }
 
+// Found by a fresh user (stop 40): "dirty clothes go in the laundry
+// basket" put the CLEAN t-shirt in the laundry basket, alone. A word of a
+// rule that the world gives things as a property ("dirty") fits only the
+// things that have it.
+TEST_F(GoalSourcesTest, APropertySaidInARuleFitsOnlyTheThingsThatHaveIt) {
+  auto laundry = parse_scenario(R"(name: bedroom
+domain: data/domains/kitchen.pddl
+location: bedroom
+places:
+  - {category: bed, kind: surface}
+  - {category: hamper, kind: receptacle}
+objects:
+  - {category: t-shirt, at: bed1, properties: [clean]}
+  - {category: t-shirt, at: bed1, properties: [dirty]}
+  - {category: sock, at: bed1, properties: [dirty]}
+)",
+                                apprentice::testing::source_path("bedroom.yaml"));
+  ASSERT_TRUE(laundry) << laundry.error().describe();
+  const World& w = laundry->world;
+  Knowledge knowledge;
+  const GoalScope scope{"tidy bedroom", "clear", "bed"};
+  auto reading = language::read_rule(w, lexicon_, "dirty clothes go in the hamper");
+  ASSERT_TRUE(reading);
+  for (ClassRule& r : class_rules_of(w, *reading, RuleSource::kPerson, "dirty clothes go in the hamper", scope, 0.9))
+    knowledge.class_rules.add(std::move(r));
+  GoalSources sources(knowledge, w, lexicon_, nullptr);
+  auto by_the_rule = [&](const char* id) {
+    const ObjectId o = *w.universe->find(id);
+    std::vector<std::string> out;
+    const GoalKey k{scope.task, scope.subtask, w.universe->info(o).category, scope.place};
+    for (const DestinationProposal& p : sources.proposals_for(w, k, o, {}))
+      if (p.source == ProposalSource::kPersonRule) out.push_back(p.destination.relation + " " + p.destination.place.category);
+    return out;
+  };
+  EXPECT_THAT(by_the_rule("t-shirt2"), ::testing::ElementsAre("in hamper"));
+  EXPECT_THAT(by_the_rule("sock1"), ::testing::ElementsAre("in hamper"));
+  EXPECT_TRUE(by_the_rule("t-shirt1").empty());
+}
+
 TEST_F(GoalSourcesTest, ADestinationRefusedForAKindIsNotProposedForItAgain) {
   Knowledge knowledge = said_before("Put clothes in the hamper.");
   GoalSources sources(knowledge, world(), lexicon_, nullptr);

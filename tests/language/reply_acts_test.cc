@@ -312,6 +312,8 @@ TEST_F(ReplyActsTest, AskingWhetherAThingGoesSomewhereIsAQuestion) {
       id("comb1"), Goal({Literal{Fact(world().vocabulary.in, {id("comb1"), id("drawer1")}), true}})};
   EXPECT_THAT(acts(step, "hmm does the comb still go in the top drawer?"), ::testing::StartsWith("command why"));
   EXPECT_THAT(acts(goal_question("lotion1"), "do the jeans go in the hamper?"), ::testing::StartsWith("command why"));
+  // Of a thing not here, a question still.
+  EXPECT_EQ(acts(step, "does a zebra still go in the hamper?"), "command where zebra");
   // ("do the counter next" is a step, not a question.)
   EXPECT_THAT(acts(step, "do the counter next"), ::testing::Not(::testing::StartsWith("command why")));
 }
@@ -362,6 +364,20 @@ TEST_F(ReplyActsTest, APlacesSynonymNamesItWithoutAVerb) {
   const ReplyActs read = read_acts(grounder(), living->world, step, "now the couch");
   ASSERT_EQ(read.acts.size(), 1u);
   EXPECT_EQ(format_reply(living->world, read.acts.front()), "subtask clear on sofa1");
+}
+
+// "the clean t-shirt goes in the bottom drawer" (a fresh user, stop 40)
+// got "I do not know the word "t-shirt". Did you mean "shirt"?": the kind
+// typed as the world spells it is that kind.
+TEST_F(ReplyActsTest, AKindTypedWithItsHyphenIsThatKind) {
+  const ReplyContext c = goal_question("t-shirt1");
+  EXPECT_EQ(acts(c, "the t-shirt goes on the shelf"), acts(c, "the t shirt goes on the shelf"));
+  EXPECT_THAT(acts(c, "the t-shirt goes on the shelf"), ::testing::StartsWith("goal (on t-shirt1 shelf1)"));
+  // At the next step, of a t-shirt dealt with: its correction.
+  ReplyContext step;
+  step.asked = Asked::kTaskStep;
+  step.dealt_with = {id("t-shirt1")};
+  EXPECT_THAT(acts(step, "the t-shirt goes on the shelf"), ::testing::StartsWith("goal (on t-shirt1 shelf1)"));
 }
 
 TEST_F(ReplyActsTest, AMarkerBeforeAQuestionTakesNothingBack) {

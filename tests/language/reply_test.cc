@@ -472,6 +472,19 @@ TEST(ReplyStructure, WhereAKindGoesSaidAtAStepIsItsGoal) {
   EXPECT_EQ(read(kitchen, step, "now the counter"), "subtask clear on counter1");
 }
 
+// "cleaning stuff goes in the cabinet" and "anything frozen goes in the
+// freezer, remember that" (a fresh user, stop 40) were parts "empty the
+// cabinet" and "store the freezer": a verb's -ing form before a verb of
+// going names things that go, and "remember" names no step.
+TEST(ReplyStructure, WhereThingsGoIsNoPartForAVerbInIt) {
+  const World& kitchen = kitchen30().world;
+  ReplyContext step = asking(Asked::kTaskStep);
+  step.taught_subtasks = {"clear", "empty"};
+  for (const char* said : {"cleaning stuff goes in the dish rack", "anything frozen goes in the fridge, remember that"})
+    EXPECT_EQ(read(kitchen, step, said).rfind("subtask", 0), std::string::npos) << said << ": " << read(kitchen, step, said);
+  EXPECT_EQ(read(kitchen, step, "empty the dish rack"), "subtask empty in dish-rack1");
+}
+
 // "put the teddy in the toy box", after the teddy bear was dealt with (a
 // fresh user, stop 40), was a part over the toy box: a thing may be named
 // by a word WordNet gives as its kind's synonym.

@@ -323,6 +323,18 @@ TEST_F(RuleReader, WhereTheThingsAreAndWhoSpeaksNameNoClass) {
   EXPECT_THAT(next_time->not_understood, IsEmpty());
 }
 
+// "for next time btw - cleaning stuff always goes in the cabinet, and
+// crisps and sweets go on the middle shelf" (a fresh user, stop 40) kept a
+// class "time btw - cleaning stuff".
+TEST_F(RuleReader, ForNextTimeIsNoClass) {
+  auto rule = read("for next time btw - sweaters always go in the storage box, and bananas go on the cart");
+  ASSERT_TRUE(rule);
+  ASSERT_EQ(rule->clauses.size(), 2u);
+  EXPECT_THAT(heads(rule->clauses[0]), ElementsAre("sweaters"));
+  EXPECT_THAT(heads(rule->clauses[1]), ElementsAre("bananas"));
+  EXPECT_THAT(rule->not_understood, IsEmpty());
+}
+
 TEST_F(RuleReader, WhatHoldsThisTimeOnlyIsNoRule) {
   EXPECT_FALSE(read("just for tonight stick the sweater in the storage box"));
   EXPECT_FALSE(read("bananas go on the sofa for now"));
