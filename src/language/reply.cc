@@ -19,8 +19,11 @@ namespace {
 std::string kind_named(const Grounder& grounder, const World& world, std::vector<std::string> words) {
   std::erase_if(words, [](const std::string& w) { return is_determiner(w) || w == "about" || w == "everything"; });
   if (words.empty()) return "";
-  // "the towel rule": a rule, named by its words (the agent looks it up).
+  // "the towel rule", "trash in the top drawer": a rule, named by its words
+  // (the agent looks it up).
   if (is_one_of(words.back(), {"rule", "rules"})) return join(words, " ");
+  if (std::any_of(words.begin() + 1, words.end(), [](const std::string& w) { return is_one_of(w, {"in", "on", "into", "onto"}); }))
+    return join(words, " ");
   ReferenceContext context{world, grounder.lexicon(), std::nullopt};
   context.partial_names = true;
   auto found = candidates_for(NounPhrase{"", words}, Role::kItem, context);

@@ -666,11 +666,16 @@ ReplyActs read(const Grounder& grounder, const World& world, const ReplyContext&
     if (!closings.empty()) after.push_back(Command{Command::Kind::kDo, "", {}, closings});
   }
   // "why are you asking, it's a needle": a "why" said with an answer is
-  // the teacher's remark, not a question to answer.
+  // the teacher's remark, not a question to answer; unless it asks about
+  // something done ("yes. hang on why'd you put the candy bar in the
+  // cooler").
   if (answered && usable(reply))
     std::erase_if(after, [](const Reply& r) {
       const auto* c = std::get_if<Command>(&r);
-      return c != nullptr && c->kind == Command::Kind::kWhy;
+      if (c == nullptr || c->kind != Command::Kind::kWhy) return false;
+      const Words asked = split_words(c->argument);
+      return !(has(asked, {"did", "you"}) || has(asked, {"you", "put"}) || has(asked, {"you", "throw"}) ||
+               has(asked, {"you", "move"}) || has(asked, {"whyd", "you"}) || has(asked, {"why'd", "you"}));
     });
   for (Reply& r : before) out.acts.push_back(std::move(r));
   for (Reply& r : first_doors) out.acts.push_back(std::move(r));

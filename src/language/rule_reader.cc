@@ -486,6 +486,16 @@ class SentenceReader {
           more = true;
           break;
         }
+      // "nah not trash, cables and chargers go in the top drawer": what is
+      // said not to be meant, up to a comma, is no class.
+      if (!words.empty() && is_negation(words.front())) {
+        const auto comma = std::find(words.begin(), words.end(), ",");
+        if (comma != words.end() && comma + 1 != words.end()) {
+          words.erase(words.begin(), comma + 1);
+          more = true;
+          continue;
+        }
+      }
       if (!words.empty() && words.size() > 1 && !is_determiner(words.front()) && names_no_class(words.front())) {
         drop_front(1);
         more = true;

@@ -380,6 +380,18 @@ TEST_F(ReplyActsTest, AKindTypedWithItsHyphenIsThatKind) {
   EXPECT_THAT(acts(step, "the t-shirt goes on the shelf"), ::testing::StartsWith("goal (on t-shirt1 shelf1)"));
 }
 
+// "yes. hang on why'd you put the candy bar in the cooler" (a fresh user,
+// stop 40): the yes was taken and the question dropped, as a "why" said
+// with an answer is taken for a remark ("yes, why do you even ask"). A why
+// about something done is asked.
+TEST_F(ReplyActsTest, AWhyAboutSomethingDoneIsAskedWithAYes) {
+  ReplyContext yes_no = goal_question("lotion1");
+  yes_no.asked = Asked::kYesNo;
+  EXPECT_THAT(acts(yes_no, "yes. hang on why'd you put the comb in the top drawer"),
+              ::testing::AllOf(::testing::StartsWith("yes"), ::testing::HasSubstr("command why")));
+  EXPECT_THAT(acts(yes_no, "yes, why do you even ask"), ::testing::Not(::testing::HasSubstr("command why")));
+}
+
 TEST_F(ReplyActsTest, AMarkerBeforeAQuestionTakesNothingBack) {
   ReplyContext c = goal_question("comb1", "hairbrush1", "drawer1");
   EXPECT_EQ(acts(c, "wait, where's the soap?"), "command where soap");

@@ -335,6 +335,15 @@ TEST_F(RuleReader, ForNextTimeIsNoClass) {
   EXPECT_THAT(rule->not_understood, IsEmpty());
 }
 
+// "nah not trash, cables and chargers and stuff go in the top drawer" (a
+// fresh user, stop 40) kept "trash" among the classes.
+TEST_F(RuleReader, AClassSaidNotToBeMeantIsNoClass) {
+  auto rule = read("nah not toys, sweaters and bananas go in the storage box");
+  ASSERT_TRUE(rule);
+  ASSERT_EQ(rule->clauses.size(), 1u);
+  EXPECT_THAT(heads(rule->clauses[0]), ElementsAre("sweaters", "bananas"));
+}
+
 TEST_F(RuleReader, WhatHoldsThisTimeOnlyIsNoRule) {
   EXPECT_FALSE(read("just for tonight stick the sweater in the storage box"));
   EXPECT_FALSE(read("bananas go on the sofa for now"));
