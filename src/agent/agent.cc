@@ -133,8 +133,11 @@ namespace {
 const TaskKnowledge* task_over_a_room_like(const Knowledge& knowledge, const std::string& name) {
   const std::vector<std::string> said = split_words(name);
   if (said.size() < 2) return nullptr;
-  auto ends = [](const std::vector<std::string>& whole, const std::vector<std::string>& end) {
-    return end.size() > 1 && end.size() <= whole.size() && std::equal(end.begin() + 1, end.end(), whole.end() - static_cast<std::ptrdiff_t>(end.size() - 1));
+  // Whether the room words of `task` (after its verb) end `whole`'s words.
+  auto ends = [](const std::vector<std::string>& whole, const std::vector<std::string>& task) {
+    const std::size_t room = task.size() - 1;
+    return room > 0 && room <= whole.size() &&
+           std::equal(task.begin() + 1, task.end(), whole.end() - static_cast<std::ptrdiff_t>(room));
   };
   for (const TaskKnowledge& task : knowledge.tasks) {
     const std::vector<std::string> known = split_words(task.name);

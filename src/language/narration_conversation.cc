@@ -143,12 +143,11 @@ std::vector<std::string> where_things_are(const World& w, std::string_view phras
     std::vector<std::string> words = split_words(phrase);
     while (!words.empty() && is_determiner(words.front())) words.erase(words.begin());
     // "where is that now": no thing named.
-    if (words.empty() || (words.size() == 1 && is_object_pronoun(words.front())))
-      return {"Which thing do you mean? Name it, for example \"where is the " +
-              (w.universe->of_kind(ObjectKind::kItem).empty()
-                   ? std::string("mug")
-                   : language::spoken_category(w, w.universe->of_kind(ObjectKind::kItem).front())) +
-              "?\"."};
+    if (words.empty() || (words.size() == 1 && is_object_pronoun(words.front()))) {
+      const auto& items = w.universe->of_kind(ObjectKind::kItem);
+      const std::string example = items.empty() ? std::string("mug") : spoken_category(w, items.front());
+      return {"Which thing do you mean? Name it, for example \"where is the " + example + "?\"."};
+    }
     return {not_seen_message(join(words, " "), w)};
   }
   std::vector<std::string> said;

@@ -54,6 +54,15 @@ class TeacherQuestions : public ::testing::Test {
     ASSERT_TRUE(known) << known.error().describe();
     goals_.add(std::move(*known));
   }
+  // `thing` was dealt with, given `goal` by `source`, said back with `because`.
+  void dealt_with(const char* thing, const char* goal, GoalSource source, const char* because) {
+    ObjectReport dealt;
+    dealt.object = thing;
+    dealt.goal = goal;
+    dealt.goal_source = source;
+    dealt.because = because;
+    progress_.objects.push_back(dealt);
+  }
   std::string why(std::vector<ObjectId> named) const {
     return answer_why(TeachingSoFar{world(), goals_, progress_, last_reply_.empty() ? nullptr : &last_reply_}, named);
   }
@@ -109,12 +118,7 @@ TEST_F(TeacherQuestions, AQuestionTheAgentAskedIsAnsweredByItsEvidence) {
 }
 
 TEST_F(TeacherQuestions, AnEarlierPlacementIsAnsweredByHowItWasDecided) {
-  ObjectReport dealt;
-  dealt.object = "glove1";
-  dealt.goal = "(in glove1 basket1)";
-  dealt.goal_source = GoalSource::kLikeness;
-  dealt.because = "like the mitten";
-  progress_.objects.push_back(dealt);
+  dealt_with("glove1", "(in glove1 basket1)", GoalSource::kLikeness, "like the mitten");
   learn("glove1", "basket2", "instructor: \"no the glove goes in the right one\" (a correction)");
   const std::string earlier =
       "Earlier I decided the glove goes in the left basket, like the mitten; since then, the glove goes in the right "
@@ -136,12 +140,7 @@ TEST_F(TeacherQuestions, AnEarlierPlacementIsAnsweredByHowItWasDecided) {
 // place alone asked about before. Both were answered with the goal of now,
 // or the last reply.
 TEST_F(TeacherQuestions, BeforeIsAboutTheThingThatWentThere) {
-  ObjectReport dealt;
-  dealt.object = "glove1";
-  dealt.goal = "(in glove1 basket1)";
-  dealt.goal_source = GoalSource::kInstructor;
-  dealt.because = "as you told me then";
-  progress_.objects.push_back(dealt);
+  dealt_with("glove1", "(in glove1 basket1)", GoalSource::kInstructor, "as you told me then");
   learn("glove1", "basket2", "instructor: \"no the glove goes in the right one\" (a correction)");
   const std::string earlier = "Earlier I decided the glove goes in the left basket, as you told me then; since then, "
                               "the glove goes in the right basket.";
